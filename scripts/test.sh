@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Every test: installs what it needs (npm packages, Debian's chromium), type-checks, checks that the engine runs in
+# plain Node, then runs all test files in chromium with @web/test-runner. Exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/ensure-deps.sh
+bash scripts/ensure-chromium.sh
+echo "== typecheck"
+npx tsc --noEmit -p tsconfig.json
+npx tsc --noEmit -p test/tsconfig.json
+echo "== engine in Node"
+node scripts/engine-in-node.mjs
+echo "== browser tests"
+npx web-test-runner --static-logging "$@"

@@ -1,0 +1,85 @@
+import type { World } from '../world.js';
+import { integer, nonNegative, positive } from '../validate.js';
+import { addTethers, massEach, point, transactional, type Built } from './common.js';
+
+/** Which particles of the top row are pinned: every one, the two corners, none, or a list of column indices. */
+export type ClothPins = 'top' | 'corners' | 'none' | number[];
+
+export interface ClothOptions {
+  /** Top-left corner. */
+  origin: { x: number; y: number };
+  columns: number;
+  rows: number;
+  spacing: number;
+  /** Total mass. Default 0.01 per particle. */
+  mass?: number;
+  /** Compliance of the structural (horizontal, vertical) links. Default 0 (rigid). */
+  structural?: number;
+  /** Compliance of the shear (diagonal) links, or null for none. Default null. */
+  shear?: number | null;
+  /** Compliance of the bend (two-apart) links, or null for none. Default null. */
+  bend?: number | null;
+  pins?: ClothPins;
+  radius?: number;
+  /** Long-range tethers from each particle to the nearest pin (see addTethers). Default true. */
+  tethers?: boolean;
+}
+
+/** A rectangular cloth of columns × rows particles, row-major from the top-left corner. */
+export function createCloth(world: World, o: ClothOptions): Built {
+  const origin = point('origin', o?.origin);
+  const columns = integer('columns', o.columns, 2, 4096);
+  const rows = integer('rows', o.rows, 2, 4096);
+  const spacing = positive('spacing', o.spacing);
+  const each = massEach('mass', o.mass, columns * rows, (columns * rows) / 100);
+  const structural = nonNegative('structural', o.structural ?? 0);
+  const shear = o.shear == null ? null : nonNegative('shear', o.shear);
+  const bend = o.bend == null ? null : nonNegative('bend', o.bend);
+  const pinned = pinnedColumns(o.pins ?? 'top', columns);
+  const radius = nonNegative('radius', o.radius ?? 0);
+  return transactional(world, (particles, constraints) => {
+    for (let r = 0; r < rows; r++) {
+      for (let c = 0; c < columns; c++) {
+        particles.push(world.addParticle({ x: origin.x + c * spacing, y: origin.y + r * spacing, mass: each, radius }));
+      }
+    }
+    const at = (c: number, r: number) => particles[r * columns + c];
+    const link = (a: number, b: number, compliance: number) => constraints.push(world.addDistance(a, b, { compliance }));
+    for (let r = 0; r < rows; r++) {
+      for (let c = 0; c < columns; c++) {
+        if (c + 1 < columns) link(at(c, r), at(c + 1, r), structural);
+        if (r + 1 < rows) link(at(c, r), at(c, r + 1), structural);
+      }
+    }
+    if (shear !== null) {
+      for (let r = 0; r + 1 < rows; r++) {
+        for (let c = 0; c + 1 < columns; c++) {
+          link(at(c, r), at(c + 1, r + 1), shear);
+          link(at(c + 1, r), at(c, r + 1), shear);
+        }
+      }
+    }
+    if (bend !== null) {
+      for (let r = 0; r < rows; r++) {
+        for (let c = 0; c < columns; c++) {
+          if (c + 2 < columns) link(at(c, r), at(c + 2, r), bend);
+          if (r + 2 < rows) link(at(c, r), at(c, r + 2), bend);
+        }
+      }
+    }
+    for (const c of pinned) constraints.push(world.addPin(at(c, 0)));
+    if ((o.tethers ?? true) && structural === 0) {
+      const rest = (a: number, b: number) => spacing * Math.hypot((a % columns) - (b % columns), Math.floor(a / columns) - Math.floor(b / columns));
+      addTethers(world, particles, pinned, rest, constraints);
+    }
+    return world.addBody('cloth', particles, constraints);
+  });
+}
+
+function pinnedColumns(pins: ClothPins, columns: number): number[] {
+  if (pins === 'top') return Array.from({ length: columns }, (_, c) => c);
+  if (pins === 'corners') return [0, columns - 1];
+  if (pins === 'none') return [];
+  if (Array.isArray(pins)) return [...new Set(pins.map((c, k) => integer(`pins[${k}]`, c, 0, columns - 1)))];
+  throw new RangeError(`pins must be "top", "corners", "none" or a list of column indices, got ${JSON.stringify(pins)}`);
+}

@@ -1,0 +1,94 @@
+import type { World } from '../world.js';
+import { finite, positive } from '../validate.js';
+import { complianceOf, massEach, point, transactional, type Built } from './common.js';
+
+export interface PolygonOptions {
+  /** Outline in body coordinates (counter-clockwise in a y-up frame, clockwise on screen), at least 3 points. */
+  points: { x: number; y: number }[];
+  /** Where the body's origin goes. Default (0, 0). */
+  x?: number;
+  y?: number;
+  /** Rotation in radians. Default 0. */
+  angle?: number;
+  /** Total mass. Default: the outline's area (density 1). */
+  mass?: number;
+  /** Compliance of the frame's sticks; 0 (default) is rigid. */
+  compliance?: number;
+}
+
+export interface BoxOptions {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+  angle?: number;
+  mass?: number;
+  compliance?: number;
+}
+
+/**
+ * A rigid polygon as perimeter particles braced by sticks (seed 2.3): the n perimeter links plus a fan of
+ * n − 3 diagonals from vertex 0, which is 2n − 3 links, exactly what fixes a planar frame of n points.
+ */
+export function createPolygon(world: World, o: PolygonOptions): Built {
+  return createFrame(world, o, []);
+}
+
+/** createPolygon plus extra bracing links between the given vertex pairs. */
+function createFrame(world: World, o: PolygonOptions, extraBraces: [number, number][]): Built {
+  if (!o || !Array.isArray(o.points) || o.points.length < 3) {
+    throw new RangeError(`points must be a list of at least 3 points, got ${o && Array.isArray(o.points) ? o.points.length : String(o?.points)}`);
+  }
+  const local = o.points.map((p, k) => point(`points[${k}]`, p));
+  const area = Math.abs(shoelace(local));
+  if (!(area > 0)) throw new RangeError(`points must enclose a non-zero area, got ${JSON.stringify(o.points)}`);
+  const ox = finite('x', o.x ?? 0);
+  const oy = finite('y', o.y ?? 0);
+  const angle = finite('angle', o.angle ?? 0);
+  const each = massEach('mass', o.mass, local.length, area);
+  const compliance = complianceOf('compliance', o.compliance);
+  const cos = Math.cos(angle);
+  const sin = Math.sin(angle);
+  return transactional(world, (particles, constraints) => {
+    for (const p of local) particles.push(world.addParticle({ x: ox + p.x * cos - p.y * sin, y: oy + p.x * sin + p.y * cos, mass: each }));
+    const n = particles.length;
+    for (let k = 0; k < n; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % n], { compliance }));
+    for (let k = 2; k < n - 1; k++) constraints.push(world.addDistance(particles[0], particles[k], { compliance }));
+    for (const [a, b] of extraBraces) constraints.push(world.addDistance(particles[a], particles[b], { compliance }));
+    return world.addBody('rigid', particles, constraints);
+  });
+}
+
+/** A rigid box: 4 corner particles, 4 edges and 2 diagonals. (x, y) is its centre. */
+export function createBox(world: World, o: BoxOptions): Built {
+  const w = positive('width', o?.width) / 2;
+  const h = positive('height', o.height) / 2;
+  // The fan gives one diagonal; the second keeps the frame square under large loads as well.
+  return createFrame(
+    world,
+    {
+    points: [
+      { x: -w, y: -h },
+      { x: w, y: -h },
+      { x: w, y: h },
+      { x: -w, y: h },
+    ],
+    x: o.x,
+    y: o.y,
+    angle: o.angle,
+    mass: o.mass ?? 4 * w * h,
+    compliance: o.compliance,
+    },
+    [[1, 3]],
+  );
+}
+
+export function shoelace(points: { x: number; y: number }[]): number {
+  let s = 0;
+  for (let k = 0; k < points.length; k++) {
+    const a = points[k];
+    const b = points[(k + 1) % points.length];
+    s += a.x * b.y - b.x * a.y;
+  }
+  return s / 2;
+}

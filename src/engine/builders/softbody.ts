@@ -1,0 +1,55 @@
+import type { World } from '../world.js';
+import { integer, nonNegative, oneOf, positive } from '../validate.js';
+import { complianceOf, massEach, point, transactional, type Built } from './common.js';
+
+export interface SoftBodyOptions {
+  center: { x: number; y: number };
+  radius: number;
+  /** Particles on the ring. Default 16. */
+  segments?: number;
+  /** Total mass. Default the disc's area. */
+  mass?: number;
+  /**
+   * 'pressure' (default): the ring's links plus an area constraint at `pressure` × the rest area.
+   * 'springs': the ring's links plus damped springs from a centre particle (seed 2.4's mass–spring model).
+   */
+  model?: 'pressure' | 'springs';
+  pressure?: number;
+  /** Compliance of the ring's links. Default 0.0001 (a little give). */
+  compliance?: number;
+  /** Compliance of the area constraint. Default 0. */
+  areaCompliance?: number;
+  /** Springs model: Hooke constant and damping of the spokes. Defaults 400 and 2. */
+  stiffness?: number;
+  damping?: number;
+}
+
+/** A deformable ring (seed 2.3/2.4). */
+export function createSoftBody(world: World, o: SoftBodyOptions): Built {
+  const c = point('center', o?.center);
+  const radius = positive('radius', o.radius);
+  const segments = integer('segments', o.segments ?? 16, 3, 4096);
+  const model = oneOf('model', o.model ?? 'pressure', ['pressure', 'springs'] as const);
+  const each = massEach('mass', o.mass, segments, Math.PI * radius * radius);
+  const compliance = complianceOf('compliance', o.compliance ?? 1e-4);
+  const pressure = positive('pressure', o.pressure ?? 1);
+  const areaCompliance = nonNegative('areaCompliance', o.areaCompliance ?? 0);
+  const stiffness = nonNegative('stiffness', o.stiffness ?? 400);
+  const damping = nonNegative('damping', o.damping ?? 2);
+  return transactional(world, (particles, constraints) => {
+    for (let k = 0; k < segments; k++) {
+      // Counter-clockwise in a y-up frame, the orientation the area constraint measures as positive.
+      const t = (2 * Math.PI * k) / segments;
+      particles.push(world.addParticle({ x: c.x + radius * Math.cos(t), y: c.y + radius * Math.sin(t), mass: each }));
+    }
+    for (let k = 0; k < segments; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % segments], { compliance }));
+    if (model === 'pressure') {
+      constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance }));
+    } else {
+      const hub = world.addParticle({ x: c.x, y: c.y, mass: each });
+      for (let k = 0; k < segments; k++) constraints.push(world.addSpring(hub, particles[k], { stiffness, damping }));
+      particles.push(hub);
+    }
+    return world.addBody('soft', particles, constraints);
+  });
+}

@@ -1,0 +1,62 @@
+import { Table } from '../table.js';
+import type { ParticleStore } from '../particles.js';
+
+/**
+ * Distance constraints between two particles, solved as XPBD: the length is kept within [minLength, maxLength]
+ * (equal for a stick, 0..L for a slack rope link, L..∞ for a minimum distance). `compliance` is the inverse
+ * stiffness in length per unit force (0 = rigid); because XPBD scales it by 1/h² and carries the multiplier
+ * `lambda` across iterations, a given compliance means the same physical stiffness whatever the substep and
+ * iteration counts.
+ */
+export class DistanceConstraints extends Table {
+  readonly columns = ['a', 'b', 'minLength', 'maxLength', 'compliance', 'lambda', 'slot'] as const;
+  a = new Int32Array(16);
+  b = new Int32Array(16);
+  minLength = new Float64Array(16);
+  maxLength = new Float64Array(16);
+  compliance = new Float64Array(16);
+  lambda = new Float64Array(16);
+  /** Handle slot owning this row (for swap-remove bookkeeping). */
+  slot = new Int32Array(16);
+}
+
+export function solveDistances(c: DistanceConstraints, p: ParticleStore, h2: number): void {
+  const { a, b, minLength, maxLength, compliance, lambda } = c;
+  const { x, y, invMass } = p;
+  const n = c.count;
+  for (let i = 0; i < n; i++) {
+    const ia = a[i];
+    const ib = b[i];
+    const wa = invMass[ia];
+    const wb = invMass[ib];
+    const w = wa + wb;
+    if (w === 0) continue;
+    let dx = x[ib] - x[ia];
+    let dy = y[ib] - y[ia];
+    const d2 = dx * dx + dy * dy;
+    const lo = minLength[i];
+    const hi = maxLength[i];
+    // Slack rope links and tethers are mostly inactive: skip them before paying for the square root.
+    if (lo !== hi && d2 >= lo * lo && d2 <= hi * hi) continue;
+    const d = Math.sqrt(d2);
+    let err: number;
+    if (d > hi) err = d - hi;
+    else if (d < lo) err = d - lo;
+    else continue;
+    if (d > 1e-12) {
+      dx /= d;
+      dy /= d;
+    } else {
+      // Coincident particles have no direction; pick a fixed one so the result stays finite and deterministic.
+      dx = 1;
+      dy = 0;
+    }
+    const alpha = compliance[i] / h2;
+    const dl = (-err - alpha * lambda[i]) / (w + alpha);
+    lambda[i] += dl;
+    x[ia] -= wa * dl * dx;
+    y[ia] -= wa * dl * dy;
+    x[ib] += wb * dl * dx;
+    y[ib] += wb * dl * dy;
+  }
+}

@@ -1,0 +1,39 @@
+import { Table } from '../table.js';
+import type { ParticleStore } from '../particles.js';
+
+/**
+ * Mass–spring links (seed 2.4): Hooke's force k·(d − L) plus a damping force c·(relative speed along the link),
+ * added to the particles' forces before integration. Unlike the XPBD constraints these are explicit forces, which
+ * is what the seed's integrator comparison is about: a stiff spring with a large step shows each integrator's
+ * stability.
+ */
+export class Springs extends Table {
+  readonly columns = ['a', 'b', 'restLength', 'stiffness', 'damping', 'slot'] as const;
+  a = new Int32Array(16);
+  b = new Int32Array(16);
+  restLength = new Float64Array(16);
+  stiffness = new Float64Array(16);
+  damping = new Float64Array(16);
+  slot = new Int32Array(16);
+}
+
+/** Adds spring forces into ax/ay (accelerations scratch, already holding gravity + user force per unit mass). */
+export function accumulateSprings(s: Springs, p: ParticleStore, ax: Float64Array, ay: Float64Array): void {
+  const { x, y, vx, vy, invMass } = p;
+  for (let i = 0, n = s.count; i < n; i++) {
+    const ia = s.a[i];
+    const ib = s.b[i];
+    let dx = x[ib] - x[ia];
+    let dy = y[ib] - y[ia];
+    const d = Math.sqrt(dx * dx + dy * dy);
+    if (d < 1e-12) continue;
+    dx /= d;
+    dy /= d;
+    const relSpeed = (vx[ib] - vx[ia]) * dx + (vy[ib] - vy[ia]) * dy;
+    const f = s.stiffness[i] * (d - s.restLength[i]) + s.damping[i] * relSpeed;
+    ax[ia] += f * dx * invMass[ia];
+    ay[ia] += f * dy * invMass[ia];
+    ax[ib] -= f * dx * invMass[ib];
+    ay[ib] -= f * dy * invMass[ib];
+  }
+}

@@ -1,0 +1,14 @@
+// physics-elements/engine: the headless engine. No DOM, no worker, no p5: runs in Node, a worker or a page.
+export { World, BODY_KINDS } from './world.js';
+export type {
+  WorldOptions, WorldSnapshot, ParticleOptions, DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions,
+  BodyKind, Vec2, Handle, Integrator, Bounds,
+} from './world.js';
+export { INTEGRATORS } from './integrate.js';
+export { createRope, type RopeOptions } from './builders/rope.js';
+export { createCloth, type ClothOptions, type ClothPins } from './builders/cloth.js';
+export { createBox, createPolygon, type BoxOptions, type PolygonOptions } from './builders/rigid.js';
+export { createSoftBody, type SoftBodyOptions } from './builders/softbody.js';
+export { createRagdoll, ragdollJoints, RAGDOLL_JOINTS, type RagdollOptions } from './builders/ragdoll.js';
+export type { Built } from './builders/common.js';
+export { hashColumns } from './hash.js';

@@ -1,0 +1,74 @@
+import type { ParticleStore } from './particles.js';
+
+/** The integrators the seed compares (2.5). Position Verlet is the default. */
+export type Integrator = 'verlet' | 'semi-implicit-euler' | 'explicit-euler';
+export const INTEGRATORS: readonly Integrator[] = ['verlet', 'semi-implicit-euler', 'explicit-euler'];
+
+/**
+ * Advances every movable particle by one substep h from the accelerations in p.ax/p.ay and remembers where it
+ * started (px/py). `damp` = 1 / (1 + h·linearDamping). Immovable particles only get px = x, so their velocity
+ * (a moving pin's, say) is still derived correctly afterwards.
+ *
+ * - verlet:              x' = x + (x − x_prev)·damp + a·h²   (written with v = (x − x_prev)/h)
+ * - semi-implicit-euler: v' = (v + a·h)·damp, x' = x + v'·h
+ * - explicit-euler:      x' = x + v·h, v' = (v + a·h)·damp  (gains energy on oscillators: kept for comparison)
+ */
+export function integrate(p: ParticleStore, h: number, damp: number, integrator: Integrator): void {
+  const { x, y, px, py, vx, vy, qx, qy, ax, ay, invMass, alive } = p;
+  const n = p.count;
+  const h2 = h * h;
+  for (let i = 0; i < n; i++) {
+    if (alive[i] === 0) continue;
+    const xi = x[i];
+    const yi = y[i];
+    px[i] = xi;
+    py[i] = yi;
+    if (invMass[i] === 0) continue;
+    if (integrator === 'verlet') {
+      x[i] = xi + vx[i] * damp * h + ax[i] * h2;
+      y[i] = yi + vy[i] * damp * h + ay[i] * h2;
+    } else if (integrator === 'semi-implicit-euler') {
+      const nvx = (vx[i] + ax[i] * h) * damp;
+      const nvy = (vy[i] + ay[i] * h) * damp;
+      vx[i] = nvx;
+      vy[i] = nvy;
+      x[i] = xi + nvx * h;
+      y[i] = yi + nvy * h;
+    } else {
+      x[i] = xi + vx[i] * h;
+      y[i] = yi + vy[i] * h;
+      vx[i] = (vx[i] + ax[i] * h) * damp;
+      vy[i] = (vy[i] + ay[i] * h) * damp;
+    }
+    qx[i] = x[i];
+    qy[i] = y[i];
+  }
+}
+
+/**
+ * After the constraints moved particles, velocities follow the positions. For the position-based integrators
+ * v = (x − x_prev)/h. Explicit Euler keeps its own velocity and only adds what the constraints moved.
+ */
+export function updateVelocities(p: ParticleStore, h: number, integrator: Integrator): void {
+  const { x, y, px, py, vx, vy, qx, qy, invMass, alive } = p;
+  const inv = 1 / h;
+  const n = p.count;
+  if (integrator === 'explicit-euler') {
+    for (let i = 0; i < n; i++) {
+      if (alive[i] === 0) continue;
+      if (invMass[i] === 0) {
+        vx[i] = (x[i] - px[i]) * inv;
+        vy[i] = (y[i] - py[i]) * inv;
+      } else {
+        vx[i] += (x[i] - qx[i]) * inv;
+        vy[i] += (y[i] - qy[i]) * inv;
+      }
+    }
+    return;
+  }
+  for (let i = 0; i < n; i++) {
+    if (alive[i] === 0) continue;
+    vx[i] = (x[i] - px[i]) * inv;
+    vy[i] = (y[i] - py[i]) * inv;
+  }
+}

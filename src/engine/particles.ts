@@ -1,0 +1,43 @@
+import { Table } from './table.js';
+
+/**
+ * Particle state, one typed array per field. A particle's index is its handle's slot and never moves (constraints
+ * and shapes refer to particles by index), so removed particles leave a hole: `alive` 0 and `invMass` 0, which
+ * every loop already skips. Slots are reused by later particles.
+ */
+export class ParticleStore extends Table {
+  readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags'] as const;
+  /** Position now. */
+  x = new Float64Array(16);
+  y = new Float64Array(16);
+  /** Position at the start of the current substep (Verlet's previous position). */
+  px = new Float64Array(16);
+  py = new Float64Array(16);
+  /** Velocity over the last substep, (x − px) / h for position-based integrators. */
+  vx = new Float64Array(16);
+  vy = new Float64Array(16);
+  /** Position right after integration, before constraints: what the explicit Euler velocity update needs. */
+  qx = new Float64Array(16);
+  qy = new Float64Array(16);
+  /** Acceleration this substep: gravity + user force / mass + spring forces / mass. */
+  ax = new Float64Array(16);
+  ay = new Float64Array(16);
+  /** Force accumulated by the user for the next step (cleared after it). */
+  fx = new Float64Array(16);
+  fy = new Float64Array(16);
+  /** 1 / mass; 0 = immovable (pinned, static or removed). */
+  invMass = new Float64Array(16);
+  radius = new Float64Array(16);
+  alive = new Uint8Array(16);
+  /** Bit flags (see ParticleFlag). */
+  flags = new Uint8Array(16);
+}
+
+export const enum ParticleFlag {
+  /** Immovable by the user's choice (mass Infinity); keeps invMass 0 through pin/unpin. */
+  Static = 1,
+  /** Held by a rigid pin: invMass is 0 while the pin lives. */
+  Pinned = 2,
+  /** Collides with world bounds and (later) with shapes as a circle of its radius. */
+  Collides = 4,
+}

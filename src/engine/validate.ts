@@ -1,0 +1,65 @@
+// Argument checks for the public JS API. Every error names the argument and the value it got, so a bad call is
+// caught where it is made and never reaches the state as NaN.
+
+function show(value: unknown): string {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (typeof value === 'number' || typeof value === 'boolean' || value == null) return String(value);
+  try {
+    return JSON.stringify(value) ?? String(value);
+  } catch {
+    return Object.prototype.toString.call(value);
+  }
+}
+
+/** A finite number (not NaN, not ±Infinity). */
+export function finite(name: string, value: unknown): number {
+  if (typeof value !== 'number') throw new TypeError(`${name} must be a number, got ${show(value)}`);
+  if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${show(value)}`);
+  return value;
+}
+
+/** A finite number > 0. */
+export function positive(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (!(v > 0)) throw new RangeError(`${name} must be > 0, got ${show(value)}`);
+  return v;
+}
+
+/** A finite number >= 0. */
+export function nonNegative(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (!(v >= 0)) throw new RangeError(`${name} must be >= 0, got ${show(value)}`);
+  return v;
+}
+
+/** A number >= 0 that may be +Infinity (an open upper limit). */
+export function nonNegativeOrInfinity(name: string, value: unknown): number {
+  if (value === Infinity) return Infinity;
+  return nonNegative(name, value);
+}
+
+/** A whole number in [min, max]. */
+export function integer(name: string, value: unknown, min: number, max = Number.MAX_SAFE_INTEGER): number {
+  const v = finite(name, value);
+  if (!Number.isInteger(v) || v < min || v > max) {
+    throw new RangeError(`${name} must be a whole number from ${min} to ${max}, got ${show(value)}`);
+  }
+  return v;
+}
+
+/** A number in [0, 1]. */
+export function unit(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (v < 0 || v > 1) throw new RangeError(`${name} must be between 0 and 1, got ${show(value)}`);
+  return v;
+}
+
+/** One of a fixed set of strings. */
+export function oneOf<T extends string>(name: string, value: unknown, allowed: readonly T[]): T {
+  if (typeof value !== 'string' || !(allowed as readonly string[]).includes(value)) {
+    throw new RangeError(`${name} must be one of ${allowed.map((a) => `"${a}"`).join(', ')}, got ${show(value)}`);
+  }
+  return value as T;
+}
+
+export { show as describeValue };

@@ -1,0 +1,828 @@
+import { handleSlot, HandleRegistry, type Handle, type RegistrySnapshot } from './handles.js';
+import { ParticleFlag, ParticleStore } from './particles.js';
+import type { Column, Table } from './table.js';
+import { DistanceConstraints, solveDistances } from './constraints/distance.js';
+import { AngleConstraints, signedAngle, solveAngles } from './constraints/angle.js';
+import { PinConstraints, placeRigidPins, solveSoftPins } from './constraints/pin.js';
+import { AreaConstraints, loopArea, solveAreas } from './constraints/area.js';
+import { accumulateSprings, Springs } from './constraints/spring.js';
+import { integrate, INTEGRATORS, updateVelocities, type Integrator } from './integrate.js';
+import { keepInBounds, type Bounds } from './bounds.js';
+import { hashColumns } from './hash.js';
+import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
+
+export type { Handle } from './handles.js';
+export type { Integrator } from './integrate.js';
+export type { Bounds } from './bounds.js';
+
+export interface Vec2 {
+  x: number;
+  y: number;
+}
+
+export interface WorldOptions {
+  /** Acceleration of gravity. Default {x: 0, y: 9.81}: y grows downward, as on a canvas or in SVG. */
+  gravity?: Vec2;
+  /** The fixed step in seconds. Default 1/60. */
+  timestep?: number;
+  /** Substeps per step. Default 10 (substeps buy more stiffness per cost than iterations). */
+  substeps?: number;
+  /** Gauss–Seidel iterations per substep. Default 1. */
+  iterations?: number;
+  /** Linear damping per second (velocity shrinks by 1/(1 + h·damping) each substep). Default 0. */
+  damping?: number;
+  integrator?: Integrator;
+  /** A box the particles cannot leave; null for none (default). */
+  bounds?: Bounds | null;
+  /** Coulomb friction of the bounds' walls. Default 0.5. */
+  boundsFriction?: number;
+  /** The most steps advance() takes to catch up with real time; the rest of the backlog is dropped. Default 5. */
+  maxCatchUpSteps?: number;
+  /** advance(elapsed) takes one step of the elapsed time instead of fixed steps (seed 5.3's comparison). */
+  variableStep?: boolean;
+}
+
+export interface ParticleOptions {
+  x: number;
+  y: number;
+  /** Mass (> 0). Infinity makes the particle immovable. Default 1. */
+  mass?: number;
+  /** Collision radius (>= 0). Default 0. */
+  radius?: number;
+  vx?: number;
+  vy?: number;
+}
+
+export interface DistanceOptions {
+  /** Rest length; default the particles' current distance. Sets both minLength and maxLength. */
+  length?: number;
+  /** Lower limit (default = length). 0 with maxLength = L makes a slack rope link. */
+  minLength?: number;
+  /** Upper limit (default = length). Infinity with minLength = L keeps particles at least L apart. */
+  maxLength?: number;
+  /** Inverse stiffness (length per unit force); 0 = rigid. Default 0. */
+  compliance?: number;
+}
+
+export interface AngleOptions {
+  /** Lower limit of the signed angle from (a − b) to (c − b), radians. */
+  min: number;
+  /** Upper limit, radians; min <= max <= min + 2π. Limits beyond ±π are fine (the angle is measured from the centre of the range). */
+  max: number;
+  compliance?: number;
+}
+
+export interface SpringOptions {
+  /** Rest length; default the current distance. */
+  length?: number;
+  /** Hooke constant k (force per unit length, >= 0). */
+  stiffness: number;
+  /** Damping constant c (force per unit relative speed, >= 0). Default 0. */
+  damping?: number;
+}
+
+export interface PinOptions {
+  /** Target point; default the particle's current position. */
+  x?: number;
+  y?: number;
+  /** 0 (default) holds the particle exactly; > 0 pulls it like a zero-length spring. */
+  compliance?: number;
+}
+
+export interface AreaOptions {
+  /** Rest area as a multiple of the loop's current area (a soft body's pressure). Default 1. */
+  pressure?: number;
+  compliance?: number;
+}
+
+export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';
+export const BODY_KINDS: readonly BodyKind[] = ['particle', 'rope', 'cloth', 'rigid', 'soft', 'ragdoll', 'custom'];
+
+const enum Kind {
+  Distance,
+  Angle,
+  Pin,
+  Spring,
+  Area,
+}
+
+const DEFAULTS = {
+  gravity: { x: 0, y: 9.81 },
+  timestep: 1 / 60,
+  substeps: 10,
+  iterations: 1,
+  damping: 0,
+  integrator: 'verlet' as Integrator,
+  boundsFriction: 0.5,
+  maxCatchUpSteps: 5,
+  variableStep: false,
+};
+
+/**
+ * The headless engine: Verlet particles, constraints relaxed by Gauss–Seidel (XPBD) iterations inside substeps,
+ * bodies as groups of particles and constraints. No DOM: runs in Node, a worker or the main thread.
+ *
+ * A step is a fixed list of phases per substep: accelerate → integrate → place pins → relax constraints and
+ * bounds → derive velocities.
+ */
+export class World {
+  readonly particles = new ParticleStore();
+  readonly distances = new DistanceConstraints();
+  readonly angles = new AngleConstraints();
+  readonly pins = new PinConstraints();
+  readonly springs = new Springs();
+  readonly areas = new AreaConstraints();
+
+  private readonly particleIds = new HandleRegistry('particle');
+  private readonly constraintIds = new HandleRegistry('constraint');
+  private readonly bodyIds = new HandleRegistry('body');
+  /** Per constraint slot: which table and which row. */
+  private constraintKind = new Uint8Array(64);
+  private constraintRow = new Int32Array(64);
+  /** Per body slot: kind, member particle slots and constraint handles. */
+  private bodyKind: BodyKind[] = [];
+  private bodyParticles: Int32Array[] = [];
+  private bodyConstraints: Handle[][] = [];
+
+  gravity: Vec2;
+  private _timestep: number;
+  private _substeps: number;
+  private _iterations: number;
+  private _damping: number;
+  private _integrator: Integrator;
+  bounds: Bounds | null;
+  private _boundsFriction: number;
+  private _maxCatchUpSteps: number;
+  variableStep: boolean;
+
+  /** Simulated seconds. */
+  time = 0;
+  /** Steps taken. */
+  stepCount = 0;
+  /** Fraction of a step left in the accumulator after advance(): blend the two newest states by it to render. */
+  alpha = 0;
+  private accumulator = 0;
+
+  constructor(options: WorldOptions = {}) {
+    const o = { ...DEFAULTS, ...options };
+    this.gravity = { x: finite('gravity.x', o.gravity.x), y: finite('gravity.y', o.gravity.y) };
+    this._timestep = positive('timestep', o.timestep);
+    this._substeps = integer('substeps', o.substeps, 1, 1000);
+    this._iterations = integer('iterations', o.iterations, 1, 1000);
+    this._damping = nonNegative('damping', o.damping);
+    this._integrator = oneOf('integrator', o.integrator, INTEGRATORS);
+    this.bounds = o.bounds == null ? null : checkBounds(o.bounds);
+    this._boundsFriction = nonNegative('boundsFriction', o.boundsFriction);
+    this._maxCatchUpSteps = integer('maxCatchUpSteps', o.maxCatchUpSteps, 1, 1000);
+    this.variableStep = Boolean(o.variableStep);
+  }
+
+  // ---- settings (validated) ----------------------------------------------------------------------------------
+
+  get timestep(): number {
+    return this._timestep;
+  }
+  set timestep(v: number) {
+    this._timestep = positive('timestep', v);
+  }
+  get substeps(): number {
+    return this._substeps;
+  }
+  set substeps(v: number) {
+    this._substeps = integer('substeps', v, 1, 1000);
+  }
+  get iterations(): number {
+    return this._iterations;
+  }
+  set iterations(v: number) {
+    this._iterations = integer('iterations', v, 1, 1000);
+  }
+  get damping(): number {
+    return this._damping;
+  }
+  set damping(v: number) {
+    this._damping = nonNegative('damping', v);
+  }
+  get integrator(): Integrator {
+    return this._integrator;
+  }
+  set integrator(v: Integrator) {
+    this._integrator = oneOf('integrator', v, INTEGRATORS);
+  }
+  get boundsFriction(): number {
+    return this._boundsFriction;
+  }
+  set boundsFriction(v: number) {
+    this._boundsFriction = nonNegative('boundsFriction', v);
+  }
+  get maxCatchUpSteps(): number {
+    return this._maxCatchUpSteps;
+  }
+  set maxCatchUpSteps(v: number) {
+    this._maxCatchUpSteps = integer('maxCatchUpSteps', v, 1, 1000);
+  }
+  setGravity(x: number, y: number): void {
+    this.gravity = { x: finite('gravity.x', x), y: finite('gravity.y', y) };
+  }
+  setBounds(bounds: Bounds | null): void {
+    this.bounds = bounds == null ? null : checkBounds(bounds);
+  }
+
+  /** The substep length h = timestep / substeps. */
+  get substepDt(): number {
+    return this._timestep / this._substeps;
+  }
+
+  // ---- particles ---------------------------------------------------------------------------------------------
+
+  addParticle(options: ParticleOptions): Handle {
+    if (options == null || typeof options !== 'object') throw new TypeError(`particle options must be an object, got ${String(options)}`);
+    const x = finite('x', options.x);
+    const y = finite('y', options.y);
+    const mass = options.mass === undefined ? 1 : options.mass;
+    if (mass !== Infinity) positive('mass', mass);
+    const radius = nonNegative('radius', options.radius ?? 0);
+    const vx = finite('vx', options.vx ?? 0);
+    const vy = finite('vy', options.vy ?? 0);
+
+    const handle = this.particleIds.allocate();
+    const slot = handleSlot(handle);
+    const p = this.particles;
+    if (slot >= p.count) p.pushRow();
+    for (const name of p.columns) (p as unknown as Record<string, Column>)[name][slot] = 0;
+    p.x[slot] = p.px[slot] = p.qx[slot] = x;
+    p.y[slot] = p.py[slot] = p.qy[slot] = y;
+    p.invMass[slot] = mass === Infinity ? 0 : 1 / mass;
+    p.radius[slot] = radius;
+    p.alive[slot] = 1;
+    p.flags[slot] = mass === Infinity ? ParticleFlag.Static : 0;
+    this.writeVelocity(slot, vx, vy);
+    return handle;
+  }
+
+  /** Removes a particle and every constraint that uses it. */
+  removeParticle(handle: Handle): void {
+    const slot = this.particleIds.slotOf(handle, 'particle');
+    this.removeConstraintsWhere((kind, row) => this.constraintUsesParticle(kind, row, slot));
+    const p = this.particles;
+    p.alive[slot] = 0;
+    p.invMass[slot] = 0;
+    p.flags[slot] = 0;
+    this.particleIds.release(handle);
+  }
+
+  hasParticle(handle: unknown): boolean {
+    return this.particleIds.isValid(handle);
+  }
+
+  /** The storage index of a live particle handle (index into world.particles' arrays). */
+  particleIndex(handle: Handle): number {
+    return this.particleIds.slotOf(handle, 'particle');
+  }
+
+  /** The handle of the particle stored at `index`. */
+  particleHandle(index: number): Handle {
+    return this.particleIds.handleOf(index);
+  }
+
+  /** Live particle count. */
+  get particleCount(): number {
+    let n = 0;
+    for (let i = 0; i < this.particles.count; i++) n += this.particles.alive[i];
+    return n;
+  }
+
+  getPosition(handle: Handle): Vec2 {
+    const i = this.particleIndex(handle);
+    return { x: this.particles.x[i], y: this.particles.y[i] };
+  }
+
+  /** Moves a particle (teleport: its velocity is kept). */
+  setPosition(handle: Handle, x: number, y: number): void {
+    const i = this.particleIndex(handle);
+    const nx = finite('x', x);
+    const ny = finite('y', y);
+    const p = this.particles;
+    p.px[i] += nx - p.x[i];
+    p.py[i] += ny - p.y[i];
+    p.x[i] = nx;
+    p.y[i] = ny;
+  }
+
+  /** Velocity over the last substep. */
+  getVelocity(handle: Handle): Vec2 {
+    const i = this.particleIndex(handle);
+    return { x: this.particles.vx[i], y: this.particles.vy[i] };
+  }
+
+  setVelocity(handle: Handle, vx: number, vy: number): void {
+    this.writeVelocity(this.particleIndex(handle), finite('vx', vx), finite('vy', vy));
+  }
+
+  /** Adds a force for the next step (cleared after it). */
+  applyForce(handle: Handle, fx: number, fy: number): void {
+    const i = this.particleIndex(handle);
+    this.particles.fx[i] += finite('fx', fx);
+    this.particles.fy[i] += finite('fy', fy);
+  }
+
+  /** Changes the velocity by impulse / mass at once. */
+  applyImpulse(handle: Handle, ix: number, iy: number): void {
+    const i = this.particleIndex(handle);
+    const w = this.particles.invMass[i];
+    const jx = finite('ix', ix);
+    const jy = finite('iy', iy);
+    this.particles.vx[i] += jx * w;
+    this.particles.vy[i] += jy * w;
+  }
+
+  getMass(handle: Handle): number {
+    const i = this.particleIndex(handle);
+    const w = this.particles.flags[i] & ParticleFlag.Pinned ? this.savedInvMassOf(i) : this.particles.invMass[i];
+    return w === 0 ? Infinity : 1 / w;
+  }
+
+  /**
+   * Position Verlet's velocity is the mean over a substep, i.e. the velocity half a substep earlier than the
+   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly.
+   */
+  private writeVelocity(i: number, vx: number, vy: number): void {
+    const p = this.particles;
+    const half = this._integrator === 'verlet' && p.invMass[i] !== 0 ? 0.5 * this.substepDt : 0;
+    p.vx[i] = vx - this.gravity.x * half;
+    p.vy[i] = vy - this.gravity.y * half;
+  }
+
+  // ---- constraints -------------------------------------------------------------------------------------------
+
+  /** A distance constraint (stick, slack rope link or minimum distance) between particles a and b. */
+  addDistance(a: Handle, b: Handle, options: DistanceOptions = {}): Handle {
+    const [ia, ib] = this.pair(a, b);
+    const p = this.particles;
+    const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
+    const length = options.length === undefined ? current : nonNegative('length', options.length);
+    const minLength = options.minLength === undefined ? length : nonNegative('minLength', options.minLength);
+    const maxLength = options.maxLength === undefined ? length : nonNegativeOrInfinity('maxLength', options.maxLength);
+    if (minLength > maxLength) throw new RangeError(`minLength (${minLength}) must be <= maxLength (${maxLength})`);
+    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const t = this.distances;
+    const row = t.pushRow();
+    t.a[row] = ia;
+    t.b[row] = ib;
+    t.minLength[row] = minLength;
+    t.maxLength[row] = maxLength;
+    t.compliance[row] = compliance;
+    return this.registerConstraint(Kind.Distance, t, row);
+  }
+
+  /** An angle limit at vertex b over the particles a, b, c. */
+  addAngleLimit(a: Handle, b: Handle, c: Handle, options: AngleOptions): Handle {
+    const [ia, ib] = this.pair(a, b, 'a', 'b');
+    const [, ic] = this.pair(b, c, 'b', 'c');
+    if (ia === ic) throw new RangeError(`a and c must be different particles, got ${a} twice`);
+    if (options == null) throw new TypeError('angle options {min, max} are required');
+    const min = finite('min', options.min);
+    const max = finite('max', options.max);
+    if (!(min <= max && max - min <= 2 * Math.PI)) throw new RangeError(`angle limits must satisfy min <= max <= min + 2π, got min ${min}, max ${max}`);
+    const t = this.angles;
+    const row = t.pushRow();
+    t.a[row] = ia;
+    t.b[row] = ib;
+    t.c[row] = ic;
+    t.min[row] = min;
+    t.max[row] = max;
+    t.compliance[row] = nonNegative('compliance', options.compliance ?? 0);
+    return this.registerConstraint(Kind.Angle, t, row);
+  }
+
+  /** The current signed angle at b from (a − b) to (c − b), in (−π, π]. */
+  angleAt(a: Handle, b: Handle, c: Handle): number {
+    const p = this.particles;
+    const ia = this.particleIndex(a);
+    const ib = this.particleIndex(b);
+    const ic = this.particleIndex(c);
+    return signedAngle(p.x[ia] - p.x[ib], p.y[ia] - p.y[ib], p.x[ic] - p.x[ib], p.y[ic] - p.y[ib]);
+  }
+
+  addSpring(a: Handle, b: Handle, options: SpringOptions): Handle {
+    const [ia, ib] = this.pair(a, b);
+    if (options == null) throw new TypeError('spring options {stiffness} are required');
+    const p = this.particles;
+    const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
+    const t = this.springs;
+    const length = options.length === undefined ? current : nonNegative('length', options.length);
+    const stiffness = nonNegative('stiffness', options.stiffness);
+    const damping = nonNegative('damping', options.damping ?? 0);
+    const row = t.pushRow();
+    t.a[row] = ia;
+    t.b[row] = ib;
+    t.restLength[row] = length;
+    t.stiffness[row] = stiffness;
+    t.damping[row] = damping;
+    return this.registerConstraint(Kind.Spring, t, row);
+  }
+
+  /** Pins a particle to a world point (its current position by default). */
+  addPin(particle: Handle, options: PinOptions = {}): Handle {
+    const i = this.particleIndex(particle);
+    const p = this.particles;
+    if (p.flags[i] & ParticleFlag.Pinned) throw new RangeError(`particle ${particle} is already rigidly pinned`);
+    const tx = options.x === undefined ? p.x[i] : finite('x', options.x);
+    const ty = options.y === undefined ? p.y[i] : finite('y', options.y);
+    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const t = this.pins;
+    const row = t.pushRow();
+    t.p[row] = i;
+    t.tx[row] = tx;
+    t.ty[row] = ty;
+    t.compliance[row] = compliance;
+    if (compliance === 0) {
+      t.savedInvMass[row] = p.invMass[i];
+      p.invMass[i] = 0;
+      p.flags[i] |= ParticleFlag.Pinned;
+      p.x[i] = p.px[i] = tx;
+      p.y[i] = p.py[i] = ty;
+      p.vx[i] = p.vy[i] = 0;
+    }
+    return this.registerConstraint(Kind.Pin, t, row);
+  }
+
+  /** Moves a pin's target (a dragged or animated anchor). */
+  setPinTarget(pin: Handle, x: number, y: number): void {
+    const row = this.constraintRowOf(pin, Kind.Pin, 'pin');
+    this.pins.tx[row] = finite('x', x);
+    this.pins.ty[row] = finite('y', y);
+  }
+
+  /** Keeps the area of the closed loop of particles (in order) at pressure × its current area. */
+  addAreaConstraint(loop: readonly Handle[], options: AreaOptions = {}): Handle {
+    if (!Array.isArray(loop) || loop.length < 3) throw new RangeError(`an area constraint needs a loop of at least 3 particles, got ${Array.isArray(loop) ? loop.length : String(loop)}`);
+    const slots = loop.map((h, k) => this.particleIds.slotOf(h, `loop[${k}]`));
+    if (new Set(slots).size !== slots.length) throw new RangeError('an area constraint loop must not repeat a particle');
+    const pressure = positive('pressure', options.pressure ?? 1);
+    const t = this.areas;
+    const row = t.pushRow();
+    t.start[row] = t.appendLoop(slots);
+    t.length[row] = slots.length;
+    t.restArea[row] = loopArea(t.pool, t.start[row], slots.length, this.particles.x, this.particles.y) * pressure;
+    t.compliance[row] = nonNegative('compliance', options.compliance ?? 0);
+    return this.registerConstraint(Kind.Area, t, row);
+  }
+
+  removeConstraint(handle: Handle): void {
+    const slot = this.constraintIds.slotOf(handle, 'constraint');
+    const kind = this.constraintKind[slot] as Kind;
+    const row = this.constraintRow[slot];
+    if (kind === Kind.Pin && this.pins.compliance[row] === 0) {
+      const i = this.pins.p[row];
+      this.particles.invMass[i] = this.pins.savedInvMass[row];
+      this.particles.flags[i] &= ~ParticleFlag.Pinned;
+    }
+    const table = this.tableOf(kind) as Table & { slot: Int32Array };
+    const from = table.swapRemove(row);
+    if (from !== row) this.constraintRow[table.slot[row]] = row;
+    if (kind === Kind.Area) this.areas.compactPool();
+    this.constraintIds.release(handle);
+  }
+
+  hasConstraint(handle: unknown): boolean {
+    return this.constraintIds.isValid(handle);
+  }
+
+  get constraintCount(): number {
+    return this.distances.count + this.angles.count + this.pins.count + this.springs.count + this.areas.count;
+  }
+
+  /** Length error of a distance constraint: how far the current length is outside [minLength, maxLength]. */
+  distanceError(handle: Handle): number {
+    const row = this.constraintRowOf(handle, Kind.Distance, 'distance constraint');
+    const t = this.distances;
+    const p = this.particles;
+    const d = Math.sqrt((p.x[t.b[row]] - p.x[t.a[row]]) ** 2 + (p.y[t.b[row]] - p.y[t.a[row]]) ** 2);
+    return d > t.maxLength[row] ? d - t.maxLength[row] : d < t.minLength[row] ? t.minLength[row] - d : 0;
+  }
+
+  /** The largest relative stretch |d − L| / L over all distance constraints with L > 0 (0 when none). */
+  maxStrain(): number {
+    const t = this.distances;
+    const { x, y } = this.particles;
+    let worst = 0;
+    for (let i = 0; i < t.count; i++) {
+      const d = Math.sqrt((x[t.b[i]] - x[t.a[i]]) ** 2 + (y[t.b[i]] - y[t.a[i]]) ** 2);
+      const over = d > t.maxLength[i] ? (d - t.maxLength[i]) / t.maxLength[i] : d < t.minLength[i] ? (t.minLength[i] - d) / t.minLength[i] : 0;
+      if (over > worst && Number.isFinite(over)) worst = over;
+    }
+    return worst;
+  }
+
+  private pair(a: Handle, b: Handle, nameA = 'a', nameB = 'b'): [number, number] {
+    const ia = this.particleIds.slotOf(a, nameA);
+    const ib = this.particleIds.slotOf(b, nameB);
+    if (ia === ib) throw new RangeError(`${nameA} and ${nameB} must be different particles, got ${a} twice`);
+    return [ia, ib];
+  }
+
+  private registerConstraint(kind: Kind, table: { slot: Int32Array }, row: number): Handle {
+    const handle = this.constraintIds.allocate();
+    const slot = handleSlot(handle);
+    if (slot >= this.constraintKind.length) {
+      const k = new Uint8Array(this.constraintKind.length * 2);
+      k.set(this.constraintKind);
+      this.constraintKind = k;
+      const r = new Int32Array(this.constraintRow.length * 2);
+      r.set(this.constraintRow);
+      this.constraintRow = r;
+    }
+    this.constraintKind[slot] = kind;
+    this.constraintRow[slot] = row;
+    table.slot[row] = slot;
+    return handle;
+  }
+
+  private constraintRowOf(handle: Handle, kind: Kind, what: string): number {
+    const slot = this.constraintIds.slotOf(handle, what);
+    if (this.constraintKind[slot] !== kind) throw new RangeError(`constraint ${handle} is not a ${what}`);
+    return this.constraintRow[slot];
+  }
+
+  private tableOf(kind: Kind): Table {
+    return [this.distances, this.angles, this.pins, this.springs, this.areas][kind];
+  }
+
+  private savedInvMassOf(particle: number): number {
+    for (let r = 0; r < this.pins.count; r++) if (this.pins.p[r] === particle && this.pins.compliance[r] === 0) return this.pins.savedInvMass[r];
+    return 0;
+  }
+
+  private constraintUsesParticle(kind: Kind, row: number, i: number): boolean {
+    switch (kind) {
+      case Kind.Distance:
+        return this.distances.a[row] === i || this.distances.b[row] === i;
+      case Kind.Angle:
+        return this.angles.a[row] === i || this.angles.b[row] === i || this.angles.c[row] === i;
+      case Kind.Pin:
+        return this.pins.p[row] === i;
+      case Kind.Spring:
+        return this.springs.a[row] === i || this.springs.b[row] === i;
+      case Kind.Area: {
+        const t = this.areas;
+        for (let k = 0; k < t.length[row]; k++) if (t.pool[t.start[row] + k] === i) return true;
+        return false;
+      }
+    }
+  }
+
+  private removeConstraintsWhere(test: (kind: Kind, row: number) => boolean): void {
+    const doomed: Handle[] = [];
+    for (let slot = 0; slot < this.constraintIds.high; slot++) {
+      if (!this.constraintIds.alive[slot]) continue;
+      if (test(this.constraintKind[slot] as Kind, this.constraintRow[slot])) doomed.push(this.constraintIds.handleOf(slot));
+    }
+    for (const h of doomed) this.removeConstraint(h);
+  }
+
+  // ---- bodies ------------------------------------------------------------------------------------------------
+
+  /** Groups particles and constraints into one body (the builders call this). */
+  addBody(kind: BodyKind, particles: readonly Handle[], constraints: readonly Handle[] = []): Handle {
+    oneOf('kind', kind, BODY_KINDS);
+    const slots = Int32Array.from(particles, (h, k) => this.particleIds.slotOf(h, `particles[${k}]`));
+    constraints.forEach((h, k) => this.constraintIds.slotOf(h, `constraints[${k}]`));
+    const handle = this.bodyIds.allocate();
+    const slot = handleSlot(handle);
+    this.bodyKind[slot] = kind;
+    this.bodyParticles[slot] = slots;
+    this.bodyConstraints[slot] = constraints.slice();
+    return handle;
+  }
+
+  /** Removes a body with its particles and constraints. */
+  removeBody(handle: Handle): void {
+    const slot = this.bodyIds.slotOf(handle, 'body');
+    for (const c of this.bodyConstraints[slot]) if (this.constraintIds.isValid(c)) this.removeConstraint(c);
+    for (const i of this.bodyParticles[slot]) {
+      const h = this.particleIds.handleOf(i);
+      if (this.particleIds.isValid(h)) this.removeParticle(h);
+    }
+    this.bodyParticles[slot] = new Int32Array(0);
+    this.bodyConstraints[slot] = [];
+    this.bodyIds.release(handle);
+  }
+
+  hasBody(handle: unknown): boolean {
+    return this.bodyIds.isValid(handle);
+  }
+
+  bodyKindOf(handle: Handle): BodyKind {
+    return this.bodyKind[this.bodyIds.slotOf(handle, 'body')];
+  }
+
+  /** Storage indices of a body's particles (a view: do not modify). */
+  bodyParticleIndices(handle: Handle): Int32Array {
+    return this.bodyParticles[this.bodyIds.slotOf(handle, 'body')];
+  }
+
+  bodyParticleHandles(handle: Handle): Handle[] {
+    return Array.from(this.bodyParticleIndices(handle), (i) => this.particleIds.handleOf(i));
+  }
+
+  bodyConstraintHandles(handle: Handle): Handle[] {
+    return this.bodyConstraints[this.bodyIds.slotOf(handle, 'body')].slice();
+  }
+
+  /** Mean position of a body's particles. */
+  bodyCentroid(handle: Handle): Vec2 {
+    const idx = this.bodyParticleIndices(handle);
+    let sx = 0;
+    let sy = 0;
+    for (const i of idx) {
+      sx += this.particles.x[i];
+      sy += this.particles.y[i];
+    }
+    return { x: sx / idx.length, y: sy / idx.length };
+  }
+
+  /** Adds an impulse spread over a body's particles by mass (a change of the body's velocity by impulse / mass). */
+  applyBodyImpulse(handle: Handle, ix: number, iy: number): void {
+    const idx = this.bodyParticleIndices(handle);
+    const jx = finite('ix', ix);
+    const jy = finite('iy', iy);
+    let mass = 0;
+    for (const i of idx) if (this.particles.invMass[i] > 0) mass += 1 / this.particles.invMass[i];
+    if (mass === 0) return;
+    for (const i of idx) {
+      if (this.particles.invMass[i] === 0) continue;
+      this.particles.vx[i] += jx / mass;
+      this.particles.vy[i] += jy / mass;
+    }
+  }
+
+  *bodies(): IterableIterator<Handle> {
+    for (let slot = 0; slot < this.bodyIds.high; slot++) if (this.bodyIds.alive[slot]) yield this.bodyIds.handleOf(slot);
+  }
+
+  // ---- time --------------------------------------------------------------------------------------------------
+
+  /** One step of `dt` seconds (the fixed timestep by default), in `substeps` substeps. */
+  step(dt: number = this._timestep): void {
+    if (dt !== this._timestep) positive('dt', dt);
+    const n = this._substeps;
+    const h = dt / n;
+    for (let s = 0; s < n; s++) this.substep(h);
+    this.particles.fx.fill(0, 0, this.particles.count);
+    this.particles.fy.fill(0, 0, this.particles.count);
+    this.time += dt;
+    this.stepCount++;
+  }
+
+  /**
+   * Real time has passed: take as many fixed steps as fit (at most maxCatchUpSteps; an older backlog is dropped
+   * so a stalled tab does not spiral) and leave the remainder's fraction in `alpha` for interpolated rendering.
+   * In variableStep mode, take one step of the elapsed time instead. Returns the steps taken.
+   */
+  advance(elapsed: number): number {
+    nonNegative('elapsed', elapsed);
+    if (this.variableStep) {
+      if (elapsed === 0) return 0;
+      this.step(Math.min(elapsed, this._timestep * this._maxCatchUpSteps));
+      this.alpha = 1;
+      return 1;
+    }
+    this.accumulator += elapsed;
+    let taken = 0;
+    while (this.accumulator >= this._timestep && taken < this._maxCatchUpSteps) {
+      this.step();
+      this.accumulator -= this._timestep;
+      taken++;
+    }
+    if (this.accumulator >= this._timestep) this.accumulator %= this._timestep;
+    this.alpha = this.accumulator / this._timestep;
+    return taken;
+  }
+
+  private substep(h: number): void {
+    const h2 = h * h;
+    this.accelerate();
+    integrate(this.particles, h, 1 / (1 + h * this._damping), this._integrator);
+    placeRigidPins(this.pins, this.particles);
+    this.distances.lambda.fill(0, 0, this.distances.count);
+    this.angles.lambda.fill(0, 0, this.angles.count);
+    this.areas.lambda.fill(0, 0, this.areas.count);
+    this.pins.lambdaX.fill(0, 0, this.pins.count);
+    this.pins.lambdaY.fill(0, 0, this.pins.count);
+    for (let k = 0; k < this._iterations; k++) this.relax(h2);
+    updateVelocities(this.particles, h, this._integrator);
+  }
+
+  /** Gravity, the user's forces and the springs' forces, as accelerations. */
+  private accelerate(): void {
+    const { ax, ay, fx, fy, invMass } = this.particles;
+    const gx = this.gravity.x;
+    const gy = this.gravity.y;
+    for (let i = 0, n = this.particles.count; i < n; i++) {
+      ax[i] = gx + fx[i] * invMass[i];
+      ay[i] = gy + fy[i] * invMass[i];
+    }
+    if (this.springs.count > 0) accumulateSprings(this.springs, this.particles, ax, ay);
+  }
+
+  /** One Gauss–Seidel sweep over every constraint (seed Algorithm 1), then the bounds. */
+  private relax(h2: number): void {
+    const p = this.particles;
+    if (this.distances.count > 0) solveDistances(this.distances, p, h2);
+    if (this.angles.count > 0) solveAngles(this.angles, p, h2);
+    if (this.areas.count > 0) solveAreas(this.areas, p, h2);
+    if (this.pins.count > 0) solveSoftPins(this.pins, p, h2);
+    if (this.bounds) keepInBounds(p, this.bounds, this._boundsFriction);
+  }
+
+  // ---- determinism -------------------------------------------------------------------------------------------
+
+  /** A hash of the full simulation state (positions, velocities, masses): equal states give equal hashes. */
+  stateHash(): string {
+    const p = this.particles;
+    const n = p.count;
+    return hashColumns([p.x, p.y, p.px, p.py, p.vx, p.vy, p.invMass, p.alive], n, [this.stepCount, this.constraintCount]);
+  }
+
+  /** The whole state as plain data (structured-cloneable: a worker can post it). */
+  snapshot(): WorldSnapshot {
+    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas];
+    return {
+      settings: {
+        gravity: { ...this.gravity },
+        timestep: this._timestep,
+        substeps: this._substeps,
+        iterations: this._iterations,
+        damping: this._damping,
+        integrator: this._integrator,
+        bounds: this.bounds ? { ...this.bounds } : null,
+        boundsFriction: this._boundsFriction,
+        maxCatchUpSteps: this._maxCatchUpSteps,
+        variableStep: this.variableStep,
+      },
+      time: this.time,
+      stepCount: this.stepCount,
+      accumulator: this.accumulator,
+      tables: tables.map((t) => ({ count: t.count, columns: t.snapshot() })),
+      areaPool: this.areas.pool.slice(0, this.areas.poolUsed),
+      registries: [this.particleIds, this.constraintIds, this.bodyIds].map((r) => r.snapshot()),
+      constraintKind: this.constraintKind.slice(),
+      constraintRow: this.constraintRow.slice(),
+      bodyKind: this.bodyKind.slice(),
+      bodyParticles: this.bodyParticles.map((a) => a.slice()),
+      bodyConstraints: this.bodyConstraints.map((a) => a.slice()),
+    };
+  }
+
+  restore(s: WorldSnapshot): void {
+    Object.assign(this, {
+      gravity: { ...s.settings.gravity },
+      _timestep: s.settings.timestep,
+      _substeps: s.settings.substeps,
+      _iterations: s.settings.iterations,
+      _damping: s.settings.damping,
+      _integrator: s.settings.integrator,
+      bounds: s.settings.bounds ? { ...s.settings.bounds } : null,
+      _boundsFriction: s.settings.boundsFriction,
+      _maxCatchUpSteps: s.settings.maxCatchUpSteps,
+      variableStep: s.settings.variableStep,
+    });
+    this.time = s.time;
+    this.stepCount = s.stepCount;
+    this.accumulator = s.accumulator;
+    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas];
+    tables.forEach((t, k) => t.restore(s.tables[k].columns, s.tables[k].count));
+    this.areas.pool = new Int32Array(Math.max(64, s.areaPool.length));
+    this.areas.pool.set(s.areaPool);
+    this.areas.poolUsed = s.areaPool.length;
+    [this.particleIds, this.constraintIds, this.bodyIds].forEach((r, k) => r.restore(s.registries[k]));
+    this.constraintKind = s.constraintKind.slice();
+    this.constraintRow = s.constraintRow.slice();
+    this.bodyKind = s.bodyKind.slice();
+    this.bodyParticles = s.bodyParticles.map((a) => a.slice());
+    this.bodyConstraints = s.bodyConstraints.map((a) => a.slice());
+  }
+}
+
+export interface WorldSnapshot {
+  settings: Required<Omit<WorldOptions, 'bounds'>> & { bounds: Bounds | null };
+  time: number;
+  stepCount: number;
+  accumulator: number;
+  tables: { count: number; columns: Column[] }[];
+  areaPool: Int32Array;
+  registries: RegistrySnapshot[];
+  constraintKind: Uint8Array;
+  constraintRow: Int32Array;
+  bodyKind: BodyKind[];
+  bodyParticles: Int32Array[];
+  bodyConstraints: Handle[][];
+}
+
+function checkBounds(b: Bounds): Bounds {
+  if (b == null || typeof b !== 'object') throw new TypeError(`bounds must be {minX, minY, maxX, maxY} or null, got ${String(b)}`);
+  const out = { minX: finite('bounds.minX', b.minX), minY: finite('bounds.minY', b.minY), maxX: finite('bounds.maxX', b.maxX), maxY: finite('bounds.maxY', b.maxY) };
+  if (!(out.minX < out.maxX && out.minY < out.maxY)) throw new RangeError(`bounds must have minX < maxX and minY < maxY, got ${JSON.stringify(b)}`);
+  return out;
+}

@@ -1,0 +1,171 @@
+import { expect } from '@open-wc/testing';
+import { World, createRope, createCloth, createRagdoll, createBox, createSoftBody, RAGDOLL_JOINTS } from '../../src/engine/index.js';
+import { allFinite, distance, totalEnergy } from './helpers.js';
+
+describe('constraints', () => {
+  it('a small-amplitude pendulum has period 2π√(L/g) within 1%', () => {
+    const L = 2;
+    const g = 9.81;
+    const world = new World({ gravity: { x: 0, y: g } });
+    const pivot = world.addParticle({ x: 0, y: 0, mass: Infinity });
+    const amplitude = 0.05;
+    const bob = world.addParticle({ x: L * Math.sin(amplitude), y: L * Math.cos(amplitude) });
+    world.addDistance(pivot, bob);
+    // Time between successive crossings of x = 0 in the same direction, interpolated linearly.
+    const crossings: number[] = [];
+    let prevX = world.getPosition(bob).x;
+    for (let k = 0; k < 60 * 20; k++) {
+      world.step();
+      const x = world.getPosition(bob).x;
+      if (prevX > 0 && x <= 0) crossings.push(world.time - world.timestep * (x / (x - prevX)));
+      prevX = x;
+    }
+    const periods = crossings.slice(1).map((t, k) => t - crossings[k]);
+    const mean = periods.reduce((a, b) => a + b, 0) / periods.length;
+    const expected = 2 * Math.PI * Math.sqrt(L / g);
+    expect(periods.length).to.be.at.least(5);
+    expect(Math.abs(mean - expected) / expected).to.be.below(0.01);
+  });
+
+  it('a 50-link rope hanging 10 s stretches < 1% and its energy never grows', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    // Hanging, slightly off vertical so it swings.
+    const rope = createRope(world, { from: { x: 0, y: 0 }, to: { x: 3, y: 9.5 }, segments: 50, ropeLike: false });
+    const links = rope.constraints.slice(0, 50);
+    const rest = Math.hypot(3, 9.5) / 50;
+    let worstStretch = 0;
+    const e0 = totalEnergy(world);
+    // Energy sloshes step to step through the links' residual stretch, but the rope must never hold more than it
+    // started with: projection only ever removes energy.
+    let peak = -Infinity;
+    for (let k = 0; k < 600; k++) {
+      world.step();
+      for (const c of links) worstStretch = Math.max(worstStretch, world.distanceError(c) / rest);
+      peak = Math.max(peak, totalEnergy(world));
+    }
+    console.log(`50-link rope, 10 s: max stretch ${(worstStretch * 100).toFixed(4)}%, peak energy − initial ${(peak - e0).toExponential(2)} J`);
+    expect(worstStretch).to.be.below(0.01);
+    expect(peak).to.be.at.most(e0);
+    expect(totalEnergy(world)).to.be.below(e0);
+  });
+
+  it('a rope released horizontally whips but keeps its links within 5%, and ends within 1%', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const rope = createRope(world, { from: { x: 0, y: 0 }, to: { x: 10, y: 0 }, segments: 50, ropeLike: false });
+    let worst = 0;
+    for (let k = 0; k < 600; k++) {
+      world.step();
+      for (const c of rope.constraints.slice(0, 50)) worst = Math.max(worst, world.distanceError(c) / 0.2);
+    }
+    console.log(`50-link rope released horizontally: max stretch ${(worst * 100).toFixed(3)}% during the whip`);
+    expect(worst).to.be.below(0.05);
+    expect(world.maxStrain()).to.be.below(0.01);
+  });
+
+  it('a 30×30 cloth pinned at two corners runs 10,000 steps with its pins exactly fixed and no NaN', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const cloth = createCloth(world, { origin: { x: -7.25, y: 0 }, columns: 30, rows: 30, spacing: 0.5, pins: 'corners', shear: 0.0001 });
+    const left = cloth.particles[0];
+    const right = cloth.particles[29];
+    for (let k = 0; k < 10000; k++) world.step();
+    expect(world.getPosition(left)).to.deep.equal({ x: -7.25, y: 0 });
+    expect(world.getPosition(right)).to.deep.equal({ x: 7.25, y: 0 });
+    expect(allFinite(world)).to.equal(true);
+    // It hangs: the middle of the bottom row is far below the pins, and no link is much longer than at rest.
+    expect(world.getPosition(cloth.particles[29 * 30 + 15]).y).to.be.above(10);
+    expect(world.maxStrain()).to.be.below(0.01);
+  });
+
+  it('rope slack: a link only resists stretching', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const a = world.addParticle({ x: 0, y: 0, mass: Infinity });
+    const b = world.addParticle({ x: 0.5, y: 0 });
+    world.addDistance(a, b, { minLength: 0, maxLength: 1 });
+    world.setVelocity(b, 1, 0);
+    for (let k = 0; k < 60; k++) world.step();
+    expect(distance(world, a, b)).to.be.closeTo(1, 1e-9); // stopped at the end of its slack
+    const c = world.addParticle({ x: 0.5, y: 1 });
+    world.addDistance(a, c, { minLength: 2, maxLength: Infinity });
+    world.step();
+    expect(distance(world, a, c)).to.be.at.least(2 - 1e-9); // minimum distance pushed it out
+  });
+
+  it('compliance means the same stiffness whatever the substep and iteration counts (XPBD)', () => {
+    // A mass hanging from a compliant link stretches by m·g·compliance at rest.
+    const stretch = (substeps: number, iterations: number) => {
+      const world = new World({ gravity: { x: 0, y: 10 }, substeps, iterations, damping: 2 });
+      const top = world.addParticle({ x: 0, y: 0, mass: Infinity });
+      const bob = world.addParticle({ x: 0, y: 1, mass: 2 });
+      world.addDistance(top, bob, { compliance: 0.01 });
+      for (let k = 0; k < 600; k++) world.step();
+      return world.getPosition(bob).y - 1;
+    };
+    for (const [s, i] of [[1, 1], [10, 1], [4, 5], [20, 3]]) expect(stretch(s, i)).to.be.closeTo(2 * 10 * 0.01, 2e-3);
+  });
+
+  it('a soft pin pulls a particle to its target; moving a rigid pin carries the particle', () => {
+    const world = new World({ gravity: { x: 0, y: 0 }, damping: 5 });
+    const p = world.addParticle({ x: 0, y: 0 });
+    world.addPin(p, { x: 1, y: 2, compliance: 0.001 });
+    for (let k = 0; k < 300; k++) world.step();
+    expect(world.getPosition(p).x).to.be.closeTo(1, 1e-3);
+    expect(world.getPosition(p).y).to.be.closeTo(2, 1e-3);
+    const q = world.addParticle({ x: 0, y: 0 });
+    const pin = world.addPin(q);
+    world.setPinTarget(pin, 3, 4);
+    world.step();
+    expect(world.getPosition(q)).to.deep.equal({ x: 3, y: 4 });
+    world.removeConstraint(pin);
+    expect(world.getMass(q)).to.equal(1);
+  });
+
+  it('an angle limit holds within 0.02 rad under load', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const a = world.addParticle({ x: -1, y: 0, mass: Infinity });
+    const b = world.addParticle({ x: 0, y: 0, mass: Infinity });
+    const c = world.addParticle({ x: 1, y: 0, mass: 5 });
+    world.addDistance(b, c);
+    // The free arm may bend at most 0.5 rad from straight (π) in either direction; gravity pulls it to +π/2 off.
+    world.addAngleLimit(a, b, c, { min: Math.PI - 0.5, max: Math.PI + 0.5 });
+    let worst = 0;
+    for (let k = 0; k < 600; k++) {
+      world.step();
+      const angle = world.angleAt(a, b, c);
+      const fromStraight = Math.PI - Math.abs(angle); // across ±π
+      worst = Math.max(worst, fromStraight - 0.5);
+    }
+    expect(worst).to.be.below(0.02);
+    expect(Math.PI - Math.abs(world.angleAt(a, b, c))).to.be.closeTo(0.5, 0.02); // it rests on the limit
+  });
+
+  it('a ragdoll falling onto the world floor keeps every joint inside its limits and its bones at length', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, bounds: { minX: -5, minY: -10, maxX: 5, maxY: 2 } });
+    const doll = createRagdoll(world, { x: 0, y: -2 });
+    world.applyBodyImpulse(doll.body, 300, -200);
+    for (let k = 0; k < 600; k++) world.step();
+    expect(allFinite(world)).to.equal(true);
+    expect(world.maxStrain()).to.be.below(0.01);
+    expect(RAGDOLL_JOINTS.length).to.equal(doll.particles.length);
+    for (const i of world.bodyParticleIndices(doll.body)) expect(world.particles.y[i]).to.be.at.most(2);
+  });
+
+  it('a pressure soft body keeps its area; a rigid box keeps its shape', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, bounds: { minX: -5, minY: -10, maxX: 5, maxY: 0 } });
+    const soft = createSoftBody(world, { center: { x: 0, y: -3 }, radius: 1, segments: 24 });
+    const box = createBox(world, { x: 3, y: -3, width: 1, height: 1, angle: 0.3 });
+    for (let k = 0; k < 300; k++) world.step();
+    const area = (idx: Int32Array) => {
+      let s = 0;
+      for (let k = 0; k < idx.length; k++) {
+        const i = idx[k];
+        const j = idx[(k + 1) % idx.length];
+        s += world.particles.x[i] * world.particles.y[j] - world.particles.x[j] * world.particles.y[i];
+      }
+      return Math.abs(s / 2);
+    };
+    const ring = world.bodyParticleIndices(soft.body);
+    expect(area(ring) / (24 / 2 * Math.sin((2 * Math.PI) / 24))).to.be.closeTo(1, 0.02);
+    expect(area(world.bodyParticleIndices(box.body))).to.be.closeTo(1, 1e-3);
+    expect(distance(world, box.particles[0], box.particles[2])).to.be.closeTo(Math.SQRT2, 1e-3);
+  });
+});

@@ -1,0 +1,31 @@
+import { World, type Handle } from '../../src/engine/index.js';
+
+/**
+ * Kinetic + gravitational potential energy of every movable particle. The velocity of a position-based step is the
+ * mean over the last substep, i.e. the velocity half a substep ago, so the potential is taken at the midpoint of
+ * that substep too: both terms then describe the same instant.
+ */
+export function totalEnergy(world: World): number {
+  const p = world.particles;
+  let e = 0;
+  for (let i = 0; i < p.count; i++) {
+    if (!p.alive[i] || p.invMass[i] === 0) continue;
+    const m = 1 / p.invMass[i];
+    e += 0.5 * m * (p.vx[i] ** 2 + p.vy[i] ** 2) - m * (world.gravity.x * (p.x[i] + p.px[i]) + world.gravity.y * (p.y[i] + p.py[i])) / 2;
+  }
+  return e;
+}
+
+export function allFinite(world: World): boolean {
+  const p = world.particles;
+  for (const col of [p.x, p.y, p.px, p.py, p.vx, p.vy]) {
+    for (let i = 0; i < p.count; i++) if (!Number.isFinite(col[i])) return false;
+  }
+  return true;
+}
+
+export function distance(world: World, a: Handle, b: Handle): number {
+  const pa = world.getPosition(a);
+  const pb = world.getPosition(b);
+  return Math.sqrt((pa.x - pb.x) ** 2 + (pa.y - pb.y) ** 2);
+}

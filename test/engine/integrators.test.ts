@@ -1,0 +1,76 @@
+import { expect } from '@open-wc/testing';
+import { World, INTEGRATORS } from '../../src/engine/index.js';
+import { totalEnergy } from './helpers.js';
+
+describe('integrators', () => {
+  it('position Verlet follows y0 + v0·t + ½·g·t² exactly for constant gravity', () => {
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    const p = world.addParticle({ x: 0, y: 2, vx: 3, vy: -4 });
+    for (let k = 0; k < 120; k++) world.step();
+    const t = world.time;
+    const pos = world.getPosition(p);
+    expect(t).to.be.closeTo(2, 1e-12);
+    expect(pos.x).to.be.closeTo(3 * t, 1e-9);
+    expect(pos.y).to.be.closeTo(2 - 4 * t + 0.5 * 9.81 * t * t, 1e-9);
+  });
+
+  it('the Euler variants drift from the analytic free fall by O(h), Verlet does not', () => {
+    const errors = INTEGRATORS.map((integrator) => {
+      const world = new World({ gravity: { x: 0, y: 10 }, integrator, substeps: 1 });
+      const p = world.addParticle({ x: 0, y: 0 });
+      for (let k = 0; k < 60; k++) world.step();
+      return Math.abs(world.getPosition(p).y - 5);
+    });
+    expect(errors[0]).to.be.below(1e-9);
+    // ½·g·h·t = 0.5 · 10 · (1/60) · 1 for both Euler variants, with opposite signs.
+    expect(errors[1]).to.be.closeTo(1 / 12, 1e-9);
+    expect(errors[2]).to.be.closeTo(1 / 12, 1e-9);
+  });
+
+  it('explicit Euler gains energy on an undamped spring; Verlet and semi-implicit Euler stay bounded', () => {
+    const drift: Record<string, number> = {};
+    for (const integrator of INTEGRATORS) {
+      const world = new World({ gravity: { x: 0, y: 0 }, integrator, substeps: 1, timestep: 1 / 60 });
+      const anchor = world.addParticle({ x: 0, y: 0, mass: Infinity });
+      const bob = world.addParticle({ x: 1.2, y: 0, mass: 1 });
+      world.addSpring(anchor, bob, { length: 1, stiffness: 100 });
+      const energy = () => {
+        const v = world.getVelocity(bob);
+        const d = world.getPosition(bob).x;
+        return 0.5 * (v.x ** 2 + v.y ** 2) + 0.5 * 100 * (d - 1) ** 2;
+      };
+      const e0 = energy();
+      let worst = 0;
+      for (let k = 0; k < 600; k++) {
+        world.step();
+        worst = Math.max(worst, energy() / e0);
+      }
+      drift[integrator] = worst;
+    }
+    expect(drift['explicit-euler']).to.be.above(10); // grows without bound (≈ (1 + ω²h²)^(n/2))
+    expect(drift['verlet']).to.be.below(1.2);
+    expect(drift['semi-implicit-euler']).to.be.below(1.2);
+  });
+
+  it('linear damping removes energy from a thrown particle', () => {
+    const world = new World({ gravity: { x: 0, y: 0 }, damping: 1 });
+    const p = world.addParticle({ x: 0, y: 0, vx: 10 });
+    for (let k = 0; k < 60; k++) world.step();
+    // v(t) ≈ v0·e^(−t) for small h.
+    expect(world.getVelocity(p).x).to.be.closeTo(10 * Math.exp(-1), 0.01);
+    expect(totalEnergy(world)).to.be.below(0.5 * 100);
+  });
+
+  it('forces and impulses change motion by F/m and J/m', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const a = world.addParticle({ x: 0, y: 0, mass: 2 });
+    world.applyImpulse(a, 4, 0);
+    expect(world.getVelocity(a).x).to.equal(2);
+    const b = world.addParticle({ x: 0, y: 0, mass: 2 });
+    world.applyForce(b, 0, 12); // for one step only: Δv = F/m · dt
+    world.step();
+    expect(world.getVelocity(b).y).to.be.closeTo(6 / 60, 1e-12);
+    world.step();
+    expect(world.getVelocity(b).y).to.be.closeTo(6 / 60, 1e-12);
+  });
+});

@@ -1,0 +1,112 @@
+import { expect } from '@open-wc/testing';
+import { World, createCloth, createRope, createPolygon } from '../../src/engine/index.js';
+import { allFinite } from './helpers.js';
+
+function throwsNaming(fn: () => unknown, type: typeof RangeError | typeof TypeError, ...words: string[]) {
+  let caught: unknown;
+  try {
+    fn();
+  } catch (e) {
+    caught = e;
+  }
+  expect(caught, `expected ${type.name} naming ${words.join(', ')}`).to.be.instanceOf(type);
+  for (const w of words) expect((caught as Error).message).to.include(w);
+}
+
+describe('bad input', () => {
+  const world = new World();
+  const a = world.addParticle({ x: 0, y: 0 });
+  const b = world.addParticle({ x: 1, y: 0 });
+
+  it('NaN and Infinity in positions, velocities and forces throw naming the argument and value', () => {
+    throwsNaming(() => world.addParticle({ x: NaN, y: 0 }), RangeError, 'x', 'NaN');
+    throwsNaming(() => world.addParticle({ x: 0, y: Infinity }), RangeError, 'y', 'Infinity');
+    throwsNaming(() => world.addParticle({ x: 0, y: 0, vx: -Infinity }), RangeError, 'vx', '-Infinity');
+    throwsNaming(() => world.addParticle({ x: '3' as unknown as number, y: 0 }), TypeError, 'x', '"3"');
+    throwsNaming(() => world.setPosition(a, 0, NaN), RangeError, 'y', 'NaN');
+    throwsNaming(() => world.applyForce(a, NaN, 0), RangeError, 'fx', 'NaN');
+    throwsNaming(() => world.applyImpulse(a, 0, Infinity), RangeError, 'iy', 'Infinity');
+    throwsNaming(() => world.setGravity(NaN, 0), RangeError, 'gravity.x', 'NaN');
+    throwsNaming(() => new World({ timestep: 0 }), RangeError, 'timestep', '0');
+    throwsNaming(() => new World({ substeps: 2.5 }), RangeError, 'substeps', '2.5');
+    throwsNaming(() => new World({ integrator: 'rk4' as never }), RangeError, 'integrator', '"rk4"');
+    throwsNaming(() => world.step(-1), RangeError, 'dt', '-1');
+    throwsNaming(() => world.advance(NaN), RangeError, 'elapsed', 'NaN');
+    throwsNaming(() => new World({ bounds: { minX: 1, minY: 0, maxX: 0, maxY: 1 } }), RangeError, 'minX < maxX');
+  });
+
+  it('negative mass, length, radius or stiffness throw', () => {
+    throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: -1 }), RangeError, 'mass', '-1');
+    throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: 0 }), RangeError, 'mass', '0');
+    throwsNaming(() => world.addParticle({ x: 0, y: 0, radius: -2 }), RangeError, 'radius', '-2');
+    throwsNaming(() => world.addDistance(a, b, { length: -1 }), RangeError, 'length', '-1');
+    throwsNaming(() => world.addDistance(a, b, { minLength: 2, maxLength: 1 }), RangeError, 'minLength', 'maxLength');
+    throwsNaming(() => world.addDistance(a, b, { compliance: -1 }), RangeError, 'compliance', '-1');
+    throwsNaming(() => world.addSpring(a, b, { stiffness: -5 }), RangeError, 'stiffness', '-5');
+    throwsNaming(() => createRope(world, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 }, segments: 0 }), RangeError, 'segments', '0');
+    throwsNaming(() => createCloth(world, { origin: { x: 0, y: 0 }, columns: 3, rows: 3, spacing: -1 }), RangeError, 'spacing', '-1');
+    throwsNaming(() => createPolygon(world, { points: [{ x: 0, y: 0 }, { x: 1, y: 0 }] }), RangeError, 'points', '2');
+    throwsNaming(() => createPolygon(world, { points: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }] }), RangeError, 'points', 'area');
+  });
+
+  it('unknown or removed handles and self-constraints throw', () => {
+    throwsNaming(() => world.addDistance(a, a), RangeError, 'a and b', 'different');
+    throwsNaming(() => world.addAngleLimit(a, b, a, { min: 0, max: 1 }), RangeError, 'a and c');
+    throwsNaming(() => world.getPosition(123456), RangeError, 'particle', '123456');
+    throwsNaming(() => world.getPosition(-1), TypeError, 'particle', '-1');
+    throwsNaming(() => world.getPosition(1.5), TypeError, 'particle', '1.5');
+    const c = world.addParticle({ x: 5, y: 5 });
+    world.removeParticle(c);
+    throwsNaming(() => world.addDistance(a, c), RangeError, 'b', String(c), 'not a live particle');
+    const d = world.addParticle({ x: 6, y: 6 }); // reuses c's slot with a new generation
+    expect(d).to.not.equal(c);
+    expect(world.hasParticle(c)).to.equal(false);
+    expect(world.hasParticle(d)).to.equal(true);
+    throwsNaming(() => world.removeConstraint(999), RangeError, 'constraint');
+  });
+
+  it('a failed builder leaves nothing behind, and the world keeps running', () => {
+    const before = world.particleCount;
+    throwsNaming(() => createCloth(world, { origin: { x: 0, y: 0 }, columns: 3, rows: 3, spacing: 1, pins: [0, 7] }), RangeError, 'pins[1]', '7');
+    expect(world.particleCount).to.equal(before);
+    for (let k = 0; k < 10; k++) world.step();
+    expect(allFinite(world)).to.equal(true);
+  });
+
+  it('a zero-length distance never yields NaN', () => {
+    const w = new World({ gravity: { x: 0, y: 0 } });
+    const p = w.addParticle({ x: 1, y: 1 });
+    const q = w.addParticle({ x: 1, y: 1 });
+    w.addDistance(p, q, { length: 0 });
+    w.addDistance(p, q, { minLength: 0.5, maxLength: 0.5 }); // coincident particles that must separate
+    w.addSpring(p, q, { length: 0, stiffness: 10 });
+    for (let k = 0; k < 10; k++) w.step();
+    expect(allFinite(w)).to.equal(true);
+  });
+});
+
+describe('handles', () => {
+  it('stay valid while others are removed, and removing a particle removes its constraints', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const ps = Array.from({ length: 10 }, (_, k) => world.addParticle({ x: k, y: 0 }));
+    const links = ps.slice(1).map((p, k) => world.addDistance(ps[k], p));
+    world.removeParticle(ps[4]);
+    expect(world.hasConstraint(links[3])).to.equal(false); // 3–4
+    expect(world.hasConstraint(links[4])).to.equal(false); // 4–5
+    expect(world.constraintCount).to.equal(7);
+    for (const [k, p] of ps.entries()) if (k !== 4) expect(world.getPosition(p).x).to.equal(k);
+    expect(world.distanceError(links[8])).to.equal(0);
+  });
+
+  it('removing a body removes its particles and constraints', () => {
+    const world = new World();
+    const keep = createRope(world, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 }, segments: 4 });
+    const gone = createCloth(world, { origin: { x: 5, y: 0 }, columns: 4, rows: 4, spacing: 0.5 });
+    world.removeBody(gone.body);
+    expect(world.hasBody(gone.body)).to.equal(false);
+    expect(world.particleCount).to.equal(5);
+    expect(gone.constraints.some((c) => world.hasConstraint(c))).to.equal(false);
+    expect(keep.constraints.every((c) => world.hasConstraint(c))).to.equal(true);
+    expect([...world.bodies()]).to.deep.equal([keep.body]);
+  });
+});

@@ -1,0 +1,45 @@
+// Shared by the demo server (`npm start`) and the test runner: TypeScript through esbuild, p5's ESM build,
+// `.js` worker URLs mapped to their `.ts` sources, and optional cross-origin isolation (COOP/COEP).
+import { esbuildPlugin } from '@web/dev-server-esbuild';
+import { existsSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('.', import.meta.url));
+
+/** COOP/COEP make the page cross-origin isolated, which is what unlocks SharedArrayBuffer. */
+export function crossOriginIsolation({ when = () => true } = {}) {
+  return (ctx, next) => {
+    if (when(ctx)) {
+      ctx.set('Cross-Origin-Opener-Policy', 'same-origin');
+      ctx.set('Cross-Origin-Embedder-Policy', 'require-corp');
+    }
+    return next();
+  };
+}
+
+/** `new Worker(new URL('./x.worker.js', import.meta.url))` in TS sources: serve x.worker.ts when no .js exists. */
+export function jsToTs(ctx, next) {
+  if ((ctx.path.startsWith('/src/') || ctx.path.startsWith('/demo/') || ctx.path.startsWith('/test/')) && ctx.path.endsWith('.js')) {
+    const js = root + ctx.path.slice(1);
+    if (!existsSync(js) && existsSync(js.slice(0, -3) + '.ts')) ctx.url = ctx.url.replace(/\.js(?=$|\?)/, '.ts');
+  }
+  return next();
+}
+
+/** p5 v2's package entry imports CommonJS dependencies a browser cannot load; use its self-contained ESM build. */
+export const p5Esm = {
+  name: 'p5-esm',
+  resolveImport({ source }) {
+    if (source === 'p5') return '/node_modules/p5/lib/p5.esm.min.js';
+  },
+};
+
+export const plugins = [p5Esm, esbuildPlugin({ ts: true, target: 'es2022', tsconfig: root + 'tsconfig.json' })];
+
+export default {
+  rootDir: root,
+  nodeResolve: true,
+  appIndex: undefined,
+  middleware: [crossOriginIsolation(), jsToTs],
+  plugins,
+};
