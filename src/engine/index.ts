@@ -2,7 +2,7 @@
 export { World, BODY_KINDS } from './world.js';
 export type {
   WorldOptions, WorldSnapshot, ParticleOptions, DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions,
-  BodyKind, Vec2, Handle, Integrator, Bounds,
+  BodyKind, ConstraintKind, Vec2, Handle, Integrator, Bounds,
 } from './world.js';
 export { INTEGRATORS } from './integrate.js';
 export { createRope, type RopeOptions } from './builders/rope.js';

@@ -17,31 +17,37 @@ export function integrate(p: ParticleStore, h: number, damp: number, integrator:
   const { x, y, px, py, vx, vy, qx, qy, ax, ay, invMass, alive } = p;
   const n = p.count;
   const h2 = h * h;
-  for (let i = 0; i < n; i++) {
-    if (alive[i] === 0) continue;
-    const xi = x[i];
-    const yi = y[i];
-    px[i] = xi;
-    py[i] = yi;
-    if (invMass[i] === 0) continue;
-    if (integrator === 'verlet') {
-      x[i] = xi + vx[i] * damp * h + ax[i] * h2;
-      y[i] = yi + vy[i] * damp * h + ay[i] * h2;
-    } else if (integrator === 'semi-implicit-euler') {
-      const nvx = (vx[i] + ax[i] * h) * damp;
-      const nvy = (vy[i] + ay[i] * h) * damp;
-      vx[i] = nvx;
-      vy[i] = nvy;
-      x[i] = xi + nvx * h;
-      y[i] = yi + nvy * h;
-    } else {
-      x[i] = xi + vx[i] * h;
-      y[i] = yi + vy[i] * h;
+  // One loop per integrator, so the per-particle body has no branch on the method.
+  if (integrator === 'verlet') {
+    for (let i = 0; i < n; i++) {
+      px[i] = x[i];
+      py[i] = y[i];
+      if (invMass[i] === 0) continue;
+      x[i] += vx[i] * damp * h + ax[i] * h2;
+      y[i] += vy[i] * damp * h + ay[i] * h2;
+    }
+  } else if (integrator === 'semi-implicit-euler') {
+    for (let i = 0; i < n; i++) {
+      px[i] = x[i];
+      py[i] = y[i];
+      if (invMass[i] === 0) continue;
       vx[i] = (vx[i] + ax[i] * h) * damp;
       vy[i] = (vy[i] + ay[i] * h) * damp;
+      x[i] += vx[i] * h;
+      y[i] += vy[i] * h;
     }
-    qx[i] = x[i];
-    qy[i] = y[i];
+  } else {
+    for (let i = 0; i < n; i++) {
+      px[i] = x[i];
+      py[i] = y[i];
+      if (alive[i] === 0 || invMass[i] === 0) continue;
+      x[i] += vx[i] * h;
+      y[i] += vy[i] * h;
+      vx[i] = (vx[i] + ax[i] * h) * damp;
+      vy[i] = (vy[i] + ay[i] * h) * damp;
+      qx[i] = x[i];
+      qy[i] = y[i];
+    }
   }
 }
 
@@ -66,8 +72,8 @@ export function updateVelocities(p: ParticleStore, h: number, integrator: Integr
     }
     return;
   }
+  // Dead slots hold px = x, so they get v = 0 without a branch.
   for (let i = 0; i < n; i++) {
-    if (alive[i] === 0) continue;
     vx[i] = (x[i] - px[i]) * inv;
     vy[i] = (y[i] - py[i]) * inv;
   }

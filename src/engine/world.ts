@@ -98,6 +98,10 @@ export interface AreaOptions {
 export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';
 export const BODY_KINDS: readonly BodyKind[] = ['particle', 'rope', 'cloth', 'rigid', 'soft', 'ragdoll', 'custom'];
 
+export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area';
+/** Indexed by Kind. */
+const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area'];
+
 const enum Kind {
   Distance,
   Angle,
@@ -483,6 +487,11 @@ export class World {
     if (from !== row) this.constraintRow[table.slot[row]] = row;
     if (kind === Kind.Area) this.areas.compactPool();
     this.constraintIds.release(handle);
+  }
+
+  /** Which kind of constraint a handle names. */
+  constraintKindOf(handle: Handle): ConstraintKind {
+    return CONSTRAINT_KINDS[this.constraintKind[this.constraintIds.slotOf(handle, 'constraint')]];
   }
 
   hasConstraint(handle: unknown): boolean {

@@ -36,27 +36,35 @@ export function solveDistances(c: DistanceConstraints, p: ParticleStore, h2: num
     const d2 = dx * dx + dy * dy;
     const lo = minLength[i];
     const hi = maxLength[i];
-    // Slack rope links and tethers are mostly inactive: skip them before paying for the square root.
-    if (lo !== hi && d2 >= lo * lo && d2 <= hi * hi) continue;
-    const d = Math.sqrt(d2);
+    let d: number;
     let err: number;
-    if (d > hi) err = d - hi;
-    else if (d < lo) err = d - lo;
-    else continue;
-    if (d > 1e-12) {
-      dx /= d;
-      dy /= d;
+    if (lo === hi) {
+      d = Math.sqrt(d2);
+      err = d - lo;
     } else {
+      // Slack rope links and tethers are mostly inactive: skip them before paying for the square root.
+      if (d2 >= lo * lo && d2 <= hi * hi) continue;
+      d = Math.sqrt(d2);
+      err = d > hi ? d - hi : d - lo;
+    }
+    if (d < 1e-12) {
       // Coincident particles have no direction; pick a fixed one so the result stays finite and deterministic.
       dx = 1;
       dy = 0;
+      d = 1;
     }
-    const alpha = compliance[i] / h2;
-    const dl = (-err - alpha * lambda[i]) / (w + alpha);
-    lambda[i] += dl;
-    x[ia] -= wa * dl * dx;
-    y[ia] -= wa * dl * dy;
-    x[ib] += wb * dl * dx;
-    y[ib] += wb * dl * dy;
+    const k = compliance[i];
+    let dl: number;
+    if (k === 0) dl = -err / w;
+    else {
+      const alpha = k / h2;
+      dl = (-err - alpha * lambda[i]) / (w + alpha);
+      lambda[i] += dl;
+    }
+    const s = dl / d;
+    x[ia] -= wa * s * dx;
+    y[ia] -= wa * s * dy;
+    x[ib] += wb * s * dx;
+    y[ib] += wb * s * dy;
   }
 }
