@@ -1,0 +1,268 @@
+// Contact manifold: up to two contact points for a polygon pair by clipping the incident edge against the side
+// planes of the reference edge (Box2D's b2CollidePolygons), and for every point the vertex–edge feature the
+// position-based response of seed 4.2 needs (which vertex of which shape penetrates which edge, and where along it).
+import type { Manifold } from './results.js';
+import { ShapeType, type Shape } from './shape.js';
+import { ax, ay, bx, by, load, maxSeparation, sep } from './scratch.js';
+
+/**
+ * The reference face is the polygon whose best separating facet is shallower by this fraction of the depth; A wins
+ * ties. The bias keeps the reference face from flickering between two nearly parallel faces from step to step.
+ */
+const REFERENCE_BIAS = 0.98;
+
+/**
+ * Contact manifold of two shapes (polygons, segments as two-sided polygons, circles), written into `out`.
+ * Returns true when they overlap by a positive depth, or, with `margin` > 0, when they are closer than `margin`
+ * (speculative contacts: then depth may be negative, down to −margin). See Manifold for the meaning of each field.
+ */
+export function polygonManifold(a: Shape, b: Shape, out: Manifold, margin = 0): boolean {
+  const ta = a.type;
+  const tb = b.type;
+  if (ta === ShapeType.Circle) {
+    if (tb === ShapeType.Circle) return circleCircle(a, b, out, margin);
+    return polygonCircle(b, a, true, out, margin);
+  }
+  if (tb === ShapeType.Circle) return polygonCircle(a, b, false, out, margin);
+  return polygonPolygon(a, b, out, margin);
+}
+
+function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): boolean {
+  load(a, b);
+  const na = a.count;
+  const nb = b.count;
+  maxSeparation(ax, ay, na, bx, by, nb, margin);
+  const sepA = sep.value;
+  if (sepA >= margin) return miss(out);
+  const edgeA = sep.edge;
+  const nax = sep.nx;
+  const nay = sep.ny;
+  maxSeparation(bx, by, nb, ax, ay, na, margin);
+  const sepB = sep.value;
+  if (sepB >= margin) return miss(out);
+  if (sepA === -Infinity && sepB === -Infinity) return miss(out);
+
+  // Reference polygon R (its face's normal n points towards the incident polygon I).
+  const flip = sepA === -Infinity || sepB > sepA + (1 - REFERENCE_BIAS) * Math.abs(sepA);
+  const rx = flip ? bx : ax;
+  const ry = flip ? by : ay;
+  const rn = flip ? nb : na;
+  const ix = flip ? ax : bx;
+  const iy = flip ? ay : by;
+  const inn = flip ? na : nb;
+  const e = flip ? sep.edge : edgeA;
+  const nx = flip ? sep.nx : nax;
+  const ny = flip ? sep.ny : nay;
+
+  // Incident edge: the edge of I whose normal is most anti-parallel to n.
+  let i1 = 0;
+  let minDot = Infinity;
+  for (let k = 0; k < inn; k++) {
+    const k2 = k + 1 === inn ? 0 : k + 1;
+    const ex = ix[k2] - ix[k];
+    const ey = iy[k2] - iy[k];
+    const len2 = ex * ex + ey * ey;
+    if (len2 === 0) continue;
+    const d = (ey * nx - ex * ny) / Math.sqrt(len2);
+    if (d < minDot) {
+      minDot = d;
+      i1 = k;
+    }
+  }
+  const i2 = i1 + 1 === inn ? 0 : i1 + 1;
+  const e2 = e + 1 === rn ? 0 : e + 1;
+  const r1x = rx[e];
+  const r1y = ry[e];
+  const r2x = rx[e2];
+  const r2y = ry[e2];
+  // Unit tangent of the reference edge (CCW: normal (ty, −tx)).
+  const tx = -ny;
+  const ty = nx;
+  const lo = tx * r1x + ty * r1y;
+  const hi = tx * r2x + ty * r2y;
+
+  // The incident edge as two points, each remembering its feature: −1 = still vertex i1 / i2 of I, otherwise the
+  // reference vertex (e or e2) whose side plane clipped it.
+  const v1x = ix[i1];
+  const v1y = iy[i1];
+  const v2x = ix[i2];
+  const v2y = iy[i2];
+  let p0x = v1x;
+  let p0y = v1y;
+  let p1x = v2x;
+  let p1y = v2y;
+  let f0 = -1;
+  let f1 = -1;
+  // Side plane t·p >= lo.
+  let d0 = tx * p0x + ty * p0y - lo;
+  let d1 = tx * p1x + ty * p1y - lo;
+  if (d0 < 0 && d1 < 0) return miss(out);
+  if (d0 < 0) {
+    const s = d0 / (d0 - d1);
+    p0x += s * (p1x - p0x);
+    p0y += s * (p1y - p0y);
+    f0 = e;
+  } else if (d1 < 0) {
+    const s = d0 / (d0 - d1);
+    p1x = p0x + s * (p1x - p0x);
+    p1y = p0y + s * (p1y - p0y);
+    f1 = e;
+  }
+  // Side plane t·p <= hi.
+  d0 = hi - (tx * p0x + ty * p0y);
+  d1 = hi - (tx * p1x + ty * p1y);
+  if (d0 < 0 && d1 < 0) return miss(out);
+  if (d0 < 0) {
+    const s = d0 / (d0 - d1);
+    p0x += s * (p1x - p0x);
+    p0y += s * (p1y - p0y);
+    f0 = e2;
+  } else if (d1 < 0) {
+    const s = d0 / (d0 - d1);
+    p1x = p0x + s * (p1x - p0x);
+    p1y = p0y + s * (p1y - p0y);
+    f1 = e2;
+  }
+
+  const refOwner = flip ? 1 : 0;
+  const incOwner = flip ? 0 : 1;
+  const c = nx * r1x + ny * r1y;
+  const elx = r2x - r1x;
+  const ely = r2y - r1y;
+  const invRef = 1 / (elx * elx + ely * ely);
+  const ilx = v2x - v1x;
+  const ily = v2y - v1y;
+  const invInc = 1 / (ilx * ilx + ily * ily);
+  let count = 0;
+  for (let k = 0; k < 2; k++) {
+    const qx = k === 0 ? p0x : p1x;
+    const qy = k === 0 ? p0y : p1y;
+    const f = k === 0 ? f0 : f1;
+    const s = nx * qx + ny * qy - c; // separation of the point from the reference face
+    if (s > margin) continue;
+    const depth = -s;
+    let alpha: number;
+    if (f < 0) {
+      // A vertex of I below the reference edge; α is its projection onto that edge.
+      out.incident[count] = incOwner;
+      out.vertex[count] = k === 0 ? i1 : i2;
+      out.edge[count] = e;
+      alpha = ((qx - r1x) * elx + (qy - r1y) * ely) * invRef;
+    } else {
+      // A reference vertex inside I: it meets the incident edge at the clipped point, along the normal.
+      out.incident[count] = refOwner;
+      out.vertex[count] = f;
+      out.edge[count] = i1;
+      alpha = ((qx - v1x) * ilx + (qy - v1y) * ily) * invInc;
+    }
+    out.alpha[count] = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+    out.depth[count] = depth;
+    out.pointX[count] = qx + 0.5 * depth * nx;
+    out.pointY[count] = qy + 0.5 * depth * ny;
+    count++;
+  }
+  out.count = count;
+  out.normalX = flip ? -nx : nx;
+  out.normalY = flip ? -ny : ny;
+  return count > 0;
+}
+
+/** Polygon (or segment) P against circle C; `flip` when C is shape A. One point: C's centre against P's edge. */
+function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Manifold, margin: number): boolean {
+  const ci = c.index[c.offset];
+  const cx = c.xs[ci];
+  const cy = c.ys[ci];
+  const r = c.radius;
+  const { xs, ys, index, offset, count } = p;
+  const reach = r + margin;
+  let best = -Infinity;
+  let bestI = -1;
+  let bnx = 0;
+  let bny = 0;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
+    const ex = xs[j] - xs[i];
+    const ey = ys[j] - ys[i];
+    const len2 = ex * ex + ey * ey;
+    if (len2 === 0) continue;
+    const inv = 1 / Math.sqrt(len2);
+    const nx = ey * inv;
+    const ny = -ex * inv;
+    const s = nx * (cx - xs[i]) + ny * (cy - ys[i]);
+    if (s >= reach) return miss(out);
+    if (s > best) {
+      best = s;
+      bestI = k;
+      bnx = nx;
+      bny = ny;
+    }
+  }
+  if (bestI < 0) return miss(out); // P has no edge of positive length
+  const i1 = index[offset + bestI];
+  const i2 = index[offset + (bestI + 1 === count ? 0 : bestI + 1)];
+  const x1 = xs[i1];
+  const y1 = ys[i1];
+  const ex = xs[i2] - x1;
+  const ey = ys[i2] - y1;
+  let alpha = ((cx - x1) * ex + (cy - y1) * ey) / (ex * ex + ey * ey);
+  let nx = bnx;
+  let ny = bny;
+  let depth = r - best;
+  if (best > 0 && (alpha <= 0 || alpha >= 1)) {
+    // Vertex region: the normal runs from the nearest vertex to the centre.
+    alpha = alpha <= 0 ? 0 : 1;
+    const vx = x1 + alpha * ex;
+    const vy = y1 + alpha * ey;
+    const dx = cx - vx;
+    const dy = cy - vy;
+    const d = Math.sqrt(dx * dx + dy * dy);
+    if (d >= reach) return miss(out);
+    nx = dx / d;
+    ny = dy / d;
+    depth = r - d;
+  } else if (alpha < 0) alpha = 0;
+  else if (alpha > 1) alpha = 1;
+  out.count = 1;
+  out.normalX = flip ? -nx : nx;
+  out.normalY = flip ? -ny : ny;
+  out.depth[0] = depth;
+  out.pointX[0] = cx - (r - 0.5 * depth) * nx;
+  out.pointY[0] = cy - (r - 0.5 * depth) * ny;
+  out.incident[0] = flip ? 0 : 1;
+  out.vertex[0] = 0;
+  out.edge[0] = bestI;
+  out.alpha[0] = alpha;
+  return true;
+}
+
+function circleCircle(a: Shape, b: Shape, out: Manifold, margin: number): boolean {
+  const ia = a.index[a.offset];
+  const ib = b.index[b.offset];
+  const dx = b.xs[ib] - a.xs[ia];
+  const dy = b.ys[ib] - a.ys[ia];
+  const reach = a.radius + b.radius + margin;
+  const d2 = dx * dx + dy * dy;
+  if (d2 >= reach * reach) return miss(out);
+  const d = Math.sqrt(d2);
+  const nx = d > 0 ? dx / d : 1;
+  const ny = d > 0 ? dy / d : 0;
+  const depth = a.radius + b.radius - d;
+  out.count = 1;
+  out.normalX = nx;
+  out.normalY = ny;
+  out.depth[0] = depth;
+  const rb = b.radius - 0.5 * depth;
+  out.pointX[0] = b.xs[ib] - rb * nx;
+  out.pointY[0] = b.ys[ib] - rb * ny;
+  out.incident[0] = 1;
+  out.vertex[0] = 0;
+  out.edge[0] = -1;
+  out.alpha[0] = 0;
+  return true;
+}
+
+function miss(out: Manifold): boolean {
+  out.count = 0;
+  return false;
+}

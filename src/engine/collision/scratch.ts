@@ -1,0 +1,89 @@
+// Module-level scratch storage shared by the narrow-phase functions (single-threaded: each worker has its own
+// module instance). Arrays grow by doubling when a larger polygon comes by, so the steady state never allocates.
+import type { Shape } from './shape.js';
+
+export let ax = new Float64Array(64);
+export let ay = new Float64Array(64);
+export let bx = new Float64Array(64);
+export let by = new Float64Array(64);
+
+function grow(n: number): void {
+  let size = ax.length;
+  while (size < n) size *= 2;
+  ax = new Float64Array(size);
+  ay = new Float64Array(size);
+  bx = new Float64Array(size);
+  by = new Float64Array(size);
+}
+
+/** Copies A's vertices into ax/ay and B's into bx/by (contiguous, no index indirection in the O(n·m) loops). */
+export function load(a: Shape, b: Shape): void {
+  const n = a.count > b.count ? a.count : b.count;
+  if (n > ax.length) grow(n);
+  const { xs, ys, index, offset, count } = a;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    ax[k] = xs[i];
+    ay[k] = ys[i];
+  }
+  const bxs = b.xs;
+  const bys = b.ys;
+  const bi = b.index;
+  const bo = b.offset;
+  for (let k = 0, m = b.count; k < m; k++) {
+    const i = bi[bo + k];
+    bx[k] = bxs[i];
+    by[k] = bys[i];
+  }
+}
+
+/** Result registers of maxSeparation. */
+export const sep = { value: 0, edge: -1, vertex: -1, nx: 0, ny: 0 };
+
+/**
+ * Box2D's b2FindMaxSeparation on raw arrays: over the edges of polygon P (CCW, n vertices; n = 2 for a segment)
+ * and their outward unit normals, the largest separation min_k n·(q_k − p_i) of polygon Q. These normals are the
+ * facets of the Minkowski difference P − Q that belong to P, so −max over both polygons is the penetration depth.
+ * Stops early at a separation >= stop (0 for a plain overlap test: separated or touching). Zero-length edges are skipped; with none left,
+ * sep.value is −Infinity.
+ */
+export function maxSeparation(px: Float64Array, py: Float64Array, n: number, qx: Float64Array, qy: Float64Array, m: number, stop: number): void {
+  let best = -Infinity;
+  let bestEdge = -1;
+  let bestVertex = -1;
+  let bnx = 0;
+  let bny = 0;
+  for (let i = 0; i < n; i++) {
+    const j = i + 1 === n ? 0 : i + 1;
+    const ex = px[j] - px[i];
+    const ey = py[j] - py[i];
+    const len2 = ex * ex + ey * ey;
+    if (len2 === 0) continue;
+    const inv = 1 / Math.sqrt(len2);
+    const nx = ey * inv;
+    const ny = -ex * inv;
+    let min = Infinity;
+    let arg = 0;
+    for (let k = 0; k < m; k++) {
+      const d = nx * qx[k] + ny * qy[k];
+      if (d < min) {
+        min = d;
+        arg = k;
+      }
+    }
+    const s = min - (nx * px[i] + ny * py[i]);
+    if (s > best) {
+      best = s;
+      bestEdge = i;
+      bestVertex = arg;
+      bnx = nx;
+      bny = ny;
+      if (s >= stop) break;
+    }
+  }
+  sep.value = best;
+  sep.edge = bestEdge;
+  sep.vertex = bestVertex;
+  sep.nx = bnx;
+  sep.ny = bny;
+}

@@ -1,0 +1,347 @@
+// Convex shapes as views onto coordinate arrays (seed 2.8, 3.2). A shape does not own its geometry: vertex k is
+// (xs[index[offset + k]], ys[index[offset + k]]), so a shape built over the engine's particle arrays always collides
+// with the particles' current outline. The standalone constructors (polygon, circle, segment) own small arrays.
+import { describeValue, finite, nonNegative } from '../validate.js';
+
+/** What a shape's vertices mean. A plain object rather than a const enum, so it survives isolatedModules and .d.ts. */
+export const ShapeType = { Polygon: 0, Circle: 1, Segment: 2 } as const;
+export type ShapeType = (typeof ShapeType)[keyof typeof ShapeType];
+
+export interface Shape {
+  type: ShapeType;
+  /** Coordinate arrays: the engine's particle arrays, or the shape's own. */
+  xs: Float64Array;
+  ys: Float64Array;
+  /** Vertex k of the shape is (xs[index[offset + k]], ys[index[offset + k]]). */
+  index: Int32Array;
+  offset: number;
+  /** Polygon >= 3 (counter-clockwise in the math sense, convex), circle 1 (its centre), segment 2. */
+  count: number;
+  /** Circle radius; 0 for polygons and segments. */
+  radius: number;
+}
+
+export interface PointLike {
+  x: number;
+  y: number;
+}
+
+/** The one concrete class behind every shape, so that hot functions see a single object layout. */
+export class ShapeView implements Shape {
+  constructor(
+    public type: ShapeType,
+    public xs: Float64Array,
+    public ys: Float64Array,
+    public index: Int32Array,
+    public offset: number,
+    public count: number,
+    public radius: number,
+  ) {}
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Views (no copy, no validation: call assertConvex once when the outline is first built)
+
+/** A convex polygon over existing arrays. Vertices must be counter-clockwise (positive shoelace area). */
+export function polygonView(xs: Float64Array, ys: Float64Array, index: Int32Array, offset = 0, count = index.length - offset): Shape {
+  return new ShapeView(ShapeType.Polygon, xs, ys, index, offset, count, 0);
+}
+
+/** A circle whose centre is (xs[index[offset]], ys[index[offset]]). */
+export function circleView(xs: Float64Array, ys: Float64Array, index: Int32Array, offset: number, radius: number): Shape {
+  return new ShapeView(ShapeType.Circle, xs, ys, index, offset, 1, radius);
+}
+
+/** A segment from vertex index[offset] to vertex index[offset + 1]. */
+export function segmentView(xs: Float64Array, ys: Float64Array, index: Int32Array, offset = 0): Shape {
+  return new ShapeView(ShapeType.Segment, xs, ys, index, offset, 2, 0);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Standalone shapes (own their arrays, validated)
+
+/** Reads `[{x, y}, ...]` or a flat `[x0, y0, x1, y1, ...]` into two arrays, checking every number. */
+export function readPoints(name: string, points: unknown): { xs: Float64Array; ys: Float64Array } {
+  if (!Array.isArray(points) && !ArrayBuffer.isView(points)) {
+    throw new TypeError(`${name} must be an array of {x, y} points or of numbers, got ${describeValue(points)}`);
+  }
+  const list = points as ArrayLike<unknown>;
+  if (list.length > 0 && typeof list[0] === 'number') {
+    if (list.length % 2 !== 0) throw new RangeError(`${name} as a flat [x0, y0, x1, y1, ...] list needs an even length, got ${list.length}`);
+    const n = list.length / 2;
+    const xs = new Float64Array(n);
+    const ys = new Float64Array(n);
+    for (let k = 0; k < n; k++) {
+      xs[k] = finite(`${name}[${2 * k}]`, list[2 * k]);
+      ys[k] = finite(`${name}[${2 * k + 1}]`, list[2 * k + 1]);
+    }
+    return { xs, ys };
+  }
+  const n = list.length;
+  const xs = new Float64Array(n);
+  const ys = new Float64Array(n);
+  for (let k = 0; k < n; k++) {
+    const p = list[k] as PointLike | null | undefined;
+    if (p === null || typeof p !== 'object') throw new TypeError(`${name}[${k}] must be a point {x, y}, got ${describeValue(p)}`);
+    xs[k] = finite(`${name}[${k}].x`, p.x);
+    ys[k] = finite(`${name}[${k}].y`, p.y);
+  }
+  return { xs, ys };
+}
+
+function iota(n: number): Int32Array {
+  const index = new Int32Array(n);
+  for (let k = 0; k < n; k++) index[k] = k;
+  return index;
+}
+
+/**
+ * A convex polygon that owns a copy of `points` ({x, y} objects or a flat number list). Throws a TypeError or
+ * RangeError naming the argument when there are fewer than 3 points, a coordinate is not finite, two consecutive
+ * points coincide, the area is zero, the order is clockwise (fix it with counterClockwise) or the outline is not
+ * convex (split it with decompose). Collinear consecutive vertices (180° corners) are allowed.
+ */
+export function polygon(points: readonly PointLike[] | readonly number[] | ArrayLike<number>): Shape {
+  const { xs, ys } = readPoints('points', points);
+  const shape = polygonView(xs, ys, iota(xs.length), 0, xs.length);
+  checkConvex('points', shape);
+  return shape;
+}
+
+/** A circle of centre (x, y) and radius r >= 0. */
+export function circle(x: number, y: number, r: number): Shape {
+  const xs = new Float64Array([finite('x', x)]);
+  const ys = new Float64Array([finite('y', y)]);
+  return circleView(xs, ys, iota(1), 0, nonNegative('r', r));
+}
+
+/** A segment from (x1, y1) to (x2, y2); the endpoints must differ. */
+export function segment(x1: number, y1: number, x2: number, y2: number): Shape {
+  const xs = new Float64Array([finite('x1', x1), finite('x2', x2)]);
+  const ys = new Float64Array([finite('y1', y1), finite('y2', y2)]);
+  if (xs[0] === xs[1] && ys[0] === ys[1]) throw new RangeError(`segment endpoints must differ, got (${x1}, ${y1}) twice`);
+  return segmentView(xs, ys, iota(2), 0);
+}
+
+/** The same points, counter-clockwise (reversed when their shoelace area is negative). Returns a new array of {x, y}. */
+export function counterClockwise(points: readonly PointLike[] | readonly number[] | ArrayLike<number>): PointLike[] {
+  const { xs, ys } = readPoints('points', points);
+  const out: PointLike[] = [];
+  for (let k = 0; k < xs.length; k++) out.push({ x: xs[k], y: ys[k] });
+  if (shoelace(xs, ys, iota(xs.length), 0, xs.length) < 0) out.reverse();
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Validation
+
+/** Twice the signed area, Σ x_i·y_{i+1} − x_{i+1}·y_i: positive when counter-clockwise in the math sense. */
+export function shoelace(xs: Float64Array, ys: Float64Array, index: Int32Array, offset: number, count: number): number {
+  let s = 0;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
+    s += xs[i] * ys[j] - xs[j] * ys[i];
+  }
+  return s;
+}
+
+/** Throws unless `shape` is valid: a convex counter-clockwise polygon, a circle of finite radius, or a proper segment. */
+export function assertConvex(shape: Shape, name = 'shape'): void {
+  if (shape === null || typeof shape !== 'object') throw new TypeError(`${name} must be a shape, got ${describeValue(shape)}`);
+  const { xs, ys, index, offset, count, type } = shape;
+  if (!(xs instanceof Float64Array) || !(ys instanceof Float64Array) || !(index instanceof Int32Array)) {
+    throw new TypeError(`${name}.xs, .ys must be Float64Arrays and ${name}.index an Int32Array`);
+  }
+  const expected = type === ShapeType.Circle ? 1 : type === ShapeType.Segment ? 2 : type === ShapeType.Polygon ? -1 : -2;
+  if (expected === -2) throw new RangeError(`${name}.type must be ShapeType.Polygon, Circle or Segment, got ${describeValue(type)}`);
+  if (!Number.isInteger(count) || (expected > 0 ? count !== expected : count < 3)) {
+    throw new RangeError(`${name}.count must be ${expected > 0 ? expected : 'at least 3'} for this type, got ${describeValue(count)}`);
+  }
+  if (!Number.isInteger(offset) || offset < 0 || offset + count > index.length) {
+    throw new RangeError(`${name}.offset ${describeValue(offset)} with count ${count} runs past ${name}.index (length ${index.length})`);
+  }
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    if (i < 0 || i >= xs.length || i >= ys.length) throw new RangeError(`${name}.index[${offset + k}] = ${i} is outside the coordinate arrays`);
+    finite(`${name} vertex ${k} x`, xs[i]);
+    finite(`${name} vertex ${k} y`, ys[i]);
+  }
+  nonNegative(`${name}.radius`, shape.radius);
+  if (type !== ShapeType.Circle && shape.radius !== 0) throw new RangeError(`${name}.radius must be 0 for a polygon or segment, got ${shape.radius}`);
+  if (type === ShapeType.Segment) {
+    const i = index[offset];
+    const j = index[offset + 1];
+    if (xs[i] === xs[j] && ys[i] === ys[j]) throw new RangeError(`${name} is a segment of zero length`);
+  }
+  if (type === ShapeType.Polygon) checkConvex(name, shape);
+}
+
+/** Relative tolerance of the convexity test: a corner may bend inward by this fraction of its edges' lengths. */
+const CONVEX_TOLERANCE = 1e-12;
+
+function checkConvex(name: string, shape: Shape): void {
+  const { xs, ys, index, offset, count } = shape;
+  if (count < 3) throw new RangeError(`${name} must have at least 3 points, got ${count}`);
+  let turning = 0;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + ((k + 1) % count)];
+    const l = index[offset + ((k + 2) % count)];
+    const ex = xs[j] - xs[i];
+    const ey = ys[j] - ys[i];
+    if (ex === 0 && ey === 0) throw new RangeError(`${name}[${(k + 1) % count}] repeats ${name}[${k}] (${xs[i]}, ${ys[i]}): edges must have non-zero length`);
+    const fx = xs[l] - xs[j];
+    const fy = ys[l] - ys[j];
+    const cross = ex * fy - ey * fx;
+    const dot = ex * fx + ey * fy;
+    const scale = Math.sqrt((ex * ex + ey * ey) * (fx * fx + fy * fy));
+    if (cross < -CONVEX_TOLERANCE * scale) {
+      const area = shoelace(xs, ys, index, offset, count);
+      if (area < 0 && isConvexClockwise(shape)) {
+        throw new RangeError(`${name} must be counter-clockwise (positive shoelace area), got a clockwise outline of area ${-area / 2}; use counterClockwise(points)`);
+      }
+      throw new RangeError(`${name} must be convex, but the corner at ${name}[${(k + 1) % count}] (${xs[j]}, ${ys[j]}) turns clockwise; use decompose(points) for concave outlines`);
+    }
+    turning += Math.atan2(cross, dot);
+  }
+  const area = shoelace(xs, ys, index, offset, count);
+  if (!(area > 0)) throw new RangeError(`${name} must enclose a non-zero area, got area ${area / 2}`);
+  // All corners turn left; a convex outline turns exactly once (a pentagram turns twice).
+  if (turning > 2 * Math.PI + 1e-6) throw new RangeError(`${name} must be convex, but its outline winds ${Math.round(turning / (2 * Math.PI))} times (self-intersecting)`);
+}
+
+function isConvexClockwise(shape: Shape): boolean {
+  const { xs, ys, index, offset, count } = shape;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + ((k + 1) % count)];
+    const l = index[offset + ((k + 2) % count)];
+    const cross = (xs[j] - xs[i]) * (ys[l] - ys[j]) - (ys[j] - ys[i]) * (xs[l] - xs[j]);
+    if (cross > 0) return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Reading shapes (allocating helpers for setup code and tests; the hot paths read the arrays directly)
+
+/** x of vertex k. */
+export function vertexX(shape: Shape, k: number): number {
+  return shape.xs[shape.index[shape.offset + k]];
+}
+
+/** y of vertex k. */
+export function vertexY(shape: Shape, k: number): number {
+  return shape.ys[shape.index[shape.offset + k]];
+}
+
+/** The vertices as new {x, y} objects. */
+export function shapeVertices(shape: Shape): PointLike[] {
+  const out: PointLike[] = [];
+  for (let k = 0; k < shape.count; k++) out.push({ x: vertexX(shape, k), y: vertexY(shape, k) });
+  return out;
+}
+
+/** Area: πr² for a circle, 0 for a segment, the shoelace area for a polygon. */
+export function shapeArea(shape: Shape): number {
+  if (shape.type === ShapeType.Circle) return Math.PI * shape.radius * shape.radius;
+  if (shape.type === ShapeType.Segment) return 0;
+  return shoelace(shape.xs, shape.ys, shape.index, shape.offset, shape.count) / 2;
+}
+
+/** The centre of mass of the shape's area (of its vertices' mean for a zero-area polygon), written into `out`. */
+export function shapeCentroid(shape: Shape, out: PointLike = { x: 0, y: 0 }): PointLike {
+  const { xs, ys, index, offset, count } = shape;
+  const ox = xs[index[offset]];
+  const oy = ys[index[offset]];
+  let a = 0;
+  let cx = 0;
+  let cy = 0;
+  let mx = 0;
+  let my = 0;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
+    const x0 = xs[i] - ox;
+    const y0 = ys[i] - oy;
+    const x1 = xs[j] - ox;
+    const y1 = ys[j] - oy;
+    const c = x0 * y1 - x1 * y0;
+    a += c;
+    cx += (x0 + x1) * c;
+    cy += (y0 + y1) * c;
+    mx += x0;
+    my += y0;
+  }
+  if (shape.type === ShapeType.Polygon && a !== 0) {
+    out.x = ox + cx / (3 * a);
+    out.y = oy + cy / (3 * a);
+  } else {
+    out.x = ox + mx / count;
+    out.y = oy + my / count;
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Support mapping (seed 3.2): the point of the shape farthest along a direction
+
+/** Index k of the vertex farthest along (dx, dy) (the first of equals). */
+export function supportIndex(shape: Shape, dx: number, dy: number): number {
+  const { xs, ys, index, offset, count } = shape;
+  let best = 0;
+  let bestDot = xs[index[offset]] * dx + ys[index[offset]] * dy;
+  for (let k = 1; k < count; k++) {
+    const i = index[offset + k];
+    const d = xs[i] * dx + ys[i] * dy;
+    if (d > bestDot) {
+      bestDot = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+/**
+ * The support point of the shape along (dx, dy), written into `out`: the farthest vertex, pushed out by the radius
+ * along d/|d| (a circle's support is centre + r·d/|d|; any point of it for d = 0).
+ */
+export function supportPoint(shape: Shape, dx: number, dy: number, out: PointLike): PointLike {
+  const k = supportIndex(shape, dx, dy);
+  const i = shape.index[shape.offset + k];
+  out.x = shape.xs[i];
+  out.y = shape.ys[i];
+  const r = shape.radius;
+  if (r > 0) {
+    const len = Math.sqrt(dx * dx + dy * dy);
+    if (len > 0) {
+      out.x += (r * dx) / len;
+      out.y += (r * dy) / len;
+    } else {
+      out.x += r;
+    }
+  }
+  return out;
+}
+
+/** A size for relative tolerances: the largest half-extent of the shape's bounding box, radius included. */
+export function shapeSize(shape: Shape): number {
+  const { xs, ys, index, offset, count } = shape;
+  let minX = Infinity;
+  let minY = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const x = xs[i];
+    const y = ys[i];
+    if (x < minX) minX = x;
+    if (x > maxX) maxX = x;
+    if (y < minY) minY = y;
+    if (y > maxY) maxY = y;
+  }
+  const w = maxX - minX;
+  const h = maxY - minY;
+  return (w > h ? w : h) / 2 + shape.radius;
+}
