@@ -9,6 +9,11 @@ import { accumulateSprings, Springs } from './constraints/spring.js';
 import { integrate, INTEGRATORS, updateVelocities, type Integrator } from './integrate.js';
 import { keepInBounds, type Bounds } from './bounds.js';
 import { hashColumns } from './hash.js';
+import { ColliderKind, Colliders } from './pipeline/colliders.js';
+import { BruteForceBroadPhase, GridBroadPhase, PairList, type BroadPhase } from './pipeline/broadphase.js';
+import { NarrowPhase } from './pipeline/narrowphase.js';
+import { AnchorCache, Contacts, recordApproachSpeeds, solveContacts, solveContactVelocities } from './pipeline/contacts.js';
+import { grown } from './table.js';
 import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
@@ -40,7 +45,35 @@ export interface WorldOptions {
   maxCatchUpSteps?: number;
   /** advance(elapsed) takes one step of the elapsed time instead of fixed steps (seed 5.3's comparison). */
   variableStep?: boolean;
+  /** Broad phase: 'grid' (default, uniform grid with radix sort) or 'brute' (every pair; for tests and comparison). */
+  broadphase?: 'grid' | 'brute';
+  /** Grid cell size; 0 (default) picks twice the median body size. */
+  cellSize?: number;
+  /** Extra gap within which contacts are created before bodies touch. Default 0.02. */
+  contactSlop?: number;
 }
+
+/** How a body collides. Builders pass these through. */
+export interface ColliderOptions {
+  /**
+   * 'polygon': convex parts whose vertices are the body's particles (default: one part, all particles in order);
+   * 'particles': each particle is a circle of its radius; 'none': no collisions.
+   */
+  shape?: 'polygon' | 'particles' | 'none';
+  /** Convex parts as lists of indices into the body's particle list (concave outlines). */
+  parts?: number[][];
+  /** Coulomb friction coefficient (>= 0). Pairs use √(μa·μb). Default 0.6. */
+  friction?: number;
+  /** Restitution in [0, 1]. Pairs use the larger. Default 0. */
+  restitution?: number;
+  /** Collision filtering: bodies collide when (catA & maskB) && (catB & maskA), unless they share a group:
+   *  a shared positive group always collides, a shared negative group never does. */
+  category?: number;
+  mask?: number;
+  group?: number;
+}
+
+export const COLLIDER_SHAPES = ['polygon', 'particles', 'none'] as const;
 
 export interface ParticleOptions {
   x: number;
@@ -120,6 +153,9 @@ const DEFAULTS = {
   boundsFriction: 0.5,
   maxCatchUpSteps: 5,
   variableStep: false,
+  broadphase: 'grid' as 'grid' | 'brute',
+  cellSize: 0,
+  contactSlop: 0.02,
 };
 
 /**
@@ -147,6 +183,19 @@ export class World {
   private bodyKind: BodyKind[] = [];
   private bodyParticles: Int32Array[] = [];
   private bodyConstraints: Handle[][] = [];
+
+  /** Collision state: per body slot colliders, this step's candidate pairs and contacts. */
+  readonly colliders = new Colliders();
+  readonly contacts = new Contacts();
+  readonly pairs = new PairList();
+  readonly narrowPhase = new NarrowPhase();
+  private _broadPhase: BroadPhase;
+  private collidersDirty = false;
+  /** Per body slot: how far the body may move this step (speculative margin). */
+  private motion = new Float64Array(16);
+  private _contactSlop: number;
+  private readonly acceptPair = (a: number, b: number) => this.shouldCollide(a, b);
+  private readonly anchors = new AnchorCache();
 
   gravity: Vec2;
   private _timestep: number;
@@ -179,6 +228,33 @@ export class World {
     this._boundsFriction = nonNegative('boundsFriction', o.boundsFriction);
     this._maxCatchUpSteps = integer('maxCatchUpSteps', o.maxCatchUpSteps, 1, 1000);
     this.variableStep = Boolean(o.variableStep);
+    this._broadPhase = makeBroadPhase(oneOf('broadphase', o.broadphase, ['grid', 'brute'] as const), nonNegative('cellSize', o.cellSize));
+    this._contactSlop = nonNegative('contactSlop', o.contactSlop);
+  }
+
+  get broadphase(): 'grid' | 'brute' {
+    return this._broadPhase.name;
+  }
+  set broadphase(v: 'grid' | 'brute') {
+    const cell = this._broadPhase instanceof GridBroadPhase ? this._broadPhase.cellSize : 0;
+    this._broadPhase = makeBroadPhase(oneOf('broadphase', v, ['grid', 'brute'] as const), cell);
+  }
+  get cellSize(): number {
+    return this._broadPhase instanceof GridBroadPhase ? this._broadPhase.cellSize : 0;
+  }
+  set cellSize(v: number) {
+    nonNegative('cellSize', v);
+    if (this._broadPhase instanceof GridBroadPhase) this._broadPhase.cellSize = v;
+  }
+  /** The cell size the grid used in the last step (after the automatic choice). */
+  get gridCellSize(): number {
+    return this._broadPhase instanceof GridBroadPhase ? this._broadPhase.lastCellSize : 0;
+  }
+  get contactSlop(): number {
+    return this._contactSlop;
+  }
+  set contactSlop(v: number) {
+    this._contactSlop = nonNegative('contactSlop', v);
   }
 
   // ---- settings (validated) ----------------------------------------------------------------------------------
@@ -592,17 +668,76 @@ export class World {
 
   // ---- bodies ------------------------------------------------------------------------------------------------
 
-  /** Groups particles and constraints into one body (the builders call this). */
-  addBody(kind: BodyKind, particles: readonly Handle[], constraints: readonly Handle[] = []): Handle {
+  /** Groups particles and constraints into one body (the builders call this), colliding as `collider` says. */
+  addBody(kind: BodyKind, particles: readonly Handle[], constraints: readonly Handle[] = [], collider: ColliderOptions = { shape: 'none' }): Handle {
     oneOf('kind', kind, BODY_KINDS);
+    if (!Array.isArray(particles) || particles.length === 0) throw new RangeError(`a body needs at least one particle, got ${String(particles)}`);
     const slots = Int32Array.from(particles, (h, k) => this.particleIds.slotOf(h, `particles[${k}]`));
     constraints.forEach((h, k) => this.constraintIds.slotOf(h, `constraints[${k}]`));
+    const resolved = this.checkCollider(collider, slots.length);
     const handle = this.bodyIds.allocate();
     const slot = handleSlot(handle);
     this.bodyKind[slot] = kind;
     this.bodyParticles[slot] = slots;
     this.bodyConstraints[slot] = constraints.slice();
+    this.writeCollider(slot, resolved);
     return handle;
+  }
+
+  /** Changes how a body collides (any subset of the options; the rest keep their values). */
+  setCollider(body: Handle, options: ColliderOptions): void {
+    const slot = this.bodyIds.slotOf(body, 'body');
+    const c = this.colliders;
+    const current: ColliderOptions = {
+      shape: c.kind[slot] === ColliderKind.Polygon ? 'polygon' : c.kind[slot] === ColliderKind.Particles ? 'particles' : 'none',
+      parts: this.bodyParts[slot],
+      friction: c.friction[slot],
+      restitution: c.restitution[slot],
+      category: c.category[slot],
+      mask: c.mask[slot],
+      group: c.group[slot],
+    };
+    this.writeCollider(slot, this.checkCollider({ ...current, ...options }, this.bodyParticles[slot].length));
+  }
+
+  private bodyParts: (number[][] | undefined)[] = [];
+
+  private checkCollider(o: ColliderOptions, particleCount: number): Required<Omit<ColliderOptions, 'parts'>> & { parts?: number[][] } {
+    if (o == null || typeof o !== 'object') throw new TypeError(`collider options must be an object, got ${String(o)}`);
+    const shape = oneOf('shape', o.shape ?? 'polygon', COLLIDER_SHAPES);
+    let parts: number[][] | undefined;
+    if (o.parts !== undefined) {
+      if (!Array.isArray(o.parts) || o.parts.length === 0) throw new RangeError(`parts must be a non-empty list of index lists, got ${JSON.stringify(o.parts)}`);
+      parts = o.parts.map((part, k) => {
+        if (!Array.isArray(part) || part.length < 3) throw new RangeError(`parts[${k}] must list at least 3 particle indices, got ${JSON.stringify(part)}`);
+        return part.map((i, j) => integer(`parts[${k}][${j}]`, i, 0, particleCount - 1));
+      });
+    }
+    if (shape === 'polygon' && !parts && particleCount < 3) throw new RangeError(`a polygon collider needs at least 3 particles, got ${particleCount}`);
+    const restitution = finite('restitution', o.restitution ?? 0);
+    if (restitution < 0 || restitution > 1) throw new RangeError(`restitution must be between 0 and 1, got ${restitution}`);
+    return {
+      shape,
+      parts,
+      friction: nonNegative('friction', o.friction ?? 0.6),
+      restitution,
+      category: integer('category', o.category ?? 1, 0, 0xffffffff),
+      mask: integer('mask', o.mask ?? 0xffffffff, 0, 0xffffffff),
+      group: integer('group', o.group ?? 0, -0x80000000, 0x7fffffff),
+    };
+  }
+
+  private writeCollider(slot: number, o: ReturnType<World['checkCollider']>): void {
+    const c = this.colliders;
+    c.ensureBodies(slot + 1);
+    c.kind[slot] = o.shape === 'polygon' ? ColliderKind.Polygon : o.shape === 'particles' ? ColliderKind.Particles : ColliderKind.None;
+    c.friction[slot] = o.friction;
+    c.restitution[slot] = o.restitution;
+    c.category[slot] = o.category;
+    c.mask[slot] = o.mask;
+    c.group[slot] = o.group;
+    this.bodyParts[slot] = o.parts;
+    this.collidersDirty = true;
   }
 
   /** Removes a body with its particles and constraints. */
@@ -615,6 +750,9 @@ export class World {
     }
     this.bodyParticles[slot] = new Int32Array(0);
     this.bodyConstraints[slot] = [];
+    this.bodyParts[slot] = undefined;
+    this.colliders.kind[slot] = ColliderKind.None;
+    this.collidersDirty = true;
     this.bodyIds.release(handle);
   }
 
@@ -677,7 +815,9 @@ export class World {
     if (dt !== this._timestep) positive('dt', dt);
     const n = this._substeps;
     const h = dt / n;
-    for (let s = 0; s < n; s++) this.substep(h);
+    this.detectCollisions(dt);
+    for (let s = 0; s < n; s++) this.substep(h, s);
+    this.anchors.store(this.contacts);
     this.particles.fx.fill(0, 0, this.particles.count);
     this.particles.fy.fill(0, 0, this.particles.count);
     this.time += dt;
@@ -709,7 +849,7 @@ export class World {
     return taken;
   }
 
-  private substep(h: number): void {
+  private substep(h: number, index: number): void {
     const h2 = h * h;
     this.accelerate();
     integrate(this.particles, h, 1 / (1 + h * this._damping), this._integrator);
@@ -719,8 +859,11 @@ export class World {
     this.areas.lambda.fill(0, 0, this.areas.count);
     this.pins.lambdaX.fill(0, 0, this.pins.count);
     this.pins.lambdaY.fill(0, 0, this.pins.count);
-    for (let k = 0; k < this._iterations; k++) this.relax(h2);
+    this.contacts.lambda.fill(0, 0, this.contacts.count);
+    // Sweeps alternate direction so Gauss–Seidel's order bias cancels instead of accumulating.
+    for (let k = 0; k < this._iterations; k++) this.relax(h2, ((index * this._iterations + k) & 1) === 1);
     updateVelocities(this.particles, h, this._integrator);
+    if (this.contacts.count > 0) solveContactVelocities(this.contacts, this.particles);
   }
 
   /** Gravity, the user's forces and the springs' forces, as accelerations. */
@@ -736,13 +879,85 @@ export class World {
   }
 
   /** One Gauss–Seidel sweep over every constraint (seed Algorithm 1), then the bounds. */
-  private relax(h2: number): void {
+  private relax(h2: number, backward: boolean): void {
     const p = this.particles;
     if (this.distances.count > 0) solveDistances(this.distances, p, h2);
     if (this.angles.count > 0) solveAngles(this.angles, p, h2);
     if (this.areas.count > 0) solveAreas(this.areas, p, h2);
     if (this.pins.count > 0) solveSoftPins(this.pins, p, h2);
+    if (this.contacts.count > 0) solveContacts(this.contacts, p, backward);
     if (this.bounds) keepInBounds(p, this.bounds, this._boundsFriction);
+  }
+
+  // ---- collision pipeline ------------------------------------------------------------------------------------
+
+  /** Broad phase then narrow phase, once per step: the contacts found act in every substep (speculatively). */
+  private detectCollisions(dt: number): void {
+    if (this.collidersDirty) this.rebuildColliders();
+    const c = this.colliders;
+    this.contacts.count = 0;
+    this.pairs.count = 0;
+    if (c.activeCount === 0) return;
+    this.updateBoundingBoxes(dt);
+    this._broadPhase.findPairs(c, this.acceptPair, this.pairs);
+    this.narrowPhase.run(this.pairs, c, this.particles, this.motion, this._contactSlop, this.contacts);
+    this.anchors.restore(this.contacts);
+    recordApproachSpeeds(this.contacts, this.particles);
+  }
+
+  private rebuildColliders(): void {
+    const high = this.bodyIds.high;
+    this.motion = grown(this.motion, high);
+    this.colliders.rebuild(high, (slot) => {
+      if (!this.bodyIds.alive[slot]) return null;
+      const particles = this.bodyParticles[slot];
+      const parts = this.bodyParts[slot];
+      return { particles, parts: parts ? parts.map((part) => Int32Array.from(part, (k) => particles[k])) : [particles] };
+    });
+    this.collidersDirty = false;
+  }
+
+  /** Each collider's AABB, grown by how far it can move this step (velocity and gravity), and that distance. */
+  private updateBoundingBoxes(dt: number): void {
+    const c = this.colliders;
+    const { x, y, vx, vy, radius, invMass } = this.particles;
+    const g = Math.sqrt(this.gravity.x ** 2 + this.gravity.y ** 2) * dt * dt;
+    for (let k = 0; k < c.activeCount; k++) {
+      const s = c.active[k];
+      const idx = c.particles[s];
+      let minX = Infinity;
+      let minY = Infinity;
+      let maxX = -Infinity;
+      let maxY = -Infinity;
+      let speed2 = 0;
+      let movable = 0;
+      for (let q = 0; q < idx.length; q++) {
+        const i = idx[q];
+        const r = radius[i];
+        if (x[i] - r < minX) minX = x[i] - r;
+        if (y[i] - r < minY) minY = y[i] - r;
+        if (x[i] + r > maxX) maxX = x[i] + r;
+        if (y[i] + r > maxY) maxY = y[i] + r;
+        const v2 = vx[i] * vx[i] + vy[i] * vy[i];
+        if (v2 > speed2) speed2 = v2;
+        if (invMass[i] !== 0) movable = 1;
+      }
+      const m = movable ? Math.sqrt(speed2) * dt + g : Math.sqrt(speed2) * dt;
+      this.motion[s] = m;
+      c.isStatic[s] = movable ? 0 : 1;
+      c.minX[s] = minX - m;
+      c.minY[s] = minY - m;
+      c.maxX[s] = maxX + m;
+      c.maxY[s] = maxY + m;
+    }
+  }
+
+  private shouldCollide(a: number, b: number): boolean {
+    const c = this.colliders;
+    if (c.isStatic[a] && c.isStatic[b]) return false;
+    const ga = c.group[a];
+    if (ga !== 0 && ga === c.group[b]) return ga > 0;
+    return (c.category[a] & c.mask[b]) !== 0 && (c.category[b] & c.mask[a]) !== 0;
   }
 
   // ---- determinism -------------------------------------------------------------------------------------------
@@ -769,6 +984,9 @@ export class World {
         boundsFriction: this._boundsFriction,
         maxCatchUpSteps: this._maxCatchUpSteps,
         variableStep: this.variableStep,
+        broadphase: this.broadphase,
+        cellSize: this.cellSize,
+        contactSlop: this._contactSlop,
       },
       time: this.time,
       stepCount: this.stepCount,
@@ -781,6 +999,9 @@ export class World {
       bodyKind: this.bodyKind.slice(),
       bodyParticles: this.bodyParticles.map((a) => a.slice()),
       bodyConstraints: this.bodyConstraints.map((a) => a.slice()),
+      bodyParts: this.bodyParts.map((parts) => parts?.map((part) => part.slice())),
+      anchors: this.anchors.snapshot(),
+      colliders: (['kind', 'friction', 'restitution', 'category', 'mask', 'group'] as const).map((name) => this.colliders[name].slice(0, this.bodyIds.high)),
     };
   }
 
@@ -796,7 +1017,10 @@ export class World {
       _boundsFriction: s.settings.boundsFriction,
       _maxCatchUpSteps: s.settings.maxCatchUpSteps,
       variableStep: s.settings.variableStep,
+      _contactSlop: s.settings.contactSlop,
     });
+    this.broadphase = s.settings.broadphase;
+    this.cellSize = s.settings.cellSize;
     this.time = s.time;
     this.stepCount = s.stepCount;
     this.accumulator = s.accumulator;
@@ -811,6 +1035,15 @@ export class World {
     this.bodyKind = s.bodyKind.slice();
     this.bodyParticles = s.bodyParticles.map((a) => a.slice());
     this.bodyConstraints = s.bodyConstraints.map((a) => a.slice());
+    this.bodyParts = s.bodyParts.map((parts) => parts?.map((part) => part.slice()));
+    const c = this.colliders;
+    c.ensureBodies(this.bodyIds.high);
+    (['kind', 'friction', 'restitution', 'category', 'mask', 'group'] as const).forEach((name, k) => {
+      c[name].fill(0);
+      c[name].set(s.colliders[k]);
+    });
+    this.anchors.restoreSnapshot(s.anchors);
+    this.collidersDirty = true;
   }
 }
 
@@ -827,6 +1060,16 @@ export interface WorldSnapshot {
   bodyKind: BodyKind[];
   bodyParticles: Int32Array[];
   bodyConstraints: Handle[][];
+  bodyParts: (number[][] | undefined)[];
+  anchors: { keys: Float64Array; anchors: Float64Array };
+  colliders: (Float64Array | Uint8Array | Uint32Array | Int32Array)[];
+}
+
+function makeBroadPhase(kind: 'grid' | 'brute', cellSize: number): BroadPhase {
+  if (kind === 'brute') return new BruteForceBroadPhase();
+  const grid = new GridBroadPhase();
+  grid.cellSize = cellSize;
+  return grid;
 }
 
 function checkBounds(b: Bounds): Bounds {

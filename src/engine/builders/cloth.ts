@@ -1,11 +1,11 @@
 import type { World } from '../world.js';
 import { integer, nonNegative, positive } from '../validate.js';
-import { addTethers, massEach, point, transactional, type Built } from './common.js';
+import { addTethers, colliderOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 /** Which particles of the top row are pinned: every one, the two corners, none, or a list of column indices. */
 export type ClothPins = 'top' | 'corners' | 'none' | number[];
 
-export interface ClothOptions {
+export interface ClothOptions extends BodyOptions {
   /** Top-left corner. */
   origin: { x: number; y: number };
   columns: number;
@@ -72,7 +72,8 @@ export function createCloth(world: World, o: ClothOptions): Built {
       const rest = (a: number, b: number) => spacing * Math.hypot((a % columns) - (b % columns), Math.floor(a / columns) - Math.floor(b / columns));
       addTethers(world, particles, pinned, rest, constraints);
     }
-    return world.addBody('cloth', particles, constraints);
+    // Collides (when asked) as circles of the particles' radius; off by default.
+    return world.addBody('cloth', particles, constraints, colliderOf(o, 'particles', false));
   });
 }
 

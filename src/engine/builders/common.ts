@@ -1,4 +1,4 @@
-import type { Handle, Vec2, World } from '../world.js';
+import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
 import { finite, nonNegative, positive } from '../validate.js';
 
 /** What every builder returns: the body and the handles of what it made. */
@@ -12,6 +12,33 @@ export function point(name: string, p: unknown): Vec2 {
   if (p == null || typeof p !== 'object') throw new TypeError(`${name} must be a point {x, y}, got ${String(p)}`);
   const v = p as Vec2;
   return { x: finite(`${name}.x`, v.x), y: finite(`${name}.y`, v.y) };
+}
+
+/** Collision and material options every builder takes. */
+export interface BodyOptions {
+  /** Immovable: every particle gets infinite mass (walls, floors, obstacles). Default false. */
+  static?: boolean;
+  /** Whether the body collides (defaults differ per builder). */
+  collide?: boolean;
+  friction?: number;
+  restitution?: number;
+  category?: number;
+  mask?: number;
+  group?: number;
+}
+
+/** The collider a builder asks for, from the body options and its default shape. */
+export function colliderOf(o: BodyOptions, shape: 'polygon' | 'particles', collideByDefault: boolean, parts?: number[][]): ColliderOptions {
+  const collide = o.collide ?? collideByDefault;
+  return {
+    shape: collide ? shape : 'none',
+    parts,
+    friction: o.friction,
+    restitution: o.restitution,
+    category: o.category,
+    mask: o.mask,
+    group: o.group,
+  };
 }
 
 /** Per-particle mass from a total mass spread over n particles. */

@@ -1,8 +1,8 @@
 import type { Handle, World } from '../world.js';
 import { finite, positive } from '../validate.js';
-import { complianceOf, massEach, transactional, type Built } from './common.js';
+import { colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
 
-export interface RagdollOptions {
+export interface RagdollOptions extends BodyOptions {
   /** Pelvis position. */
   x: number;
   y: number;
@@ -57,16 +57,16 @@ export function createRagdoll(world: World, o: RagdollOptions): Built {
   const x = finite('x', o?.x);
   const y = finite('y', o.y);
   const height = positive('height', o.height ?? 1.8);
-  const each = massEach('mass', o.mass, POSE.length, 70);
+  const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70);
   const compliance = complianceOf('jointCompliance', o.jointCompliance);
   return transactional(world, (particles, constraints) => {
-    for (const [px, py] of POSE) particles.push(world.addParticle({ x: x + px * height, y: y + py * height, mass: each, radius: 0.03 * height }));
+    for (const [px, py] of POSE) particles.push(world.addParticle({ x: x + px * height, y: y + py * height, mass: each, radius: 0.04 * height }));
     for (const [a, b] of BONES) constraints.push(world.addDistance(particles[a], particles[b]));
     for (const [a, v, c, below, above] of LIMITS) {
       const rest = world.angleAt(particles[a], particles[v], particles[c]);
       constraints.push(world.addAngleLimit(particles[a], particles[v], particles[c], { min: rest - below, max: rest + above, compliance }));
     }
-    return world.addBody('ragdoll', particles, constraints);
+    return world.addBody('ragdoll', particles, constraints, colliderOf(o, 'particles', true));
   });
 }
 

@@ -1,8 +1,8 @@
 import type { World } from '../world.js';
 import { finite, positive } from '../validate.js';
-import { complianceOf, massEach, point, transactional, type Built } from './common.js';
+import { colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
-export interface PolygonOptions {
+export interface PolygonOptions extends BodyOptions {
   /** Outline in body coordinates (counter-clockwise in a y-up frame, clockwise on screen), at least 3 points. */
   points: { x: number; y: number }[];
   /** Where the body's origin goes. Default (0, 0). */
@@ -16,7 +16,7 @@ export interface PolygonOptions {
   compliance?: number;
 }
 
-export interface BoxOptions {
+export interface BoxOptions extends BodyOptions {
   x: number;
   y: number;
   width: number;
@@ -39,13 +39,15 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   if (!o || !Array.isArray(o.points) || o.points.length < 3) {
     throw new RangeError(`points must be a list of at least 3 points, got ${o && Array.isArray(o.points) ? o.points.length : String(o?.points)}`);
   }
-  const local = o.points.map((p, k) => point(`points[${k}]`, p));
-  const area = Math.abs(shoelace(local));
+  let local = o.points.map((p, k) => point(`points[${k}]`, p));
+  // Parts and edge normals assume counter-clockwise order (positive area): reverse a clockwise outline.
+  if (shoelace(local) < 0) local = local.reverse();
+  const area = shoelace(local);
   if (!(area > 0)) throw new RangeError(`points must enclose a non-zero area, got ${JSON.stringify(o.points)}`);
   const ox = finite('x', o.x ?? 0);
   const oy = finite('y', o.y ?? 0);
   const angle = finite('angle', o.angle ?? 0);
-  const each = massEach('mass', o.mass, local.length, area);
+  const each = o.static ? Infinity : massEach('mass', o.mass, local.length, area);
   const compliance = complianceOf('compliance', o.compliance);
   const cos = Math.cos(angle);
   const sin = Math.sin(angle);
@@ -55,7 +57,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     for (let k = 0; k < n; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % n], { compliance }));
     for (let k = 2; k < n - 1; k++) constraints.push(world.addDistance(particles[0], particles[k], { compliance }));
     for (const [a, b] of extraBraces) constraints.push(world.addDistance(particles[a], particles[b], { compliance }));
-    return world.addBody('rigid', particles, constraints);
+    return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true));
   });
 }
 
@@ -78,6 +80,13 @@ export function createBox(world: World, o: BoxOptions): Built {
     angle: o.angle,
     mass: o.mass ?? 4 * w * h,
     compliance: o.compliance,
+    static: o.static,
+    collide: o.collide,
+    friction: o.friction,
+    restitution: o.restitution,
+    category: o.category,
+    mask: o.mask,
+    group: o.group,
     },
     [[1, 3]],
   );

@@ -1,8 +1,8 @@
 import type { World } from '../world.js';
 import { integer, nonNegative } from '../validate.js';
-import { addTethers, complianceOf, massEach, point, transactional, type Built } from './common.js';
+import { addTethers, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
-export interface RopeOptions {
+export interface RopeOptions extends BodyOptions {
   from: { x: number; y: number };
   to: { x: number; y: number };
   /** Number of links (particles = segments + 1). Default 20. */
@@ -43,6 +43,7 @@ export function createRope(world: World, o: RopeOptions): Built {
     const pinned = [...(o.pinStart ?? true ? [0] : []), ...(o.pinEnd ? [segments] : [])];
     for (const k of pinned) constraints.push(world.addPin(particles[k]));
     if ((o.tethers ?? true) && compliance === 0) addTethers(world, particles, pinned, (a, b) => Math.abs(a - b) * link, constraints);
-    return world.addBody('rope', particles, constraints);
+    // Collides (when asked) as circles of the particles' radius; off by default.
+    return world.addBody('rope', particles, constraints, colliderOf(o, 'particles', false));
   });
 }

@@ -1,8 +1,8 @@
 import type { World } from '../world.js';
 import { integer, nonNegative, oneOf, positive } from '../validate.js';
-import { complianceOf, massEach, point, transactional, type Built } from './common.js';
+import { colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
-export interface SoftBodyOptions {
+export interface SoftBodyOptions extends BodyOptions {
   center: { x: number; y: number };
   radius: number;
   /** Particles on the ring. Default 16. */
@@ -30,7 +30,7 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
   const radius = positive('radius', o.radius);
   const segments = integer('segments', o.segments ?? 16, 3, 4096);
   const model = oneOf('model', o.model ?? 'pressure', ['pressure', 'springs'] as const);
-  const each = massEach('mass', o.mass, segments, Math.PI * radius * radius);
+  const each = o.static ? Infinity : massEach('mass', o.mass, segments, Math.PI * radius * radius);
   const compliance = complianceOf('compliance', o.compliance ?? 1e-4);
   const pressure = positive('pressure', o.pressure ?? 1);
   const areaCompliance = nonNegative('areaCompliance', o.areaCompliance ?? 0);
@@ -40,16 +40,17 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
     for (let k = 0; k < segments; k++) {
       // Counter-clockwise in a y-up frame, the orientation the area constraint measures as positive.
       const t = (2 * Math.PI * k) / segments;
-      particles.push(world.addParticle({ x: c.x + radius * Math.cos(t), y: c.y + radius * Math.sin(t), mass: each }));
+      // Each ring particle collides as a circle half a chord wide, so the ring has no gaps.
+      particles.push(world.addParticle({ x: c.x + radius * Math.cos(t), y: c.y + radius * Math.sin(t), mass: each, radius: radius * Math.sin(Math.PI / segments) }));
     }
     for (let k = 0; k < segments; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % segments], { compliance }));
     if (model === 'pressure') {
       constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance }));
     } else {
-      const hub = world.addParticle({ x: c.x, y: c.y, mass: each });
+      const hub = world.addParticle({ x: c.x, y: c.y, mass: each, radius: 0 });
       for (let k = 0; k < segments; k++) constraints.push(world.addSpring(hub, particles[k], { stiffness, damping }));
       particles.push(hub);
     }
-    return world.addBody('soft', particles, constraints);
+    return world.addBody('soft', particles, constraints, colliderOf(o, 'particles', true));
   });
 }

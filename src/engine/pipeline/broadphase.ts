@@ -1,0 +1,224 @@
+import { grown } from '../table.js';
+import type { Colliders } from './colliders.js';
+
+/** Candidate pairs of body slots whose AABBs overlap, each pair once, a < b not implied. */
+export class PairList {
+  a = new Int32Array(256);
+  b = new Int32Array(256);
+  count = 0;
+  push(a: number, b: number): void {
+    if (this.count === this.a.length) {
+      this.a = grown(this.a, this.count + 1);
+      this.b = grown(this.b, this.count + 1);
+    }
+    this.a[this.count] = a;
+    this.b[this.count] = b;
+    this.count++;
+  }
+}
+
+export interface BroadPhase {
+  readonly name: 'grid' | 'brute';
+  /** Fills `out` with every pair of active colliders whose AABBs overlap and that `accept` lets through. */
+  findPairs(c: Colliders, accept: (a: number, b: number) => boolean, out: PairList): void;
+}
+
+function overlaps(c: Colliders, a: number, b: number): boolean {
+  return c.minX[a] <= c.maxX[b] && c.minX[b] <= c.maxX[a] && c.minY[a] <= c.maxY[b] && c.minY[b] <= c.maxY[a];
+}
+
+/** O(n²): every pair tested. The oracle for tests and the seed's comparison. */
+export class BruteForceBroadPhase implements BroadPhase {
+  readonly name = 'brute';
+  findPairs(c: Colliders, accept: (a: number, b: number) => boolean, out: PairList): void {
+    out.count = 0;
+    for (let i = 0; i < c.activeCount; i++) {
+      const a = c.active[i];
+      for (let j = i + 1; j < c.activeCount; j++) {
+        const b = c.active[j];
+        if (overlaps(c, a, b) && accept(a, b)) out.push(a, b);
+      }
+    }
+  }
+}
+
+/**
+ * Uniform grid rebuilt every step (seed 5.2). Each AABB emits (cell key, body) for every cell it touches; the pairs
+ * are sorted by key with an LSD radix sort and runs of equal keys give the candidates. Cell coordinates are taken
+ * relative to the lowest cell in use, so the key ix·rows + iy is unique per cell for negative and very large
+ * coordinates alike (the cell size grows if the scene would need more than 2³² cells). A pair is reported only from
+ * the cell holding the lower-left corner of the two AABBs' overlap, so it is reported once without a hash set.
+ * Bodies covering more than `maxCellsPerBody` cells (walls, floors) are tested against everything directly.
+ */
+export class GridBroadPhase implements BroadPhase {
+  readonly name = 'grid';
+  /** Cell size; 0 = automatic (twice the median AABB extent of the dynamic bodies). */
+  cellSize = 0;
+  maxCellsPerBody = 64;
+  /** The cell size used in the last findPairs (for debug drawing). */
+  lastCellSize = 1;
+  lastOriginX = 0;
+  lastOriginY = 0;
+
+  private keys = new Uint32Array(1024);
+  private values = new Uint32Array(1024);
+  private keysTmp = new Uint32Array(1024);
+  private valuesTmp = new Uint32Array(1024);
+  private large = new Int32Array(16);
+  private extents = new Float64Array(16);
+  private readonly counts = new Uint32Array(256);
+
+  findPairs(c: Colliders, accept: (a: number, b: number) => boolean, out: PairList): void {
+    out.count = 0;
+    const n = c.activeCount;
+    if (n < 2) return;
+    const cell = this.chooseCellSize(c);
+    const inv = 1 / cell;
+    // Cell range in use.
+    let loX = Infinity;
+    let loY = Infinity;
+    let hiX = -Infinity;
+    let hiY = -Infinity;
+    for (let i = 0; i < n; i++) {
+      const s = c.active[i];
+      loX = Math.min(loX, Math.floor(c.minX[s] * inv));
+      loY = Math.min(loY, Math.floor(c.minY[s] * inv));
+      hiX = Math.max(hiX, Math.floor(c.maxX[s] * inv));
+      hiY = Math.max(hiY, Math.floor(c.maxY[s] * inv));
+    }
+    const rows = hiY - loY + 1;
+    if ((hiX - loX + 1) * rows > 0xffffffff) {
+      // Sparse scene over a huge extent: coarser cells keep keys unique in 32 bits.
+      const saved = this.cellSize;
+      this.cellSize = cell * 2;
+      this.findPairs(c, accept, out);
+      this.cellSize = saved;
+      return;
+    }
+    this.lastCellSize = cell;
+    this.lastOriginX = loX * cell;
+    this.lastOriginY = loY * cell;
+
+    let m = 0;
+    let largeCount = 0;
+    this.large = grown(this.large, n);
+    for (let i = 0; i < n; i++) {
+      const s = c.active[i];
+      const x0 = Math.floor(c.minX[s] * inv) - loX;
+      const x1 = Math.floor(c.maxX[s] * inv) - loX;
+      const y0 = Math.floor(c.minY[s] * inv) - loY;
+      const y1 = Math.floor(c.maxY[s] * inv) - loY;
+      const cells = (x1 - x0 + 1) * (y1 - y0 + 1);
+      if (cells > this.maxCellsPerBody) {
+        this.large[largeCount++] = s;
+        continue;
+      }
+      this.reserve(m + cells);
+      for (let x = x0; x <= x1; x++) {
+        for (let y = y0; y <= y1; y++) {
+          this.keys[m] = x * rows + y;
+          this.values[m] = s;
+          m++;
+        }
+      }
+    }
+    this.radixSort(m);
+    const keys = this.keys;
+    const values = this.values;
+    for (let start = 0; start < m; ) {
+      let end = start + 1;
+      while (end < m && keys[end] === keys[start]) end++;
+      if (end - start > 1) {
+        const key = keys[start];
+        const cx = Math.floor(key / rows);
+        const cy = key - cx * rows;
+        for (let i = start; i < end; i++) {
+          const a = values[i];
+          for (let j = i + 1; j < end; j++) {
+            const b = values[j];
+            if (!overlaps(c, a, b)) continue;
+            // Report the pair only from the cell that holds the lower-left corner of the overlap.
+            const ox = Math.floor(Math.max(c.minX[a], c.minX[b]) * inv) - loX;
+            const oy = Math.floor(Math.max(c.minY[a], c.minY[b]) * inv) - loY;
+            if (ox !== cx || oy !== cy) continue;
+            if (accept(a, b)) out.push(a, b);
+          }
+        }
+      }
+      start = end;
+    }
+    // Large bodies against everything (large–large pairs once).
+    for (let k = 0; k < largeCount; k++) {
+      const a = this.large[k];
+      for (let i = 0; i < n; i++) {
+        const b = c.active[i];
+        if (b === a) continue;
+        const bIsLarge = this.isLarge(b, largeCount);
+        if (bIsLarge && b < a) continue;
+        if (overlaps(c, a, b) && accept(a, b)) out.push(a, b);
+      }
+    }
+  }
+
+  private isLarge(slot: number, count: number): boolean {
+    for (let k = 0; k < count; k++) if (this.large[k] === slot) return true;
+    return false;
+  }
+
+  private chooseCellSize(c: Colliders): number {
+    if (this.cellSize > 0) return this.cellSize;
+    const n = c.activeCount;
+    this.extents = grown(this.extents, n);
+    let m = 0;
+    for (let i = 0; i < n; i++) {
+      const s = c.active[i];
+      if (c.isStatic[s]) continue;
+      this.extents[m++] = Math.max(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]);
+    }
+    if (m === 0) return 1;
+    const sorted = this.extents.subarray(0, m).sort();
+    const median = sorted[m >> 1];
+    return median > 0 ? 2 * median : 1;
+  }
+
+  private reserve(n: number): void {
+    if (n <= this.keys.length) return;
+    this.keys = grown(this.keys, n);
+    this.values = grown(this.values, n);
+    this.keysTmp = grown(this.keysTmp, n);
+    this.valuesTmp = grown(this.valuesTmp, n);
+  }
+
+  /** LSD radix sort of (key, value) by key, 8 bits a pass; passes whose byte is the same for all keys are skipped. */
+  private radixSort(n: number): void {
+    let keys = this.keys;
+    let values = this.values;
+    let keysTmp = this.keysTmp;
+    let valuesTmp = this.valuesTmp;
+    const counts = this.counts;
+    let maxKey = 0;
+    for (let i = 0; i < n; i++) if (keys[i] > maxKey) maxKey = keys[i];
+    for (let shift = 0; shift < 32; shift += 8) {
+      if (maxKey >>> shift === 0) break;
+      counts.fill(0);
+      for (let i = 0; i < n; i++) counts[(keys[i] >>> shift) & 255]++;
+      let sum = 0;
+      for (let b = 0; b < 256; b++) {
+        const c = counts[b];
+        counts[b] = sum;
+        sum += c;
+      }
+      for (let i = 0; i < n; i++) {
+        const d = counts[(keys[i] >>> shift) & 255]++;
+        keysTmp[d] = keys[i];
+        valuesTmp[d] = values[i];
+      }
+      [keys, keysTmp] = [keysTmp, keys];
+      [values, valuesTmp] = [valuesTmp, values];
+    }
+    this.keys = keys;
+    this.values = values;
+    this.keysTmp = keysTmp;
+    this.valuesTmp = valuesTmp;
+  }
+}

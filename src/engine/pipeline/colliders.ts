@@ -1,0 +1,89 @@
+import { grown } from '../table.js';
+
+/** How a body collides. */
+export const enum ColliderKind {
+  None = 0,
+  /** Convex parts whose vertices are the body's particles (a rigid frame's outline, or a concave outline's pieces). */
+  Polygon = 1,
+  /** Every particle is a circle of its own radius (soft rings, ragdolls, ropes and cloth that collide, balls). */
+  Particles = 2,
+}
+
+/**
+ * Collision data per body slot (indexed like the world's body registry), plus the convex parts of polygon bodies.
+ * Part vertices are particle indices, so a part always collides with the particles' current positions.
+ */
+export class Colliders {
+  kind = new Uint8Array(16);
+  friction = new Float64Array(16);
+  restitution = new Float64Array(16);
+  category = new Uint32Array(16);
+  mask = new Uint32Array(16);
+  group = new Int32Array(16);
+  partStart = new Int32Array(16);
+  partCount = new Int32Array(16);
+  /** 1 when every particle of the body is immovable. */
+  isStatic = new Uint8Array(16);
+  /** The body's AABB this step (enlarged by its motion), and its particles' index list. */
+  minX = new Float64Array(16);
+  minY = new Float64Array(16);
+  maxX = new Float64Array(16);
+  maxY = new Float64Array(16);
+  particles: Int32Array[] = [];
+
+  /** Parts: [start, start + count) in `vertices`. */
+  partVertexStart = new Int32Array(16);
+  partVertexCount = new Int32Array(16);
+  partBody = new Int32Array(16);
+  partsUsed = 0;
+  vertices = new Int32Array(64);
+  verticesUsed = 0;
+
+  /** Dense list of the body slots that collide, in slot order (rebuilt when bodies change). */
+  active = new Int32Array(16);
+  activeCount = 0;
+
+  ensureBodies(slots: number): void {
+    for (const name of ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'partStart', 'partCount', 'isStatic', 'minX', 'minY', 'maxX', 'maxY'] as const) {
+      (this as unknown as Record<string, Float64Array>)[name] = grown((this as unknown as Record<string, Float64Array>)[name], slots);
+    }
+  }
+
+  addPart(body: number, vertexIndices: ArrayLike<number>): void {
+    const p = this.partsUsed++;
+    this.partVertexStart = grown(this.partVertexStart, p + 1);
+    this.partVertexCount = grown(this.partVertexCount, p + 1);
+    this.partBody = grown(this.partBody, p + 1);
+    this.vertices = grown(this.vertices, this.verticesUsed + vertexIndices.length);
+    this.partVertexStart[p] = this.verticesUsed;
+    this.partVertexCount[p] = vertexIndices.length;
+    this.partBody[p] = body;
+    for (let k = 0; k < vertexIndices.length; k++) this.vertices[this.verticesUsed++] = vertexIndices[k];
+  }
+
+  /** Rebuilds parts and the active list from scratch (bodies were added or removed; not called inside step()). */
+  rebuild(slots: number, describe: (slot: number) => PartSource | null): void {
+    this.ensureBodies(slots);
+    this.partsUsed = 0;
+    this.verticesUsed = 0;
+    this.activeCount = 0;
+    this.active = grown(this.active, slots);
+    for (let slot = 0; slot < slots; slot++) {
+      const source = describe(slot);
+      if (!source || this.kind[slot] === ColliderKind.None) {
+        this.partCount[slot] = 0;
+        continue;
+      }
+      this.partStart[slot] = this.partsUsed;
+      for (const part of source.parts) this.addPart(slot, part);
+      this.partCount[slot] = source.parts.length;
+      this.particles[slot] = source.particles;
+      this.active[this.activeCount++] = slot;
+    }
+  }
+}
+
+export interface PartSource {
+  particles: Int32Array;
+  parts: Int32Array[];
+}

@@ -1,0 +1,316 @@
+import { Table } from '../table.js';
+import type { ParticleStore } from '../particles.js';
+
+/**
+ * Contacts found by the narrow phase once per step, solved by projection inside every relaxation sweep (seed 4.2).
+ *
+ * A vertex–edge contact keeps particle `v` on the outer side of the edge `e0 → e1` (of a counter-clockwise part,
+ * whose outward normal is perp(e1 − e0) = (ey, −ex)/|e|), `radius` away from it. The correction is shared by
+ * inverse mass between the vertex and the edge's two particles, the edge's share split by α and 1 − α (α = where
+ * the vertex projects on the edge); dividing by w_v + (1−α)²·w_e0 + α²·w_e1 makes the contact point move exactly by
+ * the correction, which is Jakobsen's 1/(α² + (1−α)²) generalised to unequal masses.
+ * A point–point contact (e1 = −1) keeps particles v and e0 `radius` apart: circles, or a circle on a corner.
+ *
+ * Each step's contacts are speculative: they are found while still `margin` apart and only act once the gap closes
+ * during a substep, measured from the particles' current positions, so fast bodies cannot pass through.
+ *
+ * Friction is Coulomb's, on positions: the contact point's tangential motion since the substep began is undone up
+ * to μ times the normal correction of this substep (static friction when it all fits, kinetic otherwise).
+ */
+export class Contacts extends Table {
+  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'anchor'] as const;
+  v = new Int32Array(16);
+  e0 = new Int32Array(16);
+  e1 = new Int32Array(16);
+  radius = new Float64Array(16);
+  friction = new Float64Array(16);
+  restitution = new Float64Array(16);
+  /** Body slots: A owns the edge (or particle e0), B owns the vertex. */
+  bodyA = new Int32Array(16);
+  bodyB = new Int32Array(16);
+  /** Normal correction accumulated in the current substep. */
+  lambda = new Float64Array(16);
+  /** Normal (from A to B) and signed gap at detection; depth > 0 means overlap. */
+  nx = new Float64Array(16);
+  ny = new Float64Array(16);
+  depth = new Float64Array(16);
+  /** Relative normal speed at the start of the step (negative: approaching), for restitution. */
+  normalSpeed = new Float64Array(16);
+  /**
+   * Static friction anchor of a vertex–edge contact: the fraction along the edge where the vertex first touched it
+   * (NaN until it does). Kept across steps for the same (vertex, edge) feature, so creep cannot accumulate: static
+   * friction pulls the vertex back to its anchor, and the anchor moves only when the contact slips.
+   */
+  anchor = new Float64Array(16);
+
+  add(v: number, e0: number, e1: number, radius: number, friction: number, restitution: number, bodyA: number, bodyB: number, nx: number, ny: number, depth: number): void {
+    if (this.count === this.v.length) this.reserve(1);
+    const i = this.count++;
+    this.v[i] = v;
+    this.e0[i] = e0;
+    this.e1[i] = e1;
+    this.radius[i] = radius;
+    this.friction[i] = friction;
+    this.restitution[i] = restitution;
+    this.bodyA[i] = bodyA;
+    this.bodyB[i] = bodyB;
+    this.lambda[i] = 0;
+    this.nx[i] = nx;
+    this.ny[i] = ny;
+    this.depth[i] = depth;
+    this.normalSpeed[i] = 0;
+    this.anchor[i] = NaN;
+  }
+}
+
+/** Identifies a contact's feature pair across steps: vertex v against the edge starting at e0 (or particle e0). */
+function featureKey(v: number, e0: number, e1: number): number {
+  return (v * 4194304 + e0) * 2 + (e1 < 0 ? 1 : 0);
+}
+
+/**
+ * Last step's anchors by feature key: an open-addressing hash table in typed arrays, refilled every step (its
+ * arrays only grow, outside the steady state).
+ */
+export class AnchorCache {
+  private keys = new Float64Array(64).fill(-1);
+  private anchors = new Float64Array(64);
+  private mask = 63;
+
+  /** Remembers the anchors of every contact that has one. */
+  store(c: Contacts): void {
+    let size = this.keys.length;
+    while (size < c.count * 2) size *= 2;
+    if (size !== this.keys.length) {
+      this.keys = new Float64Array(size);
+      this.anchors = new Float64Array(size);
+      this.mask = size - 1;
+    }
+    this.keys.fill(-1);
+    for (let i = 0; i < c.count; i++) {
+      const a = c.anchor[i];
+      if (a !== a) continue; // NaN: never touched
+      const key = featureKey(c.v[i], c.e0[i], c.e1[i]);
+      let h = hashOf(key) & this.mask;
+      while (this.keys[h] !== -1) h = (h + 1) & this.mask;
+      this.keys[h] = key;
+      this.anchors[h] = a;
+    }
+  }
+
+  /** Gives each new contact the anchor its feature had last step. */
+  restore(c: Contacts): void {
+    for (let i = 0; i < c.count; i++) {
+      const key = featureKey(c.v[i], c.e0[i], c.e1[i]);
+      let h = hashOf(key) & this.mask;
+      while (this.keys[h] !== -1) {
+        if (this.keys[h] === key) {
+          c.anchor[i] = this.anchors[h];
+          break;
+        }
+        h = (h + 1) & this.mask;
+      }
+    }
+  }
+
+  snapshot(): { keys: Float64Array; anchors: Float64Array } {
+    return { keys: this.keys.slice(), anchors: this.anchors.slice() };
+  }
+
+  restoreSnapshot(s: { keys: Float64Array; anchors: Float64Array }): void {
+    this.keys = s.keys.slice();
+    this.anchors = s.anchors.slice();
+    this.mask = this.keys.length - 1;
+  }
+}
+
+function hashOf(key: number): number {
+  const lo = key % 4294967296;
+  const hi = (key - lo) / 4294967296;
+  return Math.imul(lo ^ Math.imul(hi, 0x9e3779b1), 0x85ebca6b) ^ (lo >>> 13);
+}
+
+/** How far past an edge's ends (as a fraction of its length) a vertex still counts as touching it. */
+const EDGE_OVERHANG = 0.05;
+
+/** `backward` sweeps the contacts in reverse order (alternated per substep so Gauss–Seidel's order bias cancels). */
+export function solveContacts(c: Contacts, p: ParticleStore, backward = false): void {
+  const { x, y, px, py, invMass } = p;
+  const { v, e0, e1, radius, friction, lambda, anchor } = c;
+  const n = c.count;
+  for (let k = 0; k < n; k++) {
+    const i = backward ? n - 1 - k : k;
+    const iv = v[i];
+    const i0 = e0[i];
+    const i1 = e1[i];
+    const wv = invMass[iv];
+    const w0 = invMass[i0];
+    if (i1 >= 0) {
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const len2 = ex * ex + ey * ey;
+      if (len2 < 1e-24) continue;
+      const inv = 1 / Math.sqrt(len2);
+      const nx = ey * inv;
+      const ny = -ex * inv;
+      const rx = x[iv] - x[i0];
+      const ry = y[iv] - y[i0];
+      const sep = rx * nx + ry * ny - radius[i];
+      if (sep >= 0) continue;
+      let alpha = (rx * ex + ry * ey) / len2;
+      if (alpha < -EDGE_OVERHANG || alpha > 1 + EDGE_OVERHANG) continue;
+      alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+      const beta = 1 - alpha;
+      const w1 = invMass[i1];
+      const w = wv + beta * beta * w0 + alpha * alpha * w1;
+      if (w === 0) continue;
+      const dl = -sep / w;
+      lambda[i] += dl;
+      // Static friction holds the vertex at the point of the edge it first touched (its anchor); when that needs
+      // more than μ times the normal correction, the contact slips by the excess and the anchor follows.
+      const tx = ex * inv;
+      const ty = ey * inv;
+      const len = len2 * inv;
+      if (anchor[i] !== anchor[i]) anchor[i] = alpha;
+      const slide = (alpha - anchor[i]) * len;
+      const limit = friction[i] * lambda[i];
+      const undo = slide > limit ? limit : slide < -limit ? -limit : slide;
+      if (undo !== slide) anchor[i] += (slide - undo) / len;
+      const dt = -undo / w;
+      // Normal and friction corrections applied together.
+      const cx = dl * nx + dt * tx;
+      const cy = dl * ny + dt * ty;
+      x[iv] += wv * cx;
+      y[iv] += wv * cy;
+      x[i0] -= w0 * beta * cx;
+      y[i0] -= w0 * beta * cy;
+      x[i1] -= w1 * alpha * cx;
+      y[i1] -= w1 * alpha * cy;
+    } else {
+      let nx = x[iv] - x[i0];
+      let ny = y[iv] - y[i0];
+      const d2 = nx * nx + ny * ny;
+      const r = radius[i];
+      if (d2 >= r * r) continue;
+      const w = wv + w0;
+      if (w === 0) continue;
+      const d = Math.sqrt(d2);
+      if (d > 1e-12) {
+        nx /= d;
+        ny /= d;
+      } else {
+        nx = c.nx[i];
+        ny = c.ny[i];
+      }
+      const dl = (r - d) / w;
+      lambda[i] += dl;
+      const tx = -ny;
+      const ty = nx;
+      const mx = x[iv] - px[iv] - (x[i0] - px[i0]);
+      const my = y[iv] - py[iv] - (y[i0] - py[i0]);
+      const slide = mx * tx + my * ty;
+      const limit = friction[i] * lambda[i];
+      const undo = slide > limit ? limit : slide < -limit ? -limit : slide;
+      const dt = -undo / w;
+      const cx = dl * nx + dt * tx;
+      const cy = dl * ny + dt * ty;
+      x[iv] += wv * cx;
+      y[iv] += wv * cy;
+      x[i0] -= w0 * cx;
+      y[i0] -= w0 * cy;
+    }
+  }
+}
+
+/** Approach speeds below this do not bounce (resting contacts would jitter otherwise). */
+const BOUNCE_THRESHOLD = 0.5;
+
+/**
+ * Relative normal velocity of a contact's point: vertex minus the edge point under it (or particle e0).
+ * Negative when approaching. (nx, ny) is filled into `normal`.
+ */
+function normalVelocity(c: Contacts, p: ParticleStore, i: number, out: Float64Array): number {
+  const { x, y, vx, vy } = p;
+  const iv = c.v[i];
+  const i0 = c.e0[i];
+  const i1 = c.e1[i];
+  if (i1 >= 0) {
+    const ex = x[i1] - x[i0];
+    const ey = y[i1] - y[i0];
+    const len2 = ex * ex + ey * ey;
+    if (len2 < 1e-24) return 0;
+    const inv = 1 / Math.sqrt(len2);
+    let alpha = ((x[iv] - x[i0]) * ex + (y[iv] - y[i0]) * ey) / len2;
+    alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+    out[0] = ey * inv;
+    out[1] = -ex * inv;
+    out[2] = alpha;
+    const rvx = vx[iv] - (1 - alpha) * vx[i0] - alpha * vx[i1];
+    const rvy = vy[iv] - (1 - alpha) * vy[i0] - alpha * vy[i1];
+    return rvx * out[0] + rvy * out[1];
+  }
+  let nx = x[iv] - x[i0];
+  let ny = y[iv] - y[i0];
+  const d = Math.sqrt(nx * nx + ny * ny);
+  if (d > 1e-12) {
+    nx /= d;
+    ny /= d;
+  } else {
+    nx = c.nx[i];
+    ny = c.ny[i];
+  }
+  out[0] = nx;
+  out[1] = ny;
+  out[2] = 0;
+  return (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
+}
+
+const scratch = new Float64Array(3);
+
+/** Records each contact's approach speed at the start of the step (restitution needs the speed before impact). */
+export function recordApproachSpeeds(c: Contacts, p: ParticleStore): void {
+  for (let i = 0, n = c.count; i < n; i++) c.normalSpeed[i] = normalVelocity(c, p, i, scratch);
+}
+
+/**
+ * The velocity pass after a substep (Müller et al. 2020): for every contact that acted in this substep, the
+ * relative normal velocity becomes −e·(approach speed) for a bouncing impact and 0 otherwise. Without it, pushing
+ * a penetration out within one substep of length h would leave the bodies flying apart at depth / h.
+ */
+export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
+  const { vx, vy, invMass } = p;
+  for (let i = 0, n = c.count; i < n; i++) {
+    if (c.lambda[i] <= 0) continue;
+    const vn = normalVelocity(c, p, i, scratch);
+    const nx = scratch[0];
+    const ny = scratch[1];
+    const alpha = scratch[2];
+    let target = 0;
+    const approach = c.normalSpeed[i];
+    if (c.restitution[i] > 0 && approach < -BOUNCE_THRESHOLD) {
+      target = -c.restitution[i] * approach;
+      c.normalSpeed[i] = 0; // bounce once per impact
+    }
+    const iv = c.v[i];
+    const i0 = c.e0[i];
+    const i1 = c.e1[i];
+    const beta = 1 - alpha;
+    const wv = invMass[iv];
+    const w0 = invMass[i0];
+    const w1 = i1 >= 0 ? invMass[i1] : 0;
+    const w = i1 >= 0 ? wv + beta * beta * w0 + alpha * alpha * w1 : wv + w0;
+    if (w === 0) continue;
+    const dl = (target - vn) / w;
+    vx[iv] += wv * dl * nx;
+    vy[iv] += wv * dl * ny;
+    if (i1 >= 0) {
+      vx[i0] -= w0 * beta * dl * nx;
+      vy[i0] -= w0 * beta * dl * ny;
+      vx[i1] -= w1 * alpha * dl * nx;
+      vy[i1] -= w1 * alpha * dl * ny;
+    } else {
+      vx[i0] -= w0 * dl * nx;
+      vy[i0] -= w0 * dl * ny;
+    }
+  }
+}

@@ -1,0 +1,206 @@
+import type { ParticleStore } from '../particles.js';
+import { ColliderKind, type Colliders } from './colliders.js';
+import type { Contacts } from './contacts.js';
+import type { PairList } from './broadphase.js';
+
+/**
+ * Turns candidate body pairs into contact features (vertex–edge, point–point) for the projection solver.
+ * Polygon pairs use the separating-axis test (seed Algorithm 2) to find the reference edge; the contact points are
+ * the incident edge's vertices over the reference edge, and the reference edge's vertices over the incident edge
+ * (the two ends of Box2D's clipped segment, as particle features). Pairs up to `margin` apart give speculative
+ * contacts that act only if the gap closes during the step.
+ */
+export class NarrowPhase {
+  /** Candidate pair tests and contacts of the last run (for the seed's experiment 1 and the stats overlay). */
+  tests = 0;
+  private edge = 0;
+
+  run(pairs: PairList, c: Colliders, p: ParticleStore, motion: Float64Array, slop: number, out: Contacts): void {
+    out.count = 0;
+    this.tests = 0;
+    for (let k = 0; k < pairs.count; k++) {
+      let a = pairs.a[k];
+      let b = pairs.b[k];
+      // Polygons first: a polygon body is always A when paired with a particle body.
+      if (c.kind[a] === ColliderKind.Particles && c.kind[b] === ColliderKind.Polygon) [a, b] = [b, a];
+      const margin = motion[a] + motion[b] + slop;
+      const mu = Math.sqrt(c.friction[a] * c.friction[b]);
+      const e = Math.max(c.restitution[a], c.restitution[b]);
+      const ka = c.kind[a];
+      const kb = c.kind[b];
+      if (ka === ColliderKind.Polygon && kb === ColliderKind.Polygon) {
+        for (let i = c.partStart[a], iEnd = i + c.partCount[a]; i < iEnd; i++) {
+          for (let j = c.partStart[b], jEnd = j + c.partCount[b]; j < jEnd; j++) {
+            this.polygons(c, p, i, j, a, b, margin, mu, e, out);
+          }
+        }
+      } else if (ka === ColliderKind.Polygon) {
+        const particles = c.particles[b];
+        for (let q = 0; q < particles.length; q++) {
+          const v = particles[q];
+          for (let i = c.partStart[a], iEnd = i + c.partCount[a]; i < iEnd; i++) this.circlePolygon(c, p, i, v, a, b, margin, mu, e, out);
+        }
+      } else {
+        const pa = c.particles[a];
+        const pb = c.particles[b];
+        for (let q = 0; q < pa.length; q++) for (let r = 0; r < pb.length; r++) this.circles(p, pa[q], pb[r], a, b, margin, mu, e, out);
+      }
+    }
+  }
+
+  /** The largest over A's edges of the smallest signed distance of B's vertices to that edge; the edge in this.edge. */
+  private maxSeparation(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array): number {
+    let best = -Infinity;
+    let bestEdge = 0;
+    for (let i = 0; i < aCount; i++) {
+      const i0 = vs[aStart + i];
+      const i1 = vs[aStart + (i + 1 === aCount ? 0 : i + 1)];
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const inv = 1 / Math.sqrt(ex * ex + ey * ey);
+      const nx = ey * inv;
+      const ny = -ex * inv;
+      let min = Infinity;
+      for (let j = 0; j < bCount; j++) {
+        const q = vs[bStart + j];
+        const d = (x[q] - x[i0]) * nx + (y[q] - y[i0]) * ny;
+        if (d < min) min = d;
+      }
+      if (min > best) {
+        best = min;
+        bestEdge = i;
+      }
+    }
+    this.edge = bestEdge;
+    return best;
+  }
+
+  private polygons(c: Colliders, p: ParticleStore, partA: number, partB: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts): void {
+    this.tests++;
+    const vs = c.vertices;
+    const { x, y } = p;
+    const aStart = c.partVertexStart[partA];
+    const aCount = c.partVertexCount[partA];
+    const bStart = c.partVertexStart[partB];
+    const bCount = c.partVertexCount[partB];
+    const sepA = this.maxSeparation(vs, aStart, aCount, bStart, bCount, x, y);
+    if (sepA > margin) return;
+    const edgeA = this.edge;
+    const sepB = this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
+    if (sepB > margin) return;
+    const edgeB = this.edge;
+    // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties.
+    const flip = sepB > sepA + 1e-3 * margin + 1e-9;
+    const refStart = flip ? bStart : aStart;
+    const refCount = flip ? bCount : aCount;
+    const incStart = flip ? aStart : bStart;
+    const incCount = flip ? aCount : bCount;
+    const refEdge = flip ? edgeB : edgeA;
+    const refBody = flip ? bodyB : bodyA;
+    const incBody = flip ? bodyA : bodyB;
+    const r0 = vs[refStart + refEdge];
+    const r1 = vs[refStart + (refEdge + 1 === refCount ? 0 : refEdge + 1)];
+    const rex = x[r1] - x[r0];
+    const rey = y[r1] - y[r0];
+    const rlen2 = rex * rex + rey * rey;
+    const rinv = 1 / Math.sqrt(rlen2);
+    const nx = rey * rinv;
+    const ny = -rex * rinv;
+    // Incident edge: the one whose normal is most opposed to the reference normal.
+    let incEdge = 0;
+    let most = Infinity;
+    for (let j = 0; j < incCount; j++) {
+      const j0 = vs[incStart + j];
+      const j1 = vs[incStart + (j + 1 === incCount ? 0 : j + 1)];
+      const ex = x[j1] - x[j0];
+      const ey = y[j1] - y[j0];
+      const dot = (ey * nx - ex * ny) / Math.sqrt(ex * ex + ey * ey);
+      if (dot < most) {
+        most = dot;
+        incEdge = j;
+      }
+    }
+    const q0 = vs[incStart + incEdge];
+    const q1 = vs[incStart + (incEdge + 1 === incCount ? 0 : incEdge + 1)];
+    // The normal reported for events points from A to B.
+    const snx = flip ? -nx : nx;
+    const sny = flip ? -ny : ny;
+    // Incident vertices over the reference edge.
+    for (let k = 0; k < 2; k++) {
+      const q = k === 0 ? q0 : q1;
+      const rx = x[q] - x[r0];
+      const ry = y[q] - y[r0];
+      const sep = rx * nx + ry * ny;
+      const alpha = (rx * rex + ry * rey) / rlen2;
+      if (sep <= margin && alpha >= 0 && alpha <= 1) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+    }
+    // Reference vertices strictly inside the incident edge (its ends were handled above).
+    const qex = x[q1] - x[q0];
+    const qey = y[q1] - y[q0];
+    const qlen2 = qex * qex + qey * qey;
+    const qinv = 1 / Math.sqrt(qlen2);
+    const mnx = qey * qinv;
+    const mny = -qex * qinv;
+    for (let k = 0; k < 2; k++) {
+      const r = k === 0 ? r0 : r1;
+      const rx = x[r] - x[q0];
+      const ry = y[r] - y[q0];
+      const sep = rx * mnx + ry * mny;
+      const alpha = (rx * qex + ry * qey) / qlen2;
+      if (sep <= margin && alpha > 1e-3 && alpha < 1 - 1e-3) out.add(r, q0, q1, 0, mu, e, incBody, refBody, -snx, -sny, -sep);
+    }
+  }
+
+  /** A particle with a radius against a convex part: an edge contact in an edge's region, a corner contact otherwise. */
+  private circlePolygon(c: Colliders, p: ParticleStore, part: number, v: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts): void {
+    this.tests++;
+    const vs = c.vertices;
+    const { x, y, radius } = p;
+    const start = c.partVertexStart[part];
+    const count = c.partVertexCount[part];
+    const r = radius[v];
+    let best = -Infinity;
+    let bestEdge = 0;
+    for (let i = 0; i < count; i++) {
+      const i0 = vs[start + i];
+      const i1 = vs[start + (i + 1 === count ? 0 : i + 1)];
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const d = ((x[v] - x[i0]) * ey - (y[v] - y[i0]) * ex) / Math.sqrt(ex * ex + ey * ey);
+      if (d > best) {
+        best = d;
+        bestEdge = i;
+      }
+    }
+    if (best - r > margin) return;
+    const i0 = vs[start + bestEdge];
+    const i1 = vs[start + (bestEdge + 1 === count ? 0 : bestEdge + 1)];
+    const ex = x[i1] - x[i0];
+    const ey = y[i1] - y[i0];
+    const len2 = ex * ex + ey * ey;
+    const alpha = ((x[v] - x[i0]) * ex + (y[v] - y[i0]) * ey) / len2;
+    if (best <= 0 || (alpha >= 0 && alpha <= 1)) {
+      const inv = 1 / Math.sqrt(len2);
+      out.add(v, i0, i1, r, mu, e, bodyA, bodyB, ey * inv, -ex * inv, r - best);
+      return;
+    }
+    const corner = alpha < 0 ? i0 : i1;
+    this.circles(p, corner, v, bodyA, bodyB, margin, mu, e, out, r);
+  }
+
+  /** Two particles kept radius apart (their radii summed unless given). Point–point contact: v = b's, e0 = a's. */
+  private circles(p: ParticleStore, ia: number, ib: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts, radius = -1): void {
+    this.tests++;
+    const { x, y } = p;
+    const r = radius >= 0 ? radius : p.radius[ia] + p.radius[ib];
+    const dx = x[ib] - x[ia];
+    const dy = y[ib] - y[ia];
+    const reach = r + margin;
+    const d2 = dx * dx + dy * dy;
+    if (d2 > reach * reach) return;
+    const d = Math.sqrt(d2);
+    const nx = d > 1e-12 ? dx / d : 0;
+    const ny = d > 1e-12 ? dy / d : -1;
+    out.add(ib, ia, -1, r, mu, e, bodyA, bodyB, nx, ny, r - d);
+  }
+}
