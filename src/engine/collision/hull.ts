@@ -49,14 +49,18 @@ function expand(xs: ArrayLike<number>, ys: ArrayLike<number>, a0: number, b0: nu
       continue;
     }
     if (set.length === 0) continue;
-    // Farthest point from the line (most negative cross); ties: the one nearer a, for a deterministic order.
+    // Farthest point from the line (most negative cross). Ties lie on a parallel of ab: take the one nearest a, an
+    // end of that run, so the run's middle points fall on the hull edge between its ends and are dropped.
+    const ux = xs[b] - xs[a];
+    const uy = ys[b] - ys[a];
     let c = set[0];
     let best = cross(xs, ys, a, b, c);
     for (let k = 1; k < set.length; k++) {
-      const v = cross(xs, ys, a, b, set[k]);
-      if (v < best) {
+      const p = set[k];
+      const v = cross(xs, ys, a, b, p);
+      if (v < best || (v === best && (xs[p] - xs[c]) * ux + (ys[p] - ys[c]) * uy < 0)) {
         best = v;
-        c = set[k];
+        c = p;
       }
     }
     const left: number[] = [];

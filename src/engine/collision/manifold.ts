@@ -41,19 +41,36 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
   const sepB = sep.value;
   if (sepB >= margin) return miss(out);
   if (sepA === -Infinity && sepB === -Infinity) return miss(out);
-
-  // Reference polygon R (its face's normal n points towards the incident polygon I).
+  const edgeB = sep.edge;
+  const nbx = sep.nx;
+  const nby = sep.ny;
+  // Reference polygon: A unless B's face is shallower by the bias.
   const flip = sepA === -Infinity || sepB > sepA + (1 - REFERENCE_BIAS) * Math.abs(sepA);
-  const rx = flip ? bx : ax;
-  const ry = flip ? by : ay;
-  const rn = flip ? nb : na;
-  const ix = flip ? ax : bx;
-  const iy = flip ? ay : by;
-  const inn = flip ? na : nb;
-  const e = flip ? sep.edge : edgeA;
-  const nx = flip ? sep.nx : nax;
-  const ny = flip ? sep.ny : nay;
+  if (flip ? clip(out, margin, bx, by, nb, edgeB, nbx, nby, ax, ay, na, true) : clip(out, margin, ax, ay, na, edgeA, nax, nay, bx, by, nb, false)) {
+    return true;
+  }
+  // Deep overlaps: the incident edge may miss the biased face's side planes; try the other face.
+  if (sepA !== -Infinity && sepB !== -Infinity) {
+    if (flip ? clip(out, margin, ax, ay, na, edgeA, nax, nay, bx, by, nb, false) : clip(out, margin, bx, by, nb, edgeB, nbx, nby, ax, ay, na, true)) {
+      return true;
+    }
+  }
+  // Neither face's side planes hold a point of the other's incident edge: one point, the deepest vertex of the
+  // incident polygon under the shallower face, α clamped to the edge.
+  const useB = sepB > sepA;
+  deepest(out, useB ? bx : ax, useB ? by : ay, useB ? nb : na, useB ? edgeB : edgeA, useB ? nbx : nax, useB ? nby : nay, useB ? ax : bx, useB ? ay : by, useB ? na : nb, useB);
+  return true;
+}
 
+/**
+ * Clips the incident edge of polygon I against reference edge e of polygon R (outward unit normal n, towards I).
+ * `flip` when R is B. Writes the points with separation <= margin; returns whether there is one.
+ */
+function clip(
+  out: Manifold, margin: number,
+  rx: Float64Array, ry: Float64Array, rn: number, e: number, nx: number, ny: number,
+  ix: Float64Array, iy: Float64Array, inn: number, flip: boolean,
+): boolean {
   // Incident edge: the edge of I whose normal is most anti-parallel to n.
   let i1 = 0;
   let minDot = Infinity;
@@ -96,7 +113,7 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
   // Side plane t·p >= lo.
   let d0 = tx * p0x + ty * p0y - lo;
   let d1 = tx * p1x + ty * p1y - lo;
-  if (d0 < 0 && d1 < 0) return miss(out);
+  if (d0 < 0 && d1 < 0) return false;
   if (d0 < 0) {
     const s = d0 / (d0 - d1);
     p0x += s * (p1x - p0x);
@@ -111,7 +128,7 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
   // Side plane t·p <= hi.
   d0 = hi - (tx * p0x + ty * p0y);
   d1 = hi - (tx * p1x + ty * p1y);
-  if (d0 < 0 && d1 < 0) return miss(out);
+  if (d0 < 0 && d1 < 0) return false;
   if (d0 < 0) {
     const s = d0 / (d0 - d1);
     p0x += s * (p1x - p0x);
@@ -165,6 +182,38 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
   out.normalX = flip ? -nx : nx;
   out.normalY = flip ? -ny : ny;
   return count > 0;
+}
+
+/** One contact: the vertex of I deepest below reference edge e of R. */
+function deepest(
+  out: Manifold,
+  rx: Float64Array, ry: Float64Array, rn: number, e: number, nx: number, ny: number,
+  ix: Float64Array, iy: Float64Array, inn: number, flip: boolean,
+): void {
+  let v = 0;
+  let min = Infinity;
+  for (let k = 0; k < inn; k++) {
+    const d = nx * ix[k] + ny * iy[k];
+    if (d < min) {
+      min = d;
+      v = k;
+    }
+  }
+  const e2 = e + 1 === rn ? 0 : e + 1;
+  const elx = rx[e2] - rx[e];
+  const ely = ry[e2] - ry[e];
+  const alpha = ((ix[v] - rx[e]) * elx + (iy[v] - ry[e]) * ely) / (elx * elx + ely * ely);
+  const depth = nx * rx[e] + ny * ry[e] - min;
+  out.count = 1;
+  out.normalX = flip ? -nx : nx;
+  out.normalY = flip ? -ny : ny;
+  out.incident[0] = flip ? 0 : 1;
+  out.vertex[0] = v;
+  out.edge[0] = e;
+  out.alpha[0] = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+  out.depth[0] = depth;
+  out.pointX[0] = ix[v] + 0.5 * depth * nx;
+  out.pointY[0] = iy[v] + 0.5 * depth * ny;
 }
 
 /** Polygon (or segment) P against circle C; `flip` when C is shape A. One point: C's centre against P's edge. */

@@ -1,0 +1,138 @@
+import { expect } from '@open-wc/testing';
+import { Manifold, Penetration, ShapeType, polygon, polygonManifold, sat, type Shape } from '../../../src/engine/collision/index.js';
+import { Failures, KINDS, boundaryDistance, describeShape, make, overlapAlong, pts, randomPair, rng, sizeOf } from './helpers.js';
+
+const PAIRS = 10_000;
+
+/**
+ * Checks every contact point's feature against the geometry: the penetrating vertex V (minus its radius along the
+ * normal, for a circle) pushed by depth along the normal lands on the named edge at α, and the reported point is
+ * halfway. Returns an error message or ''.
+ */
+function checkFeatures(a: Shape, b: Shape, m: Manifold, tol: number): string {
+  const shapes = [a, b];
+  for (let k = 0; k < m.count; k++) {
+    const owner = shapes[m.incident[k]];
+    const other = shapes[1 - m.incident[k]];
+    const s = m.incident[k] === 1 ? 1 : -1; // a vertex of B meets A's edge further along the normal, one of A back along it
+    const v = pts(owner)[m.vertex[k]];
+    if (!v) return `vertex ${m.vertex[k]} out of range`;
+    const depth = m.depth[k];
+    // Penetrating point on the owner's outline.
+    const px = v.x - s * owner.radius * m.normalX;
+    const py = v.y - s * owner.radius * m.normalY;
+    const qx = px + s * depth * m.normalX;
+    const qy = py + s * depth * m.normalY;
+    if (Math.abs(m.pointX[k] - (px + qx) / 2) > tol || Math.abs(m.pointY[k] - (py + qy) / 2) > tol) return `point ${k} not halfway`;
+    if (boundaryDistance(owner, px, py) > tol) return `penetrating point ${k} off its shape by ${boundaryDistance(owner, px, py)}`;
+    if (m.alpha[k] < 0 || m.alpha[k] > 1) return `alpha ${m.alpha[k]}`;
+    if (m.edge[k] < 0) {
+      if (!(a.type === ShapeType.Circle && b.type === ShapeType.Circle)) return 'edge −1 outside circle–circle';
+      if (boundaryDistance(other, qx, qy) > tol) return `counterpart ${k} off the other circle`;
+      continue;
+    }
+    const e = pts(other);
+    const e0 = e[m.edge[k]];
+    const e1 = e[(m.edge[k] + 1) % e.length];
+    const ex = e0.x + m.alpha[k] * (e1.x - e0.x);
+    const ey = e0.y + m.alpha[k] * (e1.y - e0.y);
+    if (Math.abs(ex - qx) > tol || Math.abs(ey - qy) > tol) return `α ${m.alpha[k]} on edge ${m.edge[k]} gives (${ex}, ${ey}), expected (${qx}, ${qy})`;
+  }
+  return '';
+}
+
+describe('contact manifold', () => {
+  for (const ka of KINDS) {
+    for (const kb of KINDS) {
+      it(`${ka}–${kb}: hits with SAT, its points lie on both outlines, and α reproduces the point on the edge`, () => {
+        const r = rng(5000 + KINDS.indexOf(ka) * 3 + KINDS.indexOf(kb));
+        const m = new Manifold();
+        const pen = new Penetration();
+        const fail = new Failures();
+        let hits = 0;
+        let two = 0;
+        for (let k = 0; k < PAIRS; k++) {
+          const [a, b] = randomPair(r, ka, kb, 1, 0.9);
+          const size = sizeOf(a, b);
+          const tol = 1e-9 * size;
+          const s = sat(a, b, pen);
+          const hit = polygonManifold(a, b, m);
+          if (s !== hit) {
+            if (pen.depth > 1e-9 * size) fail.add(`sat ${s} manifold ${hit}: ${describeShape(a)} vs ${describeShape(b)}`);
+            continue;
+          }
+          if (!hit) {
+            if (m.count !== 0) fail.add('count on a miss');
+            continue;
+          }
+          hits++;
+          if (m.count === 2) two++;
+          if (m.count < 1 || m.count > 2) fail.add(`count ${m.count}`);
+          if (Math.abs(m.normalX ** 2 + m.normalY ** 2 - 1) > 1e-12) fail.add('normal not unit');
+          // The normal is SAT's or, with the reference-face bias, one whose overlap is within 2% of the minimum.
+          let deepest = -Infinity;
+          for (let j = 0; j < m.count; j++) deepest = Math.max(deepest, m.depth[j]);
+          if (deepest > pen.depth / 0.98 + tol) fail.add(`manifold depth ${deepest} > SAT ${pen.depth}`);
+          if (!(deepest > 0)) fail.add(`no penetrating point (deepest ${deepest})`);
+          const along = overlapAlong(a, b, m.normalX, m.normalY);
+          if (along > pen.depth / 0.98 + tol || along < pen.depth - tol) fail.add(`overlap along the normal ${along}, SAT depth ${pen.depth}`);
+          const err = checkFeatures(a, b, m, tol * 10);
+          if (err) fail.add(`${err}: ${describeShape(a)} vs ${describeShape(b)}`);
+        }
+        fail.check();
+        expect(hits).to.be.greaterThan(PAIRS / 4);
+        if (ka !== 'circle' && kb !== 'circle' && !(ka === 'segment' && kb === 'segment')) expect(two).to.be.greaterThan(0);
+      });
+    }
+  }
+
+  it('a box resting on a box: two points, the full depth, features on the right shapes', () => {
+    const ground = polygon([0, 0, 10, 0, 10, 1, 0, 1]);
+    const box = polygon([4, 0.9, 6, 0.9, 6, 2.9, 4, 2.9]);
+    const m = new Manifold();
+    expect(polygonManifold(ground, box, m)).to.equal(true);
+    expect(m.count).to.equal(2);
+    expect([m.normalX, m.normalY]).to.deep.equal([0, 1]);
+    for (let k = 0; k < 2; k++) {
+      expect(m.depth[k]).to.be.closeTo(0.1, 1e-12);
+      expect(m.incident[k]).to.equal(1); // the box's bottom corners
+      expect(m.edge[k]).to.equal(2); // the ground's top edge, (10, 1) → (0, 1)
+    }
+    expect([...m.vertex].sort()).to.deep.equal([0, 1]);
+    expect([...m.alpha].map((a) => Math.round(a * 1e12) / 1e12).sort()).to.deep.equal([0.4, 0.6]);
+    // The same pair the other way round: normal flips, features swap sides.
+    expect(polygonManifold(box, ground, m)).to.equal(true);
+    expect(m.normalY).to.equal(-1);
+    for (let k = 0; k < m.count; k++) expect(m.incident[k]).to.equal(0);
+  });
+
+  it('a box wider than its support: the support corners clip the box edge (reference vertices on the incident edge)', () => {
+    const post = polygon([0, 0, 1, 0, 1, 1, 0, 1]);
+    const plank = polygon([-2, 0.8, 3, 0.8, 3, 1.8, -2, 1.8]);
+    const m = new Manifold();
+    expect(polygonManifold(post, plank, m)).to.equal(true);
+    expect(m.count).to.equal(2);
+    expect(m.normalY).to.be.closeTo(1, 1e-15);
+    for (let k = 0; k < 2; k++) {
+      expect(m.incident[k]).to.equal(0); // the post's top corners
+      expect(m.edge[k]).to.equal(0); // the plank's bottom edge (−2, 0.8) → (3, 0.8)
+      expect(m.depth[k]).to.be.closeTo(0.2, 1e-12);
+    }
+    expect([...m.alpha].map((a) => Math.round(a * 1e12) / 1e12).sort()).to.deep.equal([0.4, 0.6]);
+  });
+
+  it('with a margin, reports speculative contacts of shapes a little apart (negative depth)', () => {
+    const a = polygon([0, 0, 1, 0, 1, 1, 0, 1]);
+    const b = polygon([0, 1.05, 1, 1.05, 1, 2, 0, 2]);
+    const m = new Manifold();
+    expect(polygonManifold(a, b, m)).to.equal(false);
+    expect(polygonManifold(a, b, m, 0.1)).to.equal(true);
+    expect(m.count).to.equal(2);
+    expect(m.depth[0]).to.be.closeTo(-0.05, 1e-12);
+    expect(polygonManifold(a, b, m, 0.04)).to.equal(false);
+    const c = make(ShapeType.Circle, [0.5], [1.5], 0.4);
+    expect(polygonManifold(a, c, m)).to.equal(false);
+    expect(polygonManifold(a, c, m, 0.2)).to.equal(true);
+    expect(m.depth[0]).to.be.closeTo(-0.1, 1e-12);
+  });
+});
