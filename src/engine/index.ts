@@ -2,7 +2,7 @@
 export { World, BODY_KINDS } from './world.js';
 export type {
   WorldOptions, WorldSnapshot, ParticleOptions, DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions,
-  BodyKind, ConstraintKind, Vec2, Handle, Integrator, Bounds,
+  BodyKind, ConstraintKind, Vec2, Handle, Integrator, Bounds, ColliderOptions,
 } from './world.js';
 export { INTEGRATORS } from './integrate.js';
 export { createRope, type RopeOptions } from './builders/rope.js';
@@ -12,3 +12,7 @@ export { createSoftBody, type SoftBodyOptions } from './builders/softbody.js';
 export { createRagdoll, ragdollJoints, RAGDOLL_JOINTS, type RagdollOptions } from './builders/ragdoll.js';
 export type { Built } from './builders/common.js';
 export { hashColumns } from './hash.js';
+export { createCircle, type CircleOptions } from './builders/circle.js';
+export type { BodyOptions } from './builders/common.js';
+export { buildScene, buildBody, BODY_TYPES, type SceneDescription, type BodyDescription, type BodyType } from './scene.js';
+export { catalogue, SCENE_NAMES, type SceneName, type CatalogueEntry } from './scenes/catalogue.js';

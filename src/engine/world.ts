@@ -14,6 +14,10 @@ import { BruteForceBroadPhase, GridBroadPhase, PairList, type BroadPhase } from 
 import { NarrowPhase } from './pipeline/narrowphase.js';
 import { AnchorCache, Contacts, recordApproachSpeeds, solveContacts, solveContactVelocities } from './pipeline/contacts.js';
 import { grown } from './table.js';
+import { GrabConstraints, solveGrabs } from './constraints/grab.js';
+import { CollisionEvents, EventTracker } from './pipeline/events.js';
+import { Sleep } from './pipeline/sleep.js';
+import { bodiesAtPoint, bodiesInBox, rayCast } from './pipeline/queries.js';
 import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
@@ -51,6 +55,27 @@ export interface WorldOptions {
   cellSize?: number;
   /** Extra gap within which contacts are created before bodies touch. Default 0.02. */
   contactSlop?: number;
+  /** Bodies at rest fall asleep and cost nothing until woken. Default true. */
+  sleeping?: boolean;
+  /** The fastest an overlap that already exists is pushed apart (units/s). Default 4. */
+  maxPushSpeed?: number;
+}
+
+export interface GrabOptions {
+  /** Pull per unit of distance and of mass (1/s²): how tightly the body follows. Default 2000. */
+  stiffness?: number;
+  /** How far from the point a particle may be picked when no body contains the point. Default 0.5. */
+  pickRadius?: number;
+}
+
+/** Where a ray first hits a body. */
+export interface RayCastHit {
+  body: Handle;
+  x: number;
+  y: number;
+  normalX: number;
+  normalY: number;
+  distance: number;
 }
 
 /** How a body collides. Builders pass these through. */
@@ -131,9 +156,9 @@ export interface AreaOptions {
 export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';
 export const BODY_KINDS: readonly BodyKind[] = ['particle', 'rope', 'cloth', 'rigid', 'soft', 'ragdoll', 'custom'];
 
-export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area';
+export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area' | 'grab';
 /** Indexed by Kind. */
-const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area'];
+const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area', 'grab'];
 
 const enum Kind {
   Distance,
@@ -141,6 +166,7 @@ const enum Kind {
   Pin,
   Spring,
   Area,
+  Grab,
 }
 
 const DEFAULTS = {
@@ -156,6 +182,8 @@ const DEFAULTS = {
   broadphase: 'grid' as 'grid' | 'brute',
   cellSize: 0,
   contactSlop: 0.02,
+  sleeping: true,
+  maxPushSpeed: 4,
 };
 
 /**
@@ -172,6 +200,13 @@ export class World {
   readonly pins = new PinConstraints();
   readonly springs = new Springs();
   readonly areas = new AreaConstraints();
+  readonly grabs = new GrabConstraints();
+  /** Begin/end collision events of the last step. */
+  readonly events = new CollisionEvents();
+  private readonly eventTracker = new EventTracker();
+  private readonly sleep = new Sleep();
+  /** Bodies or constraints changed: the sleep bookkeeping needs rebuilding. */
+  private topologyDirty = true;
 
   private readonly particleIds = new HandleRegistry('particle');
   private readonly constraintIds = new HandleRegistry('constraint');
@@ -196,6 +231,9 @@ export class World {
   private _contactSlop: number;
   private readonly acceptPair = (a: number, b: number) => this.shouldCollide(a, b);
   private readonly anchors = new AnchorCache();
+  private readonly bodyHandleOf = (slot: number) => this.bodyIds.handleOf(slot);
+  private readonly bodyAlive = (slot: number) => this.bodyIds.alive[slot] === 1;
+  private readonly bodyParticlesOf = (slot: number) => this.bodyParticles[slot];
 
   gravity: Vec2;
   private _timestep: number;
@@ -230,6 +268,53 @@ export class World {
     this.variableStep = Boolean(o.variableStep);
     this._broadPhase = makeBroadPhase(oneOf('broadphase', o.broadphase, ['grid', 'brute'] as const), nonNegative('cellSize', o.cellSize));
     this._contactSlop = nonNegative('contactSlop', o.contactSlop);
+    this.sleep.enabled = Boolean(o.sleeping);
+    this._maxPushSpeed = positive('maxPushSpeed', o.maxPushSpeed);
+  }
+
+  private _maxPushSpeed: number;
+  get maxPushSpeed(): number {
+    return this._maxPushSpeed;
+  }
+  set maxPushSpeed(v: number) {
+    this._maxPushSpeed = positive('maxPushSpeed', v);
+  }
+
+  /** Whether bodies at rest fall asleep. Turning it off wakes everything. */
+  get sleeping(): boolean {
+    return this.sleep.enabled;
+  }
+  set sleeping(v: boolean) {
+    this.sleep.enabled = Boolean(v);
+    if (!v) this.wakeAll();
+  }
+
+  /** Whether a body is being simulated (false once it has fallen asleep). */
+  isAwake(body: Handle): boolean {
+    return this.sleep.asleep[this.bodyIds.slotOf(body, 'body')] !== 1;
+  }
+
+  /** Wakes a sleeping body (its island wakes with it on contact). */
+  wake(body: Handle): void {
+    const slot = this.bodyIds.slotOf(body, 'body');
+    this.sleep.wakeBody(slot, this.bodyParticles[slot], this.particles);
+  }
+
+  wakeAll(): void {
+    for (let s = 0; s < this.bodyIds.high; s++) if (this.bodyIds.alive[s]) this.sleep.wakeBody(s, this.bodyParticles[s], this.particles);
+  }
+
+  /** True when every body is asleep and no free particle moves: a step then does no work. */
+  get settled(): boolean {
+    return !this.topologyDirty && this.sleep.enabled && this.sleep.awakeCount === 0 && this.freeMovableParticles === 0 && this.grabs.count === 0;
+  }
+  private freeMovableParticles = 0;
+
+  /** Wakes the body a particle belongs to (anything the user does to a particle). */
+  private wakeParticle(i: number): void {
+    if (this.topologyDirty) return;
+    const s = this.sleep.particleBody[i];
+    if (s >= 0) this.sleep.wakeBody(s, this.bodyParticles[s], this.particles);
   }
 
   get broadphase(): 'grid' | 'brute' {
@@ -303,6 +388,7 @@ export class World {
   }
   setGravity(x: number, y: number): void {
     this.gravity = { x: finite('gravity.x', x), y: finite('gravity.y', y) };
+    this.wakeAll();
   }
   setBounds(bounds: Bounds | null): void {
     this.bounds = bounds == null ? null : checkBounds(bounds);
@@ -337,12 +423,14 @@ export class World {
     p.alive[slot] = 1;
     p.flags[slot] = mass === Infinity ? ParticleFlag.Static : 0;
     this.writeVelocity(slot, vx, vy);
+    this.topologyChanged();
     return handle;
   }
 
   /** Removes a particle and every constraint that uses it. */
   removeParticle(handle: Handle): void {
     const slot = this.particleIds.slotOf(handle, 'particle');
+    this.topologyChanged();
     this.removeConstraintsWhere((kind, row) => this.constraintUsesParticle(kind, row, slot));
     const p = this.particles;
     p.alive[slot] = 0;
@@ -380,6 +468,7 @@ export class World {
   /** Moves a particle (teleport: its velocity is kept). */
   setPosition(handle: Handle, x: number, y: number): void {
     const i = this.particleIndex(handle);
+    this.wakeParticle(i);
     const nx = finite('x', x);
     const ny = finite('y', y);
     const p = this.particles;
@@ -396,12 +485,15 @@ export class World {
   }
 
   setVelocity(handle: Handle, vx: number, vy: number): void {
-    this.writeVelocity(this.particleIndex(handle), finite('vx', vx), finite('vy', vy));
+    const i = this.particleIndex(handle);
+    this.wakeParticle(i);
+    this.writeVelocity(i, finite('vx', vx), finite('vy', vy));
   }
 
   /** Adds a force for the next step (cleared after it). */
   applyForce(handle: Handle, fx: number, fy: number): void {
     const i = this.particleIndex(handle);
+    this.wakeParticle(i);
     this.particles.fx[i] += finite('fx', fx);
     this.particles.fy[i] += finite('fy', fy);
   }
@@ -409,6 +501,7 @@ export class World {
   /** Changes the velocity by impulse / mass at once. */
   applyImpulse(handle: Handle, ix: number, iy: number): void {
     const i = this.particleIndex(handle);
+    this.wakeParticle(i);
     const w = this.particles.invMass[i];
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
@@ -418,7 +511,7 @@ export class World {
 
   getMass(handle: Handle): number {
     const i = this.particleIndex(handle);
-    const w = this.particles.flags[i] & ParticleFlag.Pinned ? this.savedInvMassOf(i) : this.particles.invMass[i];
+    const w = this.particles.flags[i] & ParticleFlag.Pinned ? this.savedInvMassOf(i) : this.sleep.awakeInvMass(i, this.particles);
     return w === 0 ? Infinity : 1 / w;
   }
 
@@ -530,6 +623,7 @@ export class World {
   /** Moves a pin's target (a dragged or animated anchor). */
   setPinTarget(pin: Handle, x: number, y: number): void {
     const row = this.constraintRowOf(pin, Kind.Pin, 'pin');
+    this.wakeParticle(this.pins.p[row]);
     this.pins.tx[row] = finite('x', x);
     this.pins.ty[row] = finite('y', y);
   }
@@ -551,6 +645,7 @@ export class World {
 
   removeConstraint(handle: Handle): void {
     const slot = this.constraintIds.slotOf(handle, 'constraint');
+    this.topologyChanged();
     const kind = this.constraintKind[slot] as Kind;
     const row = this.constraintRow[slot];
     if (kind === Kind.Pin && this.pins.compliance[row] === 0) {
@@ -575,7 +670,7 @@ export class World {
   }
 
   get constraintCount(): number {
-    return this.distances.count + this.angles.count + this.pins.count + this.springs.count + this.areas.count;
+    return this.distances.count + this.angles.count + this.pins.count + this.springs.count + this.areas.count + this.grabs.count;
   }
 
   /** Length error of a distance constraint: how far the current length is outside [minLength, maxLength]. */
@@ -621,6 +716,7 @@ export class World {
     this.constraintKind[slot] = kind;
     this.constraintRow[slot] = row;
     table.slot[row] = slot;
+    this.topologyChanged();
     return handle;
   }
 
@@ -631,7 +727,16 @@ export class World {
   }
 
   private tableOf(kind: Kind): Table {
-    return [this.distances, this.angles, this.pins, this.springs, this.areas][kind];
+    return [this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs][kind];
+  }
+
+  /**
+   * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers
+   * floating, and parked masses must not be restored over a changed pin) and the bookkeeping is rebuilt.
+   */
+  private topologyChanged(): void {
+    if (!this.topologyDirty) this.wakeAll();
+    this.topologyDirty = true;
   }
 
   private savedInvMassOf(particle: number): number {
@@ -654,6 +759,8 @@ export class World {
         for (let k = 0; k < t.length[row]; k++) if (t.pool[t.start[row] + k] === i) return true;
         return false;
       }
+      case Kind.Grab:
+        return this.grabs.p0[row] === i || this.grabs.p1[row] === i || this.grabs.p2[row] === i;
     }
   }
 
@@ -681,6 +788,7 @@ export class World {
     this.bodyParticles[slot] = slots;
     this.bodyConstraints[slot] = constraints.slice();
     this.writeCollider(slot, resolved);
+    this.topologyChanged();
     return handle;
   }
 
@@ -743,6 +851,7 @@ export class World {
   /** Removes a body with its particles and constraints. */
   removeBody(handle: Handle): void {
     const slot = this.bodyIds.slotOf(handle, 'body');
+    this.topologyChanged();
     for (const c of this.bodyConstraints[slot]) if (this.constraintIds.isValid(c)) this.removeConstraint(c);
     for (const i of this.bodyParticles[slot]) {
       const h = this.particleIds.handleOf(i);
@@ -808,6 +917,121 @@ export class World {
     for (let slot = 0; slot < this.bodyIds.high; slot++) if (this.bodyIds.alive[slot]) yield this.bodyIds.handleOf(slot);
   }
 
+  // ---- pointer drag and queries ------------------------------------------------------------------------------
+
+  /**
+   * Grabs whatever is at (x, y): a body whose shape contains the point (held at that very point of the body), else
+   * the nearest movable particle within `pickRadius` (cloth, rope). Returns a grab handle for moveGrab/release, or
+   * null when nothing movable is there.
+   */
+  grab(x: number, y: number, options: GrabOptions = {}): Handle | null {
+    finite('x', x);
+    finite('y', y);
+    const stiffness = positive('stiffness', options.stiffness ?? 2000);
+    const pickRadius = nonNegative('pickRadius', options.pickRadius ?? 0.5);
+    if (this.topologyDirty) this.rebuildTopology();
+    const p = this.particles;
+    const c = this.colliders;
+    for (const s of bodiesAtPoint(c, p, x, y)) {
+      const idx = this.bodyParticles[s];
+      const mass = this.bodyMass(s);
+      if (mass === 0) continue;
+      if (c.kind[s] === ColliderKind.Polygon) {
+        // A triangle of the outline's fan holds the point: barycentric weights keep it fixed in the body.
+        for (let k = 1; k + 1 < idx.length; k++) {
+          const w = barycentric(p, idx[0], idx[k], idx[k + 1], x, y);
+          if (w) return this.addGrab(idx[0], idx[k], idx[k + 1], w[0], w[1], w[2], x, y, 1 / (stiffness * mass));
+        }
+      }
+      const nearest = this.nearestParticle(idx, x, y);
+      if (nearest >= 0) return this.addGrab(nearest, nearest, nearest, 1, 0, 0, x, y, p.invMass[nearest] / stiffness);
+    }
+    let best = -1;
+    let bestD2 = pickRadius * pickRadius;
+    for (let i = 0; i < p.count; i++) {
+      if (!p.alive[i] || this.sleep.awakeInvMass(i, p) === 0) continue;
+      const d2 = (p.x[i] - x) ** 2 + (p.y[i] - y) ** 2;
+      if (d2 <= bestD2) [best, bestD2] = [i, d2];
+    }
+    if (best < 0) return null;
+    this.wakeParticle(best);
+    return this.addGrab(best, best, best, 1, 0, 0, x, y, p.invMass[best] / stiffness);
+  }
+
+  /** Moves a grab's target (the pointer). */
+  moveGrab(grab: Handle, x: number, y: number): void {
+    const row = this.constraintRowOf(grab, Kind.Grab, 'grab');
+    this.grabs.tx[row] = finite('x', x);
+    this.grabs.ty[row] = finite('y', y);
+    this.wakeParticle(this.grabs.p0[row]);
+  }
+
+  /** Lets go: the body keeps the velocity the drag gave it (a throw). */
+  release(grab: Handle): void {
+    this.constraintRowOf(grab, Kind.Grab, 'grab');
+    this.removeConstraint(grab);
+  }
+
+  private addGrab(a: number, b: number, c: number, wa: number, wb: number, wc: number, x: number, y: number, compliance: number): Handle {
+    this.wakeParticle(a);
+    const t = this.grabs;
+    const row = t.pushRow();
+    t.p0[row] = a;
+    t.p1[row] = b;
+    t.p2[row] = c;
+    t.w0[row] = wa;
+    t.w1[row] = wb;
+    t.w2[row] = wc;
+    t.tx[row] = x;
+    t.ty[row] = y;
+    t.compliance[row] = compliance;
+    return this.registerConstraint(Kind.Grab, t, row);
+  }
+
+  private bodyMass(slot: number): number {
+    let m = 0;
+    for (const i of this.bodyParticles[slot]) {
+      const w = this.sleep.awakeInvMass(i, this.particles);
+      if (w > 0) m += 1 / w;
+    }
+    return m;
+  }
+
+  private nearestParticle(idx: Int32Array, x: number, y: number): number {
+    const p = this.particles;
+    let best = -1;
+    let bestD2 = Infinity;
+    for (const i of idx) {
+      if (p.invMass[i] === 0 && this.sleep.awakeInvMass(i, p) === 0) continue;
+      const d2 = (p.x[i] - x) ** 2 + (p.y[i] - y) ** 2;
+      if (d2 < bestD2) [best, bestD2] = [i, d2];
+    }
+    return best;
+  }
+
+  /** Bodies whose collision shape contains (x, y), the last created first. */
+  bodiesAtPoint(x: number, y: number): Handle[] {
+    finite('x', x);
+    finite('y', y);
+    if (this.topologyDirty) this.rebuildTopology();
+    return bodiesAtPoint(this.colliders, this.particles, x, y).map(this.bodyHandleOf);
+  }
+
+  /** Bodies whose collision shape overlaps the box. */
+  bodiesInBox(minX: number, minY: number, maxX: number, maxY: number): Handle[] {
+    [minX, minY, maxX, maxY].forEach((v, k) => finite(['minX', 'minY', 'maxX', 'maxY'][k], v));
+    if (this.topologyDirty) this.rebuildTopology();
+    return bodiesInBox(this.colliders, this.particles, minX, minY, maxX, maxY).map(this.bodyHandleOf);
+  }
+
+  /** The nearest body hit by the segment from (x0, y0) to (x1, y1), or null. */
+  rayCast(x0: number, y0: number, x1: number, y1: number): RayCastHit | null {
+    [x0, y0, x1, y1].forEach((v, k) => finite(['x0', 'y0', 'x1', 'y1'][k], v));
+    if (this.topologyDirty) this.rebuildTopology();
+    const hit = rayCast(this.colliders, this.particles, x0, y0, x1, y1);
+    return hit && { body: this.bodyHandleOf(hit.slot), x: hit.x, y: hit.y, normalX: hit.normalX, normalY: hit.normalY, distance: hit.distance };
+  }
+
   // ---- time --------------------------------------------------------------------------------------------------
 
   /** One step of `dt` seconds (the fixed timestep by default), in `substeps` substeps. */
@@ -815,9 +1039,20 @@ export class World {
     if (dt !== this._timestep) positive('dt', dt);
     const n = this._substeps;
     const h = dt / n;
+    if (this.topologyDirty) this.rebuildTopology();
+    if (this.settled) {
+      // Everything sleeps: nothing moves, nothing to compute.
+      this.events.count = 0;
+      this.time += dt;
+      this.stepCount++;
+      return;
+    }
     this.detectCollisions(dt);
-    for (let s = 0; s < n; s++) this.substep(h, s);
+    for (let s = 0; s < n; s++) this.substep(h);
     this.anchors.store(this.contacts);
+    const bodySlots = this.bodyIds.high;
+    this.eventTracker.update(this.contacts, this.contacts.touched, this.bodyHandleOf, this.bodyAlive, this.events);
+    this.sleep.update(bodySlots, this.bodyIds.alive, this.bodyParticlesOf, this.particles, this.contacts, this.contacts.touched, dt);
     this.particles.fx.fill(0, 0, this.particles.count);
     this.particles.fy.fill(0, 0, this.particles.count);
     this.time += dt;
@@ -849,7 +1084,7 @@ export class World {
     return taken;
   }
 
-  private substep(h: number, index: number): void {
+  private substep(h: number): void {
     const h2 = h * h;
     this.accelerate();
     integrate(this.particles, h, 1 / (1 + h * this._damping), this._integrator);
@@ -859,9 +1094,10 @@ export class World {
     this.areas.lambda.fill(0, 0, this.areas.count);
     this.pins.lambdaX.fill(0, 0, this.pins.count);
     this.pins.lambdaY.fill(0, 0, this.pins.count);
-    this.contacts.lambda.fill(0, 0, this.contacts.count);
-    // Sweeps alternate direction so Gauss–Seidel's order bias cancels instead of accumulating.
-    for (let k = 0; k < this._iterations; k++) this.relax(h2, ((index * this._iterations + k) & 1) === 1);
+    this.grabs.lambdaX.fill(0, 0, this.grabs.count);
+    this.grabs.lambdaY.fill(0, 0, this.grabs.count);
+    this.contacts.beginSubstep(this._maxPushSpeed * h);
+    for (let k = 0; k < this._iterations; k++) this.relax(h2);
     updateVelocities(this.particles, h, this._integrator);
     if (this.contacts.count > 0) solveContactVelocities(this.contacts, this.particles);
   }
@@ -879,17 +1115,52 @@ export class World {
   }
 
   /** One Gauss–Seidel sweep over every constraint (seed Algorithm 1), then the bounds. */
-  private relax(h2: number, backward: boolean): void {
+  private relax(h2: number): void {
     const p = this.particles;
     if (this.distances.count > 0) solveDistances(this.distances, p, h2);
     if (this.angles.count > 0) solveAngles(this.angles, p, h2);
     if (this.areas.count > 0) solveAreas(this.areas, p, h2);
     if (this.pins.count > 0) solveSoftPins(this.pins, p, h2);
-    if (this.contacts.count > 0) solveContacts(this.contacts, p, backward);
+    if (this.grabs.count > 0) solveGrabs(this.grabs, p, h2);
+    if (this.contacts.count > 0) solveContacts(this.contacts, p);
     if (this.bounds) keepInBounds(p, this.bounds, this._boundsFriction);
   }
 
   // ---- collision pipeline ------------------------------------------------------------------------------------
+
+  /** Particle → body map, cross-body constraint links and free particles, for sleeping (after any change). */
+  private rebuildTopology(): void {
+    if (this.collidersDirty) this.rebuildColliders();
+    const high = this.bodyIds.high;
+    const p = this.particles;
+    this.sleep.rebuild(high, p.count, (slot) => (this.bodyIds.alive[slot] ? this.bodyParticles[slot] : null));
+    const owner = this.sleep.particleBody;
+    const links: [number, number][] = [];
+    const link = (i: number, j: number) => {
+      const a = owner[i];
+      const b = owner[j];
+      if (a >= 0 && b >= 0 && a !== b) links.push([a, b]);
+    };
+    const d = this.distances;
+    for (let r = 0; r < d.count; r++) link(d.a[r], d.b[r]);
+    const s = this.springs;
+    for (let r = 0; r < s.count; r++) link(s.a[r], s.b[r]);
+    const g = this.angles;
+    for (let r = 0; r < g.count; r++) {
+      link(g.a[r], g.b[r]);
+      link(g.b[r], g.c[r]);
+    }
+    const ar = this.areas;
+    for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) link(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+    this.sleep.setLinks(links);
+    let free = 0;
+    for (let i = 0; i < p.count; i++) if (p.alive[i] && owner[i] < 0 && p.invMass[i] > 0) free++;
+    this.freeMovableParticles = free;
+    let awake = 0;
+    for (let b = 0; b < high; b++) if (this.bodyIds.alive[b] && !this.sleep.asleep[b]) awake++;
+    this.sleep.awakeCount = awake;
+    this.topologyDirty = false;
+  }
 
   /** Broad phase then narrow phase, once per step: the contacts found act in every substep (speculatively). */
   private detectCollisions(dt: number): void {
@@ -914,6 +1185,7 @@ export class World {
       const parts = this.bodyParts[slot];
       return { particles, parts: parts ? parts.map((part) => Int32Array.from(part, (k) => particles[k])) : [particles] };
     });
+    if (this._broadPhase instanceof GridBroadPhase) this._broadPhase.invalidateCellSize();
     this.collidersDirty = false;
   }
 
@@ -954,7 +1226,9 @@ export class World {
 
   private shouldCollide(a: number, b: number): boolean {
     const c = this.colliders;
-    if (c.isStatic[a] && c.isStatic[b]) return false;
+    // Pairs where neither body can move (static or asleep) need no contacts.
+    const asleep = this.sleep.asleep;
+    if ((c.isStatic[a] || asleep[a]) && (c.isStatic[b] || asleep[b])) return false;
     const ga = c.group[a];
     if (ga !== 0 && ga === c.group[b]) return ga > 0;
     return (c.category[a] & c.mask[b]) !== 0 && (c.category[b] & c.mask[a]) !== 0;
@@ -971,8 +1245,9 @@ export class World {
 
   /** The whole state as plain data (structured-cloneable: a worker can post it). */
   snapshot(): WorldSnapshot {
-    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas];
+    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs];
     return {
+      sleep: this.sleep.snapshot(this.bodyIds.high, this.particles.count),
       settings: {
         gravity: { ...this.gravity },
         timestep: this._timestep,
@@ -987,6 +1262,8 @@ export class World {
         broadphase: this.broadphase,
         cellSize: this.cellSize,
         contactSlop: this._contactSlop,
+        sleeping: this.sleep.enabled,
+        maxPushSpeed: this._maxPushSpeed,
       },
       time: this.time,
       stepCount: this.stepCount,
@@ -1018,13 +1295,15 @@ export class World {
       _maxCatchUpSteps: s.settings.maxCatchUpSteps,
       variableStep: s.settings.variableStep,
       _contactSlop: s.settings.contactSlop,
+      _maxPushSpeed: s.settings.maxPushSpeed,
     });
     this.broadphase = s.settings.broadphase;
+    this.sleep.enabled = s.settings.sleeping;
     this.cellSize = s.settings.cellSize;
     this.time = s.time;
     this.stepCount = s.stepCount;
     this.accumulator = s.accumulator;
-    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas];
+    const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs];
     tables.forEach((t, k) => t.restore(s.tables[k].columns, s.tables[k].count));
     this.areas.pool = new Int32Array(Math.max(64, s.areaPool.length));
     this.areas.pool.set(s.areaPool);
@@ -1044,6 +1323,11 @@ export class World {
     });
     this.anchors.restoreSnapshot(s.anchors);
     this.collidersDirty = true;
+    this.topologyDirty = true;
+    this.rebuildTopology();
+    this.sleep.restore(s.sleep);
+    this.eventTracker.clear();
+    this.events.count = 0;
   }
 }
 
@@ -1062,7 +1346,24 @@ export interface WorldSnapshot {
   bodyConstraints: Handle[][];
   bodyParts: (number[][] | undefined)[];
   anchors: { keys: Float64Array; anchors: Float64Array };
+  sleep: Float64Array[];
   colliders: (Float64Array | Uint8Array | Uint32Array | Int32Array)[];
+}
+
+/** Barycentric weights of (x, y) in triangle a, b, c, or null when outside (or degenerate). */
+function barycentric(p: ParticleStore, a: number, b: number, c: number, x: number, y: number): [number, number, number] | null {
+  const v0x = p.x[b] - p.x[a];
+  const v0y = p.y[b] - p.y[a];
+  const v1x = p.x[c] - p.x[a];
+  const v1y = p.y[c] - p.y[a];
+  const v2x = x - p.x[a];
+  const v2y = y - p.y[a];
+  const den = v0x * v1y - v1x * v0y;
+  if (Math.abs(den) < 1e-18) return null;
+  const u = (v2x * v1y - v1x * v2y) / den;
+  const v = (v0x * v2y - v2x * v0y) / den;
+  if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9) return null;
+  return [1 - u - v, u, v];
 }
 
 function makeBroadPhase(kind: 'grid' | 'brute', cellSize: number): BroadPhase {

@@ -6,7 +6,7 @@ describe('constraints', () => {
   it('a small-amplitude pendulum has period 2π√(L/g) within 1%', () => {
     const L = 2;
     const g = 9.81;
-    const world = new World({ gravity: { x: 0, y: g } });
+    const world = new World({ gravity: { x: 0, y: g }, sleeping: false });
     const pivot = world.addParticle({ x: 0, y: 0, mass: Infinity });
     const amplitude = 0.05;
     const bob = world.addParticle({ x: L * Math.sin(amplitude), y: L * Math.cos(amplitude) });
@@ -28,7 +28,7 @@ describe('constraints', () => {
   });
 
   it('a 50-link rope hanging 10 s stretches < 1% and its energy never grows', () => {
-    const world = new World({ gravity: { x: 0, y: 10 } });
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     // Hanging, slightly off vertical so it swings.
     const rope = createRope(world, { from: { x: 0, y: 0 }, to: { x: 3, y: 9.5 }, segments: 50, ropeLike: false });
     const links = rope.constraints.slice(0, 50);
@@ -50,7 +50,7 @@ describe('constraints', () => {
   });
 
   it('a rope released horizontally whips but keeps its links within 5%, and ends within 1%', () => {
-    const world = new World({ gravity: { x: 0, y: 10 } });
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     const rope = createRope(world, { from: { x: 0, y: 0 }, to: { x: 10, y: 0 }, segments: 50, ropeLike: false });
     let worst = 0;
     for (let k = 0; k < 600; k++) {
@@ -63,7 +63,8 @@ describe('constraints', () => {
   });
 
   it('a 30×30 cloth pinned at two corners runs 10,000 steps with its pins exactly fixed and no NaN', () => {
-    const world = new World({ gravity: { x: 0, y: 10 } });
+    // Sleeping off: the cloth must stay sound through all 10,000 steps, not fall asleep after a few seconds.
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     const cloth = createCloth(world, { origin: { x: -7.25, y: 0 }, columns: 30, rows: 30, spacing: 0.5, pins: 'corners', shear: 0.0001 });
     const left = cloth.particles[0];
     const right = cloth.particles[29];
@@ -93,7 +94,7 @@ describe('constraints', () => {
   it('compliance means the same stiffness whatever the substep and iteration counts (XPBD)', () => {
     // A mass hanging from a compliant link stretches by m·g·compliance at rest.
     const stretch = (substeps: number, iterations: number) => {
-      const world = new World({ gravity: { x: 0, y: 10 }, substeps, iterations, damping: 2 });
+      const world = new World({ gravity: { x: 0, y: 10 }, substeps, iterations, damping: 2, sleeping: false });
       const top = world.addParticle({ x: 0, y: 0, mass: Infinity });
       const bob = world.addParticle({ x: 0, y: 1, mass: 2 });
       world.addDistance(top, bob, { compliance: 0.01 });
@@ -120,7 +121,7 @@ describe('constraints', () => {
   });
 
   it('an angle limit holds within 0.02 rad under load', () => {
-    const world = new World({ gravity: { x: 0, y: 10 } });
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     const a = world.addParticle({ x: -1, y: 0, mass: Infinity });
     const b = world.addParticle({ x: 0, y: 0, mass: Infinity });
     const c = world.addParticle({ x: 1, y: 0, mass: 5 });

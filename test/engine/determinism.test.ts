@@ -2,7 +2,7 @@ import { expect } from '@open-wc/testing';
 import { World, createCloth, createRagdoll, createRope, createSoftBody, createBox } from '../../src/engine/index.js';
 
 function busyWorld(): World {
-  const world = new World({ gravity: { x: 0.5, y: 10 }, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 } });
+  const world = new World({ gravity: { x: 0.5, y: 10 }, sleeping: false, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 } });
   createCloth(world, { origin: { x: -5, y: -10 }, columns: 12, rows: 10, spacing: 0.4, pins: 'corners', shear: 1e-4, bend: 1e-3 });
   createRope(world, { from: { x: 8, y: -10 }, to: { x: 15, y: -10 }, segments: 20 });
   createRagdoll(world, { x: -12, y: 0 });

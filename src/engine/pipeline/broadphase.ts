@@ -165,8 +165,20 @@ export class GridBroadPhase implements BroadPhase {
     return false;
   }
 
+  private autoCellSize = 0;
+
+  /** The bodies changed: choose the automatic cell size again at the next step. */
+  invalidateCellSize(): void {
+    this.autoCellSize = 0;
+  }
+
   private chooseCellSize(c: Colliders): number {
     if (this.cellSize > 0) return this.cellSize;
+    if (this.autoCellSize === 0) this.autoCellSize = this.medianCellSize(c);
+    return this.autoCellSize;
+  }
+
+  private medianCellSize(c: Colliders): number {
     const n = c.activeCount;
     this.extents = grown(this.extents, n);
     let m = 0;

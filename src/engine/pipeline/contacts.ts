@@ -18,7 +18,7 @@ import type { ParticleStore } from '../particles.js';
  * to μ times the normal correction of this substep (static friction when it all fits, kinetic otherwise).
  */
 export class Contacts extends Table {
-  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'anchor'] as const;
+  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'anchor', 'touched', 'allowance'] as const;
   v = new Int32Array(16);
   e0 = new Int32Array(16);
   e1 = new Int32Array(16);
@@ -42,6 +42,15 @@ export class Contacts extends Table {
    * friction pulls the vertex back to its anchor, and the anchor moves only when the contact slips.
    */
   anchor = new Float64Array(16);
+  /** 1 once the contact has acted (the bodies touched) during this step. */
+  touched = new Uint8Array(16);
+  /**
+   * Overlap the contact tolerates in the current substep. It starts at the overlap found at detection and shrinks by
+   * the most the contact may push out per substep, so an old deep overlap is recovered at a bounded speed instead of
+   * in one substep (which would turn depth / h into velocity and throw bodies at their neighbours), while overlap
+   * created by motion during the step is still undone at once (nothing tunnels).
+   */
+  allowance = new Float64Array(16);
 
   add(v: number, e0: number, e1: number, radius: number, friction: number, restitution: number, bodyA: number, bodyB: number, nx: number, ny: number, depth: number): void {
     if (this.count === this.v.length) this.reserve(1);
@@ -60,6 +69,18 @@ export class Contacts extends Table {
     this.depth[i] = depth;
     this.normalSpeed[i] = 0;
     this.anchor[i] = NaN;
+    this.touched[i] = 0;
+    this.allowance[i] = depth > 0 ? depth : 0;
+  }
+
+  /** Start of a substep: no correction yet, and each old overlap may shrink by up to `maxPush` more. */
+  beginSubstep(maxPush: number): void {
+    const { lambda, allowance } = this;
+    for (let i = 0, n = this.count; i < n; i++) {
+      lambda[i] = 0;
+      const a = allowance[i] - maxPush;
+      allowance[i] = a > 0 ? a : 0;
+    }
   }
 }
 
@@ -133,13 +154,11 @@ function hashOf(key: number): number {
 /** How far past an edge's ends (as a fraction of its length) a vertex still counts as touching it. */
 const EDGE_OVERHANG = 0.05;
 
-/** `backward` sweeps the contacts in reverse order (alternated per substep so Gauss–Seidel's order bias cancels). */
-export function solveContacts(c: Contacts, p: ParticleStore, backward = false): void {
+export function solveContacts(c: Contacts, p: ParticleStore): void {
   const { x, y, px, py, invMass } = p;
-  const { v, e0, e1, radius, friction, lambda, anchor } = c;
+  const { v, e0, e1, radius, friction, lambda, anchor, allowance } = c;
   const n = c.count;
-  for (let k = 0; k < n; k++) {
-    const i = backward ? n - 1 - k : k;
+  for (let i = 0; i < n; i++) {
     const iv = v[i];
     const i0 = e0[i];
     const i1 = e1[i];
@@ -155,10 +174,11 @@ export function solveContacts(c: Contacts, p: ParticleStore, backward = false): 
       const ny = -ex * inv;
       const rx = x[iv] - x[i0];
       const ry = y[iv] - y[i0];
-      const sep = rx * nx + ry * ny - radius[i];
+      const sep = rx * nx + ry * ny - radius[i] + allowance[i];
       if (sep >= 0) continue;
       let alpha = (rx * ex + ry * ey) / len2;
       if (alpha < -EDGE_OVERHANG || alpha > 1 + EDGE_OVERHANG) continue;
+      c.touched[i] = 1;
       alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
       const beta = 1 - alpha;
       const w1 = invMass[i1];
@@ -190,10 +210,11 @@ export function solveContacts(c: Contacts, p: ParticleStore, backward = false): 
       let nx = x[iv] - x[i0];
       let ny = y[iv] - y[i0];
       const d2 = nx * nx + ny * ny;
-      const r = radius[i];
+      const r = radius[i] - allowance[i];
       if (d2 >= r * r) continue;
       const w = wv + w0;
       if (w === 0) continue;
+      c.touched[i] = 1;
       const d = Math.sqrt(d2);
       if (d > 1e-12) {
         nx /= d;
@@ -273,37 +294,65 @@ export function recordApproachSpeeds(c: Contacts, p: ParticleStore): void {
 }
 
 /**
- * The velocity pass after a substep (Müller et al. 2020): for every contact that acted in this substep, the
- * relative normal velocity becomes −e·(approach speed) for a bouncing impact and 0 otherwise. Without it, pushing
- * a penetration out within one substep of length h would leave the bodies flying apart at depth / h.
+ * The velocity pass after a substep (Müller et al. 2020): for every contact that acted in this substep, the relative
+ * normal velocity becomes −e·(approach speed) for an impact that bounces and 0 otherwise. Without it, pushing a
+ * penetration out within one substep of length h would leave the bodies flying apart at depth / h, and resting
+ * stacks would keep a residual normal jitter that lets them creep.
  */
 export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
-  const { vx, vy, invMass } = p;
+  const { x, y, vx, vy, invMass } = p;
+  const { v, e0, e1, lambda, restitution, normalSpeed } = c;
   for (let i = 0, n = c.count; i < n; i++) {
-    if (c.lambda[i] <= 0) continue;
-    const vn = normalVelocity(c, p, i, scratch);
-    const nx = scratch[0];
-    const ny = scratch[1];
-    const alpha = scratch[2];
-    let target = 0;
-    const approach = c.normalSpeed[i];
-    if (c.restitution[i] > 0 && approach < -BOUNCE_THRESHOLD) {
-      target = -c.restitution[i] * approach;
-      c.normalSpeed[i] = 0; // bounce once per impact
-    }
-    const iv = c.v[i];
-    const i0 = c.e0[i];
-    const i1 = c.e1[i];
-    const beta = 1 - alpha;
+    if (lambda[i] <= 0) continue;
+    const iv = v[i];
+    const i0 = e0[i];
+    const i1 = e1[i];
     const wv = invMass[iv];
     const w0 = invMass[i0];
-    const w1 = i1 >= 0 ? invMass[i1] : 0;
-    const w = i1 >= 0 ? wv + beta * beta * w0 + alpha * alpha * w1 : wv + w0;
+    let nx: number;
+    let ny: number;
+    let alpha = 0;
+    let vn: number;
+    let w: number;
+    if (i1 >= 0) {
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const len2 = ex * ex + ey * ey;
+      if (len2 < 1e-24) continue;
+      const inv = 1 / Math.sqrt(len2);
+      nx = ey * inv;
+      ny = -ex * inv;
+      alpha = ((x[iv] - x[i0]) * ex + (y[iv] - y[i0]) * ey) / len2;
+      alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+      const beta = 1 - alpha;
+      vn = (vx[iv] - beta * vx[i0] - alpha * vx[i1]) * nx + (vy[iv] - beta * vy[i0] - alpha * vy[i1]) * ny;
+      w = wv + beta * beta * w0 + alpha * alpha * invMass[i1];
+    } else {
+      nx = x[iv] - x[i0];
+      ny = y[iv] - y[i0];
+      const d = Math.sqrt(nx * nx + ny * ny);
+      if (d > 1e-12) {
+        nx /= d;
+        ny /= d;
+      } else {
+        nx = c.nx[i];
+        ny = c.ny[i];
+      }
+      vn = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
+      w = wv + w0;
+    }
     if (w === 0) continue;
+    let target = 0;
+    if (restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD) {
+      target = -restitution[i] * normalSpeed[i];
+      normalSpeed[i] = 0; // bounce once per impact
+    }
     const dl = (target - vn) / w;
     vx[iv] += wv * dl * nx;
     vy[iv] += wv * dl * ny;
     if (i1 >= 0) {
+      const beta = 1 - alpha;
+      const w1 = invMass[i1];
       vx[i0] -= w0 * beta * dl * nx;
       vy[i0] -= w0 * beta * dl * ny;
       vx[i1] -= w1 * alpha * dl * nx;

@@ -1,0 +1,171 @@
+import { grown } from '../table.js';
+import type { ParticleStore } from '../particles.js';
+import type { Contacts } from './contacts.js';
+
+/**
+ * Sleeping: bodies that have all moved slower than `speedThreshold` for `timeToSleep` seconds, together with every
+ * body they touch or are constrained to (their island), stop being simulated. A sleeping body's particles park their
+ * inverse mass, so they cost nothing and act as static to whatever touches them; touching an awake body wakes the
+ * island again, and so does anything the user does to it. When every body sleeps, a step does no work at all.
+ */
+export class Sleep {
+  enabled = true;
+  speedThreshold = 0.05;
+  timeToSleep = 0.5;
+
+  /** Per body slot. */
+  sleepTime = new Float64Array(16);
+  asleep = new Uint8Array(16);
+  /** 1 for bodies that take part (live, with at least one movable particle when awake). */
+  dynamic = new Uint8Array(16);
+  private parent = new Int32Array(16);
+  private islandMin = new Float64Array(16);
+  /** Per particle: owning body slot (−1 for none) and inverse mass parked while asleep. */
+  particleBody = new Int32Array(16);
+  parkedInvMass = new Float64Array(16);
+  /** Body pairs joined by constraints that span two bodies. */
+  private linksA = new Int32Array(16);
+  private linksB = new Int32Array(16);
+  private linkCount = 0;
+  awakeCount = 0;
+
+  /** Rebuilds the particle → body map and the cross-body links (outside step(), when the topology changed). */
+  rebuild(slots: number, particleCount: number, bodyParticles: (slot: number) => Int32Array | null): void {
+    for (const name of ['sleepTime', 'asleep', 'dynamic', 'parent', 'islandMin'] as const) {
+      (this as unknown as Record<string, Float64Array>)[name] = grown((this as unknown as Record<string, Float64Array>)[name], slots);
+    }
+    this.particleBody = grown(this.particleBody, particleCount);
+    this.parkedInvMass = grown(this.parkedInvMass, particleCount);
+    this.particleBody.fill(-1, 0, particleCount);
+    for (let s = 0; s < slots; s++) {
+      const idx = bodyParticles(s);
+      if (idx) for (const i of idx) this.particleBody[i] = s;
+    }
+  }
+
+  /** Body pairs joined by a constraint that spans two bodies (joints, springs between bodies). */
+  setLinks(links: [number, number][]): void {
+    this.linksA = grown(this.linksA, links.length);
+    this.linksB = grown(this.linksB, links.length);
+    this.linkCount = 0;
+    for (const [a, b] of links) {
+      this.linksA[this.linkCount] = a;
+      this.linksB[this.linkCount++] = b;
+    }
+  }
+
+  private find(s: number): number {
+    const parent = this.parent;
+    while (parent[s] !== s) {
+      parent[s] = parent[parent[s]];
+      s = parent[s];
+    }
+    return s;
+  }
+
+  private union(a: number, b: number): void {
+    const ra = this.find(a);
+    const rb = this.find(b);
+    if (ra !== rb) this.parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
+  }
+
+  /**
+   * After a step: update each body's still-time, wake sleeping bodies that an awake body touched, group bodies
+   * into islands and put islands that have all been still long enough to sleep.
+   */
+  update(slots: number, alive: Uint8Array, bodyParticles: (slot: number) => Int32Array, p: ParticleStore, c: Contacts, touched: Uint8Array, dt: number): void {
+    if (!this.enabled) return;
+    const { vx, vy, invMass } = p;
+    const limit2 = this.speedThreshold * this.speedThreshold;
+    for (let s = 0; s < slots; s++) {
+      this.parent[s] = s;
+      if (!alive[s] || this.asleep[s]) continue;
+      const idx = bodyParticles(s);
+      let fastest = 0;
+      let movable = 0;
+      for (let k = 0; k < idx.length; k++) {
+        const i = idx[k];
+        if (invMass[i] === 0) continue;
+        movable = 1;
+        const v2 = vx[i] * vx[i] + vy[i] * vy[i];
+        if (v2 > fastest) fastest = v2;
+      }
+      this.dynamic[s] = movable;
+      this.sleepTime[s] = movable && fastest < limit2 ? this.sleepTime[s] + dt : 0;
+    }
+    // Contacts join islands; an awake body touching a sleeping one wakes it.
+    for (let i = 0; i < c.count; i++) {
+      if (!touched[i]) continue;
+      const a = c.bodyA[i];
+      const b = c.bodyB[i];
+      if (this.asleep[a] && !this.asleep[b] && this.dynamic[b]) this.wakeBody(a, bodyParticles(a), p);
+      if (this.asleep[b] && !this.asleep[a] && this.dynamic[a]) this.wakeBody(b, bodyParticles(b), p);
+      if (this.dynamic[a] && this.dynamic[b]) this.union(a, b);
+    }
+    for (let k = 0; k < this.linkCount; k++) {
+      const a = this.linksA[k];
+      const b = this.linksB[k];
+      if (this.asleep[a] !== this.asleep[b]) {
+        this.wakeBody(a, bodyParticles(a), p);
+        this.wakeBody(b, bodyParticles(b), p);
+      }
+      this.union(a, b);
+    }
+    // An island sleeps when its least-still body has been still long enough.
+    this.islandMin.fill(Infinity, 0, slots);
+    for (let s = 0; s < slots; s++) {
+      if (!alive[s] || !this.dynamic[s] || this.asleep[s]) continue;
+      const r = this.find(s);
+      if (this.sleepTime[s] < this.islandMin[r]) this.islandMin[r] = this.sleepTime[s];
+    }
+    this.awakeCount = 0;
+    for (let s = 0; s < slots; s++) {
+      if (!alive[s] || !this.dynamic[s] || this.asleep[s]) continue;
+      if (this.islandMin[this.find(s)] >= this.timeToSleep) this.sleepBody(s, bodyParticles(s), p);
+      else this.awakeCount++;
+    }
+  }
+
+  private sleepBody(s: number, idx: Int32Array, p: ParticleStore): void {
+    this.asleep[s] = 1;
+    for (let k = 0; k < idx.length; k++) {
+      const i = idx[k];
+      this.parkedInvMass[i] = p.invMass[i];
+      p.invMass[i] = 0;
+      p.vx[i] = p.vy[i] = 0;
+      p.px[i] = p.x[i];
+      p.py[i] = p.y[i];
+    }
+  }
+
+  wakeBody(s: number, idx: Int32Array, p: ParticleStore): void {
+    this.sleepTime[s] = 0;
+    if (!this.asleep[s]) return;
+    this.asleep[s] = 0;
+    this.awakeCount++;
+    for (let k = 0; k < idx.length; k++) {
+      const i = idx[k];
+      p.invMass[i] = this.parkedInvMass[i];
+    }
+  }
+
+  snapshot(slots: number, particles: number): Float64Array[] {
+    return [this.sleepTime.slice(0, slots), Float64Array.from(this.asleep.subarray(0, slots)), this.parkedInvMass.slice(0, particles), Float64Array.of(this.awakeCount)];
+  }
+
+  restore(s: Float64Array[]): void {
+    this.sleepTime = grown(new Float64Array(16), s[0].length);
+    this.sleepTime.set(s[0]);
+    this.asleep = grown(new Uint8Array(16), s[1].length);
+    this.asleep.set(s[1]);
+    this.parkedInvMass = grown(new Float64Array(16), s[2].length);
+    this.parkedInvMass.set(s[2]);
+    this.awakeCount = s[3][0];
+  }
+
+  /** Inverse mass a particle has when awake (its parked value while its body sleeps). */
+  awakeInvMass(i: number, p: ParticleStore): number {
+    const s = this.particleBody[i];
+    return s >= 0 && this.asleep[s] ? this.parkedInvMass[i] : p.invMass[i];
+  }
+}

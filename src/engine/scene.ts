@@ -1,0 +1,69 @@
+// Scenes as plain data: what the worker loads, what <physics-scene> markup turns into, and what the catalogue of
+// named scenes produces for tests, benchmarks and the demo. buildScene() turns a description into bodies.
+import { World, type Handle, type WorldOptions } from './world.js';
+import { createBox, createPolygon, type BoxOptions, type PolygonOptions } from './builders/rigid.js';
+import { createCircle, type CircleOptions } from './builders/circle.js';
+import { createRope, type RopeOptions } from './builders/rope.js';
+import { createCloth, type ClothOptions } from './builders/cloth.js';
+import { createSoftBody, type SoftBodyOptions } from './builders/softbody.js';
+import { createRagdoll, type RagdollOptions } from './builders/ragdoll.js';
+import type { Built } from './builders/common.js';
+import { describeValue } from './validate.js';
+
+/** Fields every body description may carry besides its builder's options. */
+interface Described {
+  /** Names the body for joints, events and updates. */
+  id?: string;
+  /** Drawing style, used by the renderer (CSS colours). */
+  fill?: string;
+  stroke?: string;
+}
+
+export type BodyDescription =
+  | ({ type: 'box' } & BoxOptions & Described)
+  | ({ type: 'circle' } & CircleOptions & Described)
+  | ({ type: 'polygon' } & PolygonOptions & Described)
+  | ({ type: 'rope' } & RopeOptions & Described)
+  | ({ type: 'cloth' } & ClothOptions & Described)
+  | ({ type: 'softbody' } & SoftBodyOptions & Described)
+  | ({ type: 'ragdoll' } & RagdollOptions & Described);
+
+export type BodyType = BodyDescription['type'];
+export const BODY_TYPES: readonly BodyType[] = ['box', 'circle', 'polygon', 'rope', 'cloth', 'softbody', 'ragdoll'];
+
+export interface SceneDescription {
+  world?: WorldOptions;
+  bodies: BodyDescription[];
+}
+
+/** Adds one described body to the world. */
+export function buildBody(world: World, d: BodyDescription): Built {
+  if (d == null || typeof d !== 'object') throw new TypeError(`a body description must be an object, got ${describeValue(d)}`);
+  switch (d.type) {
+    case 'box':
+      return createBox(world, d);
+    case 'circle':
+      return createCircle(world, d);
+    case 'polygon':
+      return createPolygon(world, d);
+    case 'rope':
+      return createRope(world, d);
+    case 'cloth':
+      return createCloth(world, d);
+    case 'softbody':
+      return createSoftBody(world, d);
+    case 'ragdoll':
+      return createRagdoll(world, d);
+    default:
+      throw new RangeError(`type must be one of ${BODY_TYPES.join(', ')}, got ${describeValue((d as { type: unknown }).type)}`);
+  }
+}
+
+/** A new world holding the scene. Returns the world and the bodies in description order. */
+export function buildScene(description: SceneDescription): { world: World; bodies: Built[]; byId: Map<string, Handle> } {
+  const world = new World(description.world);
+  const bodies = description.bodies.map((d) => buildBody(world, d));
+  const byId = new Map<string, Handle>();
+  description.bodies.forEach((d, k) => d.id && byId.set(d.id, bodies[k].body));
+  return { world, bodies, byId };
+}
