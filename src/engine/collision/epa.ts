@@ -13,46 +13,30 @@ import { shapeSize, type Shape } from './shape.js';
 /** Convergence: the support along the closest edge's normal is within this fraction of the shapes' size of it. */
 const EPA_TOLERANCE = 1e-10;
 
-// The polytope, counter-clockwise: CSO vertices with their points on A and B, and for edge i (vertex i to i + 1)
-// its outward unit normal and distance from the origin.
-let px = new Float64Array(32);
-let py = new Float64Array(32);
-let pax = new Float64Array(32);
-let pay = new Float64Array(32);
-let pbx = new Float64Array(32);
-let pby = new Float64Array(32);
-let enx = new Float64Array(32);
-let eny = new Float64Array(32);
-let ed = new Float64Array(32);
+// The polytope, counter-clockwise, in one interleaved array (inserting a vertex is one copyWithin): per vertex i,
+// the CSO point (X, Y), its points on A (AX, AY) and B (BX, BY), and for edge i (vertex i to i + 1) its outward unit
+// normal (NX, NY) and distance D from the origin.
+const X = 0, Y = 1, AX = 2, AY = 3, BX = 4, BY = 5, NX = 6, NY = 7, D = 8, S = 9;
+let poly = new Float64Array(32 * S);
 let n = 0;
 
 function reserve(size: number): void {
-  if (size <= px.length) return;
-  let cap = px.length;
-  while (cap < size) cap *= 2;
-  const grow = (a: Float64Array) => {
-    const b = new Float64Array(cap);
-    b.set(a);
-    return b;
-  };
-  px = grow(px);
-  py = grow(py);
-  pax = grow(pax);
-  pay = grow(pay);
-  pbx = grow(pbx);
-  pby = grow(pby);
-  enx = grow(enx);
-  eny = grow(eny);
-  ed = grow(ed);
+  if (size * S <= poly.length) return;
+  let cap = poly.length;
+  while (cap < size * S) cap *= 2;
+  const next = new Float64Array(cap);
+  next.set(poly);
+  poly = next;
 }
 
 function setVertex(k: number, x: number, y: number, ax: number, ay: number, bx: number, by: number): void {
-  px[k] = x;
-  py[k] = y;
-  pax[k] = ax;
-  pay[k] = ay;
-  pbx[k] = bx;
-  pby[k] = by;
+  const o = k * S;
+  poly[o + X] = x;
+  poly[o + Y] = y;
+  poly[o + AX] = ax;
+  poly[o + AY] = ay;
+  poly[o + BX] = bx;
+  poly[o + BY] = by;
 }
 
 function pushSupport(k: number): void {
@@ -65,21 +49,22 @@ function pushSupport(k: number): void {
 
 /** Outward normal and origin distance of edge i; false for a zero-length edge. */
 function computeEdge(i: number): boolean {
-  const j = i + 1 === n ? 0 : i + 1;
-  const ex = px[j] - px[i];
-  const ey = py[j] - py[i];
+  const o = i * S;
+  const q = (i + 1 === n ? 0 : i + 1) * S;
+  const ex = poly[q + X] - poly[o + X];
+  const ey = poly[q + Y] - poly[o + Y];
   const len = Math.sqrt(ex * ex + ey * ey);
   if (len === 0) {
-    enx[i] = 0;
-    eny[i] = 0;
-    ed[i] = Infinity;
+    poly[o + NX] = 0;
+    poly[o + NY] = 0;
+    poly[o + D] = Infinity;
     return false;
   }
   const nx = ey / len;
   const ny = -ex / len;
-  enx[i] = nx;
-  eny[i] = ny;
-  ed[i] = nx * px[i] + ny * py[i];
+  poly[o + NX] = nx;
+  poly[o + NY] = ny;
+  poly[o + D] = nx * poly[o + X] + ny * poly[o + Y];
   return true;
 }
 
@@ -99,7 +84,13 @@ export function epa(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boo
 
 /** EPA on A − B with radii 0 (polygons, segments, and the cores of rounded shapes). */
 function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boolean {
-  const scale = shapeSize(a) + shapeSize(b);
+  // Size of A − B for the relative tolerance: its simplex's extent (support points), else the shapes' sizes.
+  let scale = 0;
+  for (let k = 0; k < simplex.count; k++) {
+    const m = Math.abs(simplex.x[k]) + Math.abs(simplex.y[k]);
+    if (m > scale) scale = m;
+  }
+  if (!(scale > 0)) scale = shapeSize(a) + shapeSize(b);
   const tol = EPA_TOLERANCE * scale;
   reserve(8);
   if (!initPolytope(a, b, simplex, tol)) {
@@ -112,35 +103,25 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
   }
   const cap = 64 + a.count + b.count;
   reserve(n + cap + 1);
-  let best = 0;
+  const P = poly;
   for (let iter = 0; iter < cap; iter++) {
     // Closest edge to the origin.
-    best = 0;
-    let dmin = ed[0];
-    for (let i = 1; i < n; i++) {
-      if (ed[i] < dmin) {
-        dmin = ed[i];
+    let best = 0;
+    let dmin = P[D];
+    for (let i = 1, o = S + D; i < n; i++, o += S) {
+      if (P[o] < dmin) {
+        dmin = P[o];
         best = i;
       }
     }
-    const nx = enx[best];
-    const ny = eny[best];
+    const nx = P[best * S + NX];
+    const ny = P[best * S + NY];
     supportAB(a, b, nx, ny, 0, 0);
     const sx = supportAX() - supportBX();
     const sy = supportAY() - supportBY();
     if (sx * nx + sy * ny - dmin <= tol) break;
     // Insert the support point between the closest edge's endpoints.
-    for (let k = n; k > best + 1; k--) {
-      px[k] = px[k - 1];
-      py[k] = py[k - 1];
-      pax[k] = pax[k - 1];
-      pay[k] = pay[k - 1];
-      pbx[k] = pbx[k - 1];
-      pby[k] = pby[k - 1];
-      enx[k] = enx[k - 1];
-      eny[k] = eny[k - 1];
-      ed[k] = ed[k - 1];
-    }
+    P.copyWithin((best + 2) * S, (best + 1) * S, n * S);
     n++;
     pushSupport(best + 1);
     computeEdge(best);
@@ -148,25 +129,26 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
   }
   // Result from the closest edge: depth, normal, and the witness points by the origin's projection onto the edge.
   let i = 0;
-  let depth = ed[0];
+  let depth = P[D];
   for (let k = 1; k < n; k++) {
-    if (ed[k] < depth) {
-      depth = ed[k];
+    if (P[k * S + D] < depth) {
+      depth = P[k * S + D];
       i = k;
     }
   }
-  const j = i + 1 === n ? 0 : i + 1;
-  const ex = px[j] - px[i];
-  const ey = py[j] - py[i];
-  let t = -(px[i] * ex + py[i] * ey) / (ex * ex + ey * ey);
+  const o = i * S;
+  const q = (i + 1 === n ? 0 : i + 1) * S;
+  const ex = P[q + X] - P[o + X];
+  const ey = P[q + Y] - P[o + Y];
+  let t = -(P[o + X] * ex + P[o + Y] * ey) / (ex * ex + ey * ey);
   if (!(t > 0)) t = 0;
   else if (t > 1) t = 1;
-  const qax = pax[i] + t * (pax[j] - pax[i]);
-  const qay = pay[i] + t * (pay[j] - pay[i]);
-  const qbx = pbx[i] + t * (pbx[j] - pbx[i]);
-  const qby = pby[i] + t * (pby[j] - pby[i]);
-  out.normalX = enx[i];
-  out.normalY = eny[i];
+  const qax = P[o + AX] + t * (P[q + AX] - P[o + AX]);
+  const qay = P[o + AY] + t * (P[q + AY] - P[o + AY]);
+  const qbx = P[o + BX] + t * (P[q + BX] - P[o + BX]);
+  const qby = P[o + BY] + t * (P[q + BY] - P[o + BY]);
+  out.normalX = P[o + NX];
+  out.normalY = P[o + NY];
   out.depth = depth > 0 ? depth : 0;
   out.pointX = 0.5 * (qax + qbx);
   out.pointY = 0.5 * (qay + qby);
@@ -182,14 +164,14 @@ function initPolytope(a: Shape, b: Shape, s: Simplex, tol: number): boolean {
   n = s.count;
   for (let k = 0; k < n; k++) setVertex(k, s.x[k], s.y[k], s.ax[k], s.ay[k], s.bx[k], s.by[k]);
   if (n === 3) {
-    const cross = (px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0]);
-    const e1 = Math.abs(px[1] - px[0]) + Math.abs(py[1] - py[0]);
-    const e2 = Math.abs(px[2] - px[0]) + Math.abs(py[2] - py[0]);
+    const cross = (poly[1 * S + X] - poly[0 * S + X]) * (poly[2 * S + Y] - poly[0 * S + Y]) - (poly[1 * S + Y] - poly[0 * S + Y]) * (poly[2 * S + X] - poly[0 * S + X]);
+    const e1 = Math.abs(poly[1 * S + X] - poly[0 * S + X]) + Math.abs(poly[1 * S + Y] - poly[0 * S + Y]);
+    const e2 = Math.abs(poly[2 * S + X] - poly[0 * S + X]) + Math.abs(poly[2 * S + Y] - poly[0 * S + Y]);
     if (Math.abs(cross) <= tol * (e1 + e2)) {
       // Collinear: keep the two points farthest apart.
-      const d01 = (px[1] - px[0]) ** 2 + (py[1] - py[0]) ** 2;
-      const d02 = (px[2] - px[0]) ** 2 + (py[2] - py[0]) ** 2;
-      const d12 = (px[2] - px[1]) ** 2 + (py[2] - py[1]) ** 2;
+      const d01 = (poly[1 * S + X] - poly[0 * S + X]) ** 2 + (poly[1 * S + Y] - poly[0 * S + Y]) ** 2;
+      const d02 = (poly[2 * S + X] - poly[0 * S + X]) ** 2 + (poly[2 * S + Y] - poly[0 * S + Y]) ** 2;
+      const d12 = (poly[2 * S + X] - poly[1 * S + X]) ** 2 + (poly[2 * S + Y] - poly[1 * S + Y]) ** 2;
       if (d02 >= d01 && d02 >= d12) copyVertex(1, 2);
       else if (d12 >= d01 && d12 >= d02) copyVertex(0, 2);
       n = 2;
@@ -198,17 +180,17 @@ function initPolytope(a: Shape, b: Shape, s: Simplex, tol: number): boolean {
     }
   }
   // A lone point at the origin tells nothing (and is no support point): start from a support point instead.
-  if (n === 1 && Math.abs(px[0]) + Math.abs(py[0]) <= tol) n = 0;
+  if (n === 1 && Math.abs(poly[0 * S + X]) + Math.abs(poly[0 * S + Y]) <= tol) n = 0;
   if (n === 0) {
     supportAB(a, b, 1, 0, 0, 0);
     pushSupport(0);
     n = 1;
   }
-  if (n === 2 && Math.abs(px[1] - px[0]) + Math.abs(py[1] - py[0]) <= tol) n = 1;
+  if (n === 2 && Math.abs(poly[1 * S + X] - poly[0 * S + X]) + Math.abs(poly[1 * S + Y] - poly[0 * S + Y]) <= tol) n = 1;
   if (n === 1) {
     // A point: add the support point opposite to it (or along ±x, ±y when it is the origin).
-    const x0 = px[0];
-    const y0 = py[0];
+    const x0 = poly[0 * S + X];
+    const y0 = poly[0 * S + Y];
     const len = Math.sqrt(x0 * x0 + y0 * y0);
     let found = false;
     for (let attempt = 0; attempt < 5 && !found; attempt++) {
@@ -235,20 +217,20 @@ function initPolytope(a: Shape, b: Shape, s: Simplex, tol: number): boolean {
   }
   if (n === 2) {
     // A segment: add the support points on both sides of it; keep those off the line.
-    const ex = px[1] - px[0];
-    const ey = py[1] - py[0];
+    const ex = poly[1 * S + X] - poly[0 * S + X];
+    const ey = poly[1 * S + Y] - poly[0 * S + Y];
     const len = Math.sqrt(ex * ex + ey * ey);
     const nx = -ey / len; // left of p0 → p1
     const ny = ex / len;
     supportAB(a, b, nx, ny, 0, 0);
     const lx = supportAX() - supportBX();
     const ly = supportAY() - supportBY();
-    const hl = (lx - px[0]) * nx + (ly - py[0]) * ny;
+    const hl = (lx - poly[0 * S + X]) * nx + (ly - poly[0 * S + Y]) * ny;
     const lax = supportAX(), lay = supportAY(), lbx = supportBX(), lby = supportBY();
     supportAB(a, b, -nx, -ny, 0, 0);
     const rx = supportAX() - supportBX();
     const ry = supportAY() - supportBY();
-    const hr = -((rx - px[0]) * nx + (ry - py[0]) * ny);
+    const hr = -((rx - poly[0 * S + X]) * nx + (ry - poly[0 * S + Y]) * ny);
     if (hl <= tol && hr <= tol) return false; // A − B is flat
     // Counter-clockwise: p0, [right point], p1, [left point].
     if (hr > tol) {
@@ -263,23 +245,23 @@ function initPolytope(a: Shape, b: Shape, s: Simplex, tol: number): boolean {
   }
   for (let i = 0; i < n; i++) {
     computeEdge(i);
-    if (ed[i] < -tol) return false; // the origin is outside
+    if (poly[i * S + D] < -tol) return false; // the origin is outside
   }
   // Convex (a start built from points inside A − B, rather than support points, may not be).
   for (let i = 0; i < n; i++) {
     const j = i + 1 === n ? 0 : i + 1;
     const k = j + 1 === n ? 0 : j + 1;
-    if (enx[i] * (px[k] - px[j]) + eny[i] * (py[k] - py[j]) > tol) return false;
+    if (poly[i * S + NX] * (poly[k * S + X] - poly[j * S + X]) + poly[i * S + NY] * (poly[k * S + Y] - poly[j * S + Y]) > tol) return false;
   }
   return true;
 }
 
 function copyVertex(to: number, from: number): void {
-  setVertex(to, px[from], py[from], pax[from], pay[from], pbx[from], pby[from]);
+  setVertex(to, poly[from * S + X], poly[from * S + Y], poly[from * S + AX], poly[from * S + AY], poly[from * S + BX], poly[from * S + BY]);
 }
 
 function swapVertices(i: number, j: number): void {
-  const x = px[i], y = py[i], ax = pax[i], ay = pay[i], bx = pbx[i], by = pby[i];
+  const x = poly[i * S + X], y = poly[i * S + Y], ax = poly[i * S + AX], ay = poly[i * S + AY], bx = poly[i * S + BX], by = poly[i * S + BY];
   copyVertex(i, j);
   setVertex(j, x, y, ax, ay, bx, by);
 }
