@@ -1,7 +1,7 @@
 // Narrow-phase benchmark (issue 3; first half of the seed's experiment 1): ns per call of SAT, boolean GJK and
 // GJK + EPA over random convex polygons of 3 to 8 vertices, overlapping and separated pairs timed apart, with hit
 // counts; the `sat` npm package (SAT.js) on the same pairs as an external reference: same answers, speed ratio.
-// Usage: node bench/collision.mjs [--runs 7] [--pairs 1000]
+// Usage: node bench/collision.mjs [--runs 9] [--pairs 1000]
 import SAT from 'sat';
 import { importTs } from '../scripts/build-engine-for-node.mjs';
 
@@ -9,7 +9,7 @@ const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i > 0 ? Number(process.argv[i + 1]) : fallback;
 };
-const runs = arg('--runs', 7);
+const runs = arg('--runs', 9);
 const pairCount = arg('--pairs', 1000);
 const C = await importTs('src/engine/collision/index.ts');
 
@@ -119,26 +119,43 @@ function timer(expr) {
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const sets = { overlapping, separated, all: pairs };
 const results = {};
+// Round-robin: every run times every case on every set, so a busy moment on the machine hits all cases alike.
 let sink = 0;
+const runners = {};
+const samples = {};
 for (const [name, expr] of Object.entries(cases)) {
-  results[name] = {};
+  runners[name] = {};
+  samples[name] = {};
   for (const [set, list] of Object.entries(sets)) {
-    const run = timer(expr);
-    const reps = Math.max(1, Math.round(100_000 / list.length));
-    run(list, reps); // warm-up
-    const samples = Array.from({ length: runs }, () => run(list, reps));
-    for (const x of samples) sink += x.sink;
-    results[name][set] = { ns: median(samples.map((x) => x.ns)), hits: samples[0].hits };
+    runners[name][set] = timer(expr);
+    runners[name][set](list, 20); // warm-up
+    samples[name][set] = [];
+  }
+}
+for (let run = 0; run < runs; run++) {
+  for (const name of Object.keys(cases)) {
+    for (const [set, list] of Object.entries(sets)) {
+      const x = runners[name][set](list, Math.max(1, Math.round(100_000 / list.length)));
+      sink += x.sink;
+      samples[name][set].push(x);
+    }
+  }
+}
+for (const name of Object.keys(cases)) {
+  results[name] = {};
+  for (const set of Object.keys(sets)) {
+    const xs = samples[name][set];
+    results[name][set] = { ns: median(xs.map((x) => x.ns)), min: Math.min(...xs.map((x) => x.ns)), hits: xs[0].hits };
   }
 }
 
 const avgVertices = (pairs.reduce((s, p) => s + p.vertices, 0) / pairs.length / 2).toFixed(2);
-console.log(`collision benchmark: ${pairs.length} polygon pairs (3–8 vertices, mean ${avgVertices}), ${overlapping.length} overlapping / ${separated.length} separated; median of ${runs} runs; Node ${process.version}, sat ${SAT.Response ? '0.9' : '?'}`);
+console.log(`collision benchmark: ${pairs.length} polygon pairs (3–8 vertices, mean ${avgVertices}), ${overlapping.length} overlapping / ${separated.length} separated; median (and min) of ${runs} round-robin runs; Node ${process.version}, sat ${SAT.Response ? '0.9' : '?'}`);
 console.log('');
-console.log('| narrow phase | ns/call overlapping | ns/call separated | ns/call all | hits (all) |');
+console.log('| narrow phase | ns/call overlapping | ns/call separated | ns/call all (min) | hits (all) |');
 console.log('|---|---|---|---|---|');
 for (const [name, r] of Object.entries(results)) {
-  console.log(`| ${name} | ${r.overlapping.ns.toFixed(1)} | ${r.separated.ns.toFixed(1)} | ${r.all.ns.toFixed(1)} | ${r.all.hits} / ${pairs.length} |`);
+  console.log(`| ${name} | ${r.overlapping.ns.toFixed(0)} | ${r.separated.ns.toFixed(0)} | ${r.all.ns.toFixed(0)} (${r.all.min.toFixed(0)}) | ${r.all.hits} / ${pairs.length} |`);
 }
 console.log('');
 const ratio = (ours, theirs) => (results[theirs].all.ns / results[ours].all.ns).toFixed(2);
