@@ -193,7 +193,8 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       const len = len2 * inv;
       if (anchor[i] !== anchor[i]) anchor[i] = alpha;
       const slide = (alpha - anchor[i]) * len;
-      const limit = friction[i] * lambda[i];
+      // Coulomb on multipliers, |λt| ≤ μ·λn, is a positional limit of μ·λn·w.
+      const limit = friction[i] * lambda[i] * w;
       const undo = slide > limit ? limit : slide < -limit ? -limit : slide;
       if (undo !== slide) anchor[i] += (slide - undo) / len;
       const dt = -undo / w;
@@ -230,7 +231,8 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       const mx = x[iv] - px[iv] - (x[i0] - px[i0]);
       const my = y[iv] - py[iv] - (y[i0] - py[i0]);
       const slide = mx * tx + my * ty;
-      const limit = friction[i] * lambda[i];
+      // Coulomb on multipliers, |λt| ≤ μ·λn, is a positional limit of μ·λn·w.
+      const limit = friction[i] * lambda[i] * w;
       const undo = slide > limit ? limit : slide < -limit ? -limit : slide;
       const dt = -undo / w;
       const cx = dl * nx + dt * tx;

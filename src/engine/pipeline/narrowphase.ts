@@ -15,14 +15,21 @@ export class NarrowPhase {
   tests = 0;
   private edge = 0;
 
+  private slop = 0.02;
+
   run(pairs: PairList, c: Colliders, p: ParticleStore, motion: Float64Array, slop: number, out: Contacts): void {
     out.count = 0;
+    this.slop = slop;
     this.tests = 0;
     for (let k = 0; k < pairs.count; k++) {
       let a = pairs.a[k];
       let b = pairs.b[k];
       // Polygons first: a polygon body is always A when paired with a particle body.
-      if (c.kind[a] === ColliderKind.Particles && c.kind[b] === ColliderKind.Polygon) [a, b] = [b, a];
+      if (c.kind[a] === ColliderKind.Particles && c.kind[b] === ColliderKind.Polygon) {
+        const t = a;
+        a = b;
+        b = t;
+      }
       const margin = motion[a] + motion[b] + slop;
       const mu = Math.sqrt(c.friction[a] * c.friction[b]);
       const e = Math.max(c.restitution[a], c.restitution[b]);
@@ -89,8 +96,9 @@ export class NarrowPhase {
     const sepB = this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
     if (sepB > margin) return;
     const edgeB = this.edge;
-    // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties.
-    const flip = sepB > sepA + 1e-3 * margin + 1e-9;
+    // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties
+    // (stacked equal boxes tie exactly) and the contacts, with their friction anchors, persist.
+    const flip = sepB > sepA + 0.1 * this.slop;
     const refStart = flip ? bStart : aStart;
     const refCount = flip ? bCount : aCount;
     const incStart = flip ? aStart : bStart;
@@ -102,10 +110,11 @@ export class NarrowPhase {
     const r1 = vs[refStart + (refEdge + 1 === refCount ? 0 : refEdge + 1)];
     const rex = x[r1] - x[r0];
     const rey = y[r1] - y[r0];
-    const rlen2 = rex * rex + rey * rey;
-    const rinv = 1 / Math.sqrt(rlen2);
-    const nx = rey * rinv;
-    const ny = -rex * rinv;
+    const rlen = Math.sqrt(rex * rex + rey * rey);
+    const tx = rex / rlen;
+    const ty = rey / rlen;
+    const nx = ty;
+    const ny = -tx;
     // Incident edge: the one whose normal is most opposed to the reference normal.
     let incEdge = 0;
     let most = Infinity;
@@ -125,29 +134,41 @@ export class NarrowPhase {
     // The normal reported for events points from A to B.
     const snx = flip ? -nx : nx;
     const sny = flip ? -ny : ny;
-    // Incident vertices over the reference edge.
+    // Clip the incident edge to the reference edge's extent (Box2D's two clip points, as particle features): an
+    // incident vertex within the extent touches the reference edge; one beyond it is replaced by the reference
+    // corner it was clipped at, which touches the incident edge. Two contacts, no gap, no duplicate.
+    const tolerance = 1e-4 * rlen;
+    let lastCorner = -1;
     for (let k = 0; k < 2; k++) {
       const q = k === 0 ? q0 : q1;
-      const rx = x[q] - x[r0];
-      const ry = y[q] - y[r0];
-      const sep = rx * nx + ry * ny;
-      const alpha = (rx * rex + ry * rey) / rlen2;
-      if (sep <= margin && alpha >= 0 && alpha <= 1) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+      const along = (x[q] - x[r0]) * tx + (y[q] - y[r0]) * ty;
+      if (along >= -tolerance && along <= rlen + tolerance) {
+        const sep = (x[q] - x[r0]) * nx + (y[q] - y[r0]) * ny;
+        if (sep <= margin) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+        continue;
+      }
+      const corner = along < 0 ? r0 : r1;
+      if (corner === lastCorner) continue;
+      lastCorner = corner;
+      const qex = x[q1] - x[q0];
+      const qey = y[q1] - y[q0];
+      const qlen2 = qex * qex + qey * qey;
+      const qinv = 1 / Math.sqrt(qlen2);
+      const alpha = ((x[corner] - x[q0]) * qex + (y[corner] - y[q0]) * qey) / qlen2;
+      if (alpha < 0 || alpha > 1) continue;
+      const sep = ((x[corner] - x[q0]) * qey - (y[corner] - y[q0]) * qex) * qinv;
+      if (sep <= margin) out.add(corner, q0, q1, 0, mu, e, incBody, refBody, -snx, -sny, -sep);
     }
-    // Reference vertices strictly inside the incident edge (its ends were handled above).
-    const qex = x[q1] - x[q0];
-    const qey = y[q1] - y[q0];
-    const qlen2 = qex * qex + qey * qey;
-    const qinv = 1 / Math.sqrt(qlen2);
-    const mnx = qey * qinv;
-    const mny = -qex * qinv;
-    for (let k = 0; k < 2; k++) {
-      const r = k === 0 ? r0 : r1;
-      const rx = x[r] - x[q0];
-      const ry = y[r] - y[q0];
-      const sep = rx * mnx + ry * mny;
-      const alpha = (rx * qex + ry * qey) / qlen2;
-      if (sep <= margin && alpha > 1e-3 && alpha < 1 - 1e-3) out.add(r, q0, q1, 0, mu, e, incBody, refBody, -snx, -sny, -sep);
+    // A body closing faster than about half its size per step could bring its other vertices through the reference
+    // edge before its frame catches up: give them speculative contacts too.
+    if (margin > 0.5 * Math.sqrt((x[q1] - x[q0]) ** 2 + (y[q1] - y[q0]) ** 2)) {
+      for (let j = 0; j < incCount; j++) {
+        const q = vs[incStart + j];
+        if (q === q0 || q === q1) continue;
+        const along = (x[q] - x[r0]) * tx + (y[q] - y[r0]) * ty;
+        const sep = (x[q] - x[r0]) * nx + (y[q] - y[r0]) * ny;
+        if (along >= 0 && along <= rlen && sep <= margin) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+      }
     }
   }
 

@@ -1,0 +1,78 @@
+import { expect } from '@open-wc/testing';
+import { World, createBox, createCircle } from '../../../src/engine/index.js';
+import { scene } from './scene-helpers.js';
+
+describe('pipeline: motion', () => {
+  it('a 100-link chain and a 30×30 cloth keep link strain < 0.5% after 10 s', () => {
+    for (const name of ['chain', 'cloth'] as const) {
+      const { world } = scene(name, { sleeping: false });
+      let worst = 0;
+      for (let k = 0; k < 600; k++) {
+        world.step();
+        if (k >= 540) worst = Math.max(worst, world.maxStrain());
+      }
+      console.log(`${name}, 10 s: max strain ${(worst * 100).toFixed(4)}%`);
+      expect(worst).to.be.below(0.005);
+    }
+  });
+
+  it('a unit box thrown at 300 units/s never passes a static wall 0.1 thick', () => {
+    for (const speed of [300, 150, 600]) {
+      const { world, byId } = scene('thrown', { sleeping: false });
+      const bullet = byId.get('bullet')!;
+      for (const p of world.bodyParticleHandles(bullet)) world.setVelocity(p, speed, 0);
+      let furthest = -Infinity;
+      for (let k = 0; k < 120; k++) {
+        world.step();
+        for (const i of world.bodyParticleIndices(bullet)) furthest = Math.max(furthest, world.particles.x[i]);
+      }
+      // The wall's near face is at x = 9.95.
+      expect(furthest, `at ${speed} units/s`).to.be.below(9.95 + 0.02);
+    }
+  });
+
+  it('friction: a box on a 20° slope stays with μ = 0.6 and slides with μ = 0.1 as Coulomb says', () => {
+    const angle20 = (20 * Math.PI) / 180;
+    const slide = (mu: number) => {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+      const angle = (20 * Math.PI) / 180;
+      createBox(world, { x: 0, y: 0, width: 40, height: 1, angle, static: true, friction: mu });
+      // Resting on the slope's top face: half a unit box plus half the slope's thickness along the normal.
+      const nx = Math.sin(angle);
+      const ny = -Math.cos(angle);
+      const box = createBox(world, { x: nx * 1.0, y: ny * 1.0, width: 1, height: 1, angle, friction: mu });
+      for (let k = 0; k < 30; k++) world.step();
+      const start = world.bodyCentroid(box.body);
+      for (let k = 0; k < 120; k++) world.step();
+      const end = world.bodyCentroid(box.body);
+      return Math.hypot(end.x - start.x, end.y - start.y);
+    };
+    const stuck = slide(0.6);
+    const sliding = slide(0.1);
+    // Sliding: a = g (sin 20° − μ cos 20°); after the first 0.5 s it moves v0·t + ½·a·t² over the next 2 s.
+    const a = 10 * (Math.sin(angle20) - 0.1 * Math.cos(angle20));
+    const expected = a * 0.5 * 2 + 0.5 * a * 2 * 2;
+    console.log(`slope 20°: moved ${stuck.toFixed(4)} with μ 0.6, ${sliding.toFixed(3)} with μ 0.1 (analytic ${expected.toFixed(3)})`);
+    expect(stuck).to.be.below(0.01);
+    expect(sliding).to.be.closeTo(expected, 0.03 * expected);
+  });
+
+  it('restitution: a ball with e = 0.8 dropped from 5 bounces back to about e²·5', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true, restitution: 0.8 });
+    const ball = createCircle(world, { x: 0, y: -5.5, radius: 0.5, restitution: 0.8 });
+    let bounced = false;
+    let apex = Infinity;
+    let prevY = world.bodyCentroid(ball.body).y;
+    for (let k = 0; k < 240; k++) {
+      world.step();
+      const y = world.bodyCentroid(ball.body).y;
+      if (!bounced && y < prevY) bounced = true;
+      if (bounced) apex = Math.min(apex, y);
+      prevY = y;
+    }
+    const height = -apex - 0.5;
+    console.log(`restitution 0.8 from 5: bounced to ${height.toFixed(3)} (e²·5 = 3.2)`);
+    expect(height).to.be.closeTo(3.2, 0.35);
+  });
+});
