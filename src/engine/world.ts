@@ -51,6 +51,8 @@ export interface WorldOptions {
   variableStep?: boolean;
   /** Broad phase: 'grid' (default, uniform grid with radix sort) or 'brute' (every pair; for tests and comparison). */
   broadphase?: 'grid' | 'brute';
+  /** Narrow phase for polygon pairs: 'sat' (default) or 'gjk' (GJK distance / GJK + EPA). */
+  narrowphase?: 'sat' | 'gjk';
   /** Grid cell size; 0 (default) picks twice the median body size. */
   cellSize?: number;
   /** Extra gap within which contacts are created before bodies touch. Default 0.02. */
@@ -180,6 +182,7 @@ const DEFAULTS = {
   maxCatchUpSteps: 5,
   variableStep: false,
   broadphase: 'grid' as 'grid' | 'brute',
+  narrowphase: 'sat' as 'sat' | 'gjk',
   cellSize: 0,
   contactSlop: 0.02,
   sleeping: true,
@@ -268,6 +271,7 @@ export class World {
     this.variableStep = Boolean(o.variableStep);
     this._broadPhase = makeBroadPhase(oneOf('broadphase', o.broadphase, ['grid', 'brute'] as const), nonNegative('cellSize', o.cellSize));
     this._contactSlop = nonNegative('contactSlop', o.contactSlop);
+    this.narrowPhase.mode = oneOf('narrowphase', o.narrowphase, ['sat', 'gjk'] as const);
     this.sleep.enabled = Boolean(o.sleeping);
     this._maxPushSpeed = positive('maxPushSpeed', o.maxPushSpeed);
   }
@@ -323,6 +327,12 @@ export class World {
   set broadphase(v: 'grid' | 'brute') {
     const cell = this._broadPhase instanceof GridBroadPhase ? this._broadPhase.cellSize : 0;
     this._broadPhase = makeBroadPhase(oneOf('broadphase', v, ['grid', 'brute'] as const), cell);
+  }
+  get narrowphase(): 'sat' | 'gjk' {
+    return this.narrowPhase.mode;
+  }
+  set narrowphase(v: 'sat' | 'gjk') {
+    this.narrowPhase.mode = oneOf('narrowphase', v, ['sat', 'gjk'] as const);
   }
   get cellSize(): number {
     return this._broadPhase instanceof GridBroadPhase ? this._broadPhase.cellSize : 0;
@@ -903,6 +913,7 @@ export class World {
     const idx = this.bodyParticleIndices(handle);
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
+    this.wake(handle);
     let mass = 0;
     for (const i of idx) if (this.particles.invMass[i] > 0) mass += 1 / this.particles.invMass[i];
     if (mass === 0) return;
@@ -1260,6 +1271,7 @@ export class World {
         maxCatchUpSteps: this._maxCatchUpSteps,
         variableStep: this.variableStep,
         broadphase: this.broadphase,
+        narrowphase: this.narrowphase,
         cellSize: this.cellSize,
         contactSlop: this._contactSlop,
         sleeping: this.sleep.enabled,
@@ -1298,6 +1310,7 @@ export class World {
       _maxPushSpeed: s.settings.maxPushSpeed,
     });
     this.broadphase = s.settings.broadphase;
+    this.narrowphase = s.settings.narrowphase;
     this.sleep.enabled = s.settings.sleeping;
     this.cellSize = s.settings.cellSize;
     this.time = s.time;

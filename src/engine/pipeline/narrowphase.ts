@@ -2,6 +2,12 @@ import type { ParticleStore } from '../particles.js';
 import { ColliderKind, type Colliders } from './colliders.js';
 import type { Contacts } from './contacts.js';
 import type { PairList } from './broadphase.js';
+import { polygonView, type Shape } from '../collision/shape.js';
+import { gjkDistance } from '../collision/gjk.js';
+import { gjkEpa } from '../collision/epa.js';
+import { ClosestPoints, Penetration } from '../collision/results.js';
+
+export type NarrowPhaseMode = 'sat' | 'gjk';
 
 /**
  * Turns candidate body pairs into contact features (vertex–edge, point–point) for the projection solver.
@@ -9,8 +15,17 @@ import type { PairList } from './broadphase.js';
  * the incident edge's vertices over the reference edge, and the reference edge's vertices over the incident edge
  * (the two ends of Box2D's clipped segment, as particle features). Pairs up to `margin` apart give speculative
  * contacts that act only if the gap closes during the step.
+ *
+ * In 'gjk' mode the normal comes from GJK (the distance of separated parts) or GJK + EPA (the depth of overlapping
+ * ones) instead of SAT, and the reference edge is the edge best aligned with it; the contacts are then clipped the
+ * same way. The seed's experiment 1 compares the two.
  */
 export class NarrowPhase {
+  mode: NarrowPhaseMode = 'sat';
+  private readonly viewA: Shape = polygonView(new Float64Array(3), new Float64Array(3), Int32Array.of(0, 1, 2));
+  private readonly viewB: Shape = polygonView(new Float64Array(3), new Float64Array(3), Int32Array.of(0, 1, 2));
+  private readonly closest = new ClosestPoints();
+  private readonly penetration = new Penetration();
   /** Candidate pair tests and contacts of the last run (for the seed's experiment 1 and the stats overlay). */
   tests = 0;
   private edge = 0;
@@ -82,6 +97,75 @@ export class NarrowPhase {
     return best;
   }
 
+  private edgeA = 0;
+  private edgeB = 0;
+  private flip = false;
+
+  /** SAT: the reference edge is the axis of least penetration (or largest gap). False when apart by > margin. */
+  private satReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array, margin: number): boolean {
+    const sepA = this.maxSeparation(vs, aStart, aCount, bStart, bCount, x, y);
+    if (sepA > margin) return false;
+    this.edgeA = this.edge;
+    const sepB = this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
+    if (sepB > margin) return false;
+    this.edgeB = this.edge;
+    // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties
+    // (stacked equal boxes tie exactly) and the contacts, with their friction anchors, persist.
+    this.flip = sepB > sepA + 0.1 * this.slop;
+    return true;
+  }
+
+  /** GJK: the normal from the distance (apart) or EPA (overlapping), then the edges best aligned with it. */
+  private gjkReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array, margin: number): boolean {
+    const va = this.viewA;
+    const vb = this.viewB;
+    va.xs = vb.xs = x;
+    va.ys = vb.ys = y;
+    va.index = vb.index = vs;
+    va.offset = aStart;
+    va.count = aCount;
+    vb.offset = bStart;
+    vb.count = bCount;
+    let nx: number;
+    let ny: number;
+    const distance = gjkDistance(va, vb, this.closest);
+    // At (almost) zero distance the closest points give no trustworthy direction: treat that as touching.
+    if (distance > 1e-9) {
+      if (distance > margin) return false;
+      nx = this.closest.normalX;
+      ny = this.closest.normalY;
+    } else if (gjkEpa(va, vb, this.penetration)) {
+      nx = this.penetration.normalX;
+      ny = this.penetration.normalY;
+    } else {
+      // Touching exactly, with no direction to go by: SAT decides.
+      return this.satReference(vs, aStart, aCount, bStart, bCount, x, y, margin);
+    }
+    const alignA = this.bestAligned(vs, aStart, aCount, x, y, nx, ny);
+    this.edgeA = this.edge;
+    const alignB = this.bestAligned(vs, bStart, bCount, x, y, -nx, -ny);
+    this.edgeB = this.edge;
+    this.flip = alignB > alignA + 1e-3;
+    return true;
+  }
+
+  /** The edge whose outward normal is closest to (nx, ny), in this.edge; returns the cosine. */
+  private bestAligned(vs: Int32Array, start: number, count: number, x: Float64Array, y: Float64Array, nx: number, ny: number): number {
+    let best = -Infinity;
+    for (let i = 0; i < count; i++) {
+      const i0 = vs[start + i];
+      const i1 = vs[start + (i + 1 === count ? 0 : i + 1)];
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const cos = (ey * nx - ex * ny) / Math.sqrt(ex * ex + ey * ey);
+      if (cos > best) {
+        best = cos;
+        this.edge = i;
+      }
+    }
+    return best;
+  }
+
   private polygons(c: Colliders, p: ParticleStore, partA: number, partB: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts): void {
     this.tests++;
     const vs = c.vertices;
@@ -90,15 +174,11 @@ export class NarrowPhase {
     const aCount = c.partVertexCount[partA];
     const bStart = c.partVertexStart[partB];
     const bCount = c.partVertexCount[partB];
-    const sepA = this.maxSeparation(vs, aStart, aCount, bStart, bCount, x, y);
-    if (sepA > margin) return;
-    const edgeA = this.edge;
-    const sepB = this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
-    if (sepB > margin) return;
-    const edgeB = this.edge;
-    // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties
-    // (stacked equal boxes tie exactly) and the contacts, with their friction anchors, persist.
-    const flip = sepB > sepA + 0.1 * this.slop;
+    const found = this.mode === 'gjk' ? this.gjkReference(vs, aStart, aCount, bStart, bCount, x, y, margin) : this.satReference(vs, aStart, aCount, bStart, bCount, x, y, margin);
+    if (!found) return;
+    const flip = this.flip;
+    const edgeA = this.edgeA;
+    const edgeB = this.edgeB;
     const refStart = flip ? bStart : aStart;
     const refCount = flip ? bCount : aCount;
     const incStart = flip ? aStart : bStart;

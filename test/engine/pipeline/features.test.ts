@@ -1,0 +1,203 @@
+import { expect } from '@open-wc/testing';
+import { World, createBox, createCircle, createCloth, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
+import { scene } from './scene-helpers.js';
+
+describe('pipeline: narrow phase modes', () => {
+  it('GJK + EPA and SAT give the same settled pyramid', () => {
+    const tops = (['sat', 'gjk'] as const).map((narrowphase) => {
+      const { world, bodies } = scene('pyramid', { narrowphase, sleeping: false });
+      for (let k = 0; k < 300; k++) world.step();
+      return world.bodyCentroid(bodies[bodies.length - 1].body);
+    });
+    expect(tops[0].y).to.be.closeTo(-19.5, 0.05);
+    expect(tops[1].x).to.be.closeTo(tops[0].x, 0.01);
+    expect(tops[1].y).to.be.closeTo(tops[0].y, 0.01);
+  });
+});
+
+describe('pipeline: filtering', () => {
+  const dropOnto = (ground: Partial<BoxOptions>, box: Partial<BoxOptions>) => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    createBox(world, { x: 0, y: 0.5, width: 10, height: 1, static: true, ...ground });
+    const b = createBox(world, { x: 0, y: -1, width: 1, height: 1, ...box });
+    for (let k = 0; k < 60; k++) world.step();
+    return world.bodyCentroid(b.body).y;
+  };
+  it('category and mask decide who collides', () => {
+    expect(dropOnto({ category: 2 }, { mask: 2 })).to.be.closeTo(-0.5, 0.01); // lands
+    expect(dropOnto({ category: 2 }, { mask: 4 })).to.be.above(1); // falls through
+    expect(dropOnto({ mask: 4 }, { category: 1 })).to.be.above(1); // both sides must agree
+  });
+  it('a shared negative group never collides, a shared positive group always does', () => {
+    expect(dropOnto({ group: -3 }, { group: -3 })).to.be.above(1);
+    expect(dropOnto({ group: 3, category: 2 }, { group: 3, mask: 4 })).to.be.closeTo(-0.5, 0.01);
+  });
+});
+
+describe('pipeline: events', () => {
+  it('begin when a box lands (with the normal and the two bodies), end when it is thrown off', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    const ground = createBox(world, { x: 0, y: 0.5, width: 10, height: 1, static: true });
+    const box = createBox(world, { x: 0, y: -2, width: 1, height: 1 });
+    const seen: { type: number; a: number; b: number; nx: number; ny: number; step: number }[] = [];
+    const collect = (step: number) => {
+      const e = world.events;
+      for (let i = 0; i < e.count; i++) seen.push({ type: e.type[i], a: e.bodyA[i], b: e.bodyB[i], nx: e.normalX[i], ny: e.normalY[i], step });
+    };
+    for (let k = 0; k < 60; k++) {
+      world.step();
+      collect(k);
+    }
+    // Begin and end alternate (a landing may hop a little before it rests), starting with a begin.
+    seen.forEach((e, k) => expect(e.type, `event ${k}`).to.equal(k % 2));
+    expect(seen[seen.length - 1].type).to.equal(0); // it ends up resting on the ground
+    expect([seen[0].a, seen[0].b].sort()).to.deep.equal([ground.body, box.body].sort());
+    // Free fall of 1.5 units takes √(2·1.5/10) ≈ 0.548 s ≈ step 32.
+    expect(seen[0].step).to.be.within(30, 34);
+    // The normal points from A to B, i.e. along the ground's up normal when A is the ground.
+    expect(Math.abs(seen[0].ny)).to.be.closeTo(1, 1e-6);
+    const landed = seen.length;
+    world.applyBodyImpulse(box.body, 0, -8);
+    for (let k = 60; k < 90; k++) {
+      world.step();
+      collect(k);
+    }
+    expect(seen.length).to.equal(landed + 1);
+    expect(seen[landed].type).to.equal(1);
+    expect(seen[landed].step).to.equal(60);
+  });
+});
+
+describe('pipeline: queries', () => {
+  const { world, byId } = buildScene({
+    world: { gravity: { x: 0, y: 0 } },
+    bodies: [
+      { type: 'box', id: 'a', x: 0, y: 0, width: 2, height: 2 },
+      { type: 'box', id: 'b', x: 5, y: 0, width: 2, height: 1, angle: Math.PI / 4 },
+      { type: 'circle', id: 'c', x: 0, y: 5, radius: 1 },
+    ],
+  });
+  world.step();
+  const A = byId.get('a')!;
+  const B = byId.get('b')!;
+  const C = byId.get('c')!;
+
+  it('bodies at a point: inside, outside, on a rotated box, in a circle', () => {
+    expect(world.bodiesAtPoint(0.9, -0.9)).to.deep.equal([A]);
+    expect(world.bodiesAtPoint(1.1, 0)).to.deep.equal([]);
+    expect(world.bodiesAtPoint(5.6, 0.6)).to.deep.equal([B]); // along the rotated box's diagonal axis
+    expect(world.bodiesAtPoint(5.9, 0)).to.deep.equal([]); // inside its AABB, outside the box
+    expect(world.bodiesAtPoint(0.6, 5.6)).to.deep.equal([C]);
+    expect(world.bodiesAtPoint(0.75, 5.75)).to.deep.equal([]);
+  });
+
+  it('bodies in a box', () => {
+    expect(world.bodiesInBox(-3, -3, 3, 3)).to.deep.equal([A]);
+    expect(world.bodiesInBox(-10, -10, 10, 10).sort()).to.deep.equal([A, B, C].sort());
+    // Inside the rotated box's AABB (which reaches x = 6.06) but beside the box (at y = ±0.2 it reaches x ≤ 5.91).
+    expect(world.bodiesInBox(6.0, -0.2, 6.5, 0.2)).to.deep.equal([]);
+    expect(world.bodiesInBox(5.8, -0.2, 6.5, 0.2)).to.deep.equal([B]);
+    expect(world.bodiesInBox(0.8, 5.8, 2, 7)).to.deep.equal([]); // beside the circle
+  });
+
+  it('a ray cast returns the nearest hit with its point, normal and distance', () => {
+    const hit = world.rayCast(-5, 0, 10, 0)!;
+    expect(hit.body).to.equal(A);
+    expect(hit.x).to.be.closeTo(-1, 1e-9);
+    expect(hit.normalX).to.be.closeTo(-1, 1e-9);
+    expect(hit.distance).to.be.closeTo(4, 1e-9);
+    const down = world.rayCast(0, 10, 0, 0)!;
+    expect(down.body).to.equal(C);
+    expect(down.y).to.be.closeTo(6, 1e-9);
+    expect(world.rayCast(-5, 3, 10, 3)).to.equal(null);
+  });
+});
+
+describe('pipeline: pointer drag', () => {
+  it('a grabbed box follows the pointer and keeps its speed when released (a throw)', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    createBox(world, { x: 0, y: 0.5, width: 40, height: 1, static: true });
+    const box = createBox(world, { x: 0, y: -0.5, width: 1, height: 1 });
+    const grab = world.grab(0.3, -0.7)!;
+    expect(grab).to.not.equal(null);
+    // Pull it up and to the right at 3 units/s for 1 s.
+    for (let k = 1; k <= 60; k++) {
+      world.moveGrab(grab, 0.3 + (3 * k) / 60, -0.7 - (2 * k) / 60);
+      world.step();
+    }
+    // It hangs from the held point (0.36 from its centre) a little behind the moving target (3.3, −2.7).
+    const held = world.bodyCentroid(box.body);
+    expect(Math.hypot(held.x - 3.3, held.y + 2.7)).to.be.below(0.6);
+    world.release(grab);
+    const before = world.bodyCentroid(box.body);
+    world.step();
+    const after = world.bodyCentroid(box.body);
+    // Thrown: its centre keeps moving right at about the pointer's 3 units/s.
+    expect((after.x - before.x) * 60).to.be.within(2, 4);
+    expect(world.grab(10, -10)).to.equal(null); // nothing there
+  });
+
+  it('a cloth is grabbed at its nearest particle', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    const cloth = createCloth(world, { origin: { x: 0, y: 0 }, columns: 10, rows: 10, spacing: 0.2 });
+    const grab = world.grab(1.01, 1.79)!;
+    for (let k = 0; k < 60; k++) {
+      world.moveGrab(grab, 2.5, 1.8);
+      world.step();
+    }
+    const corner = world.getPosition(cloth.particles[9 * 10 + 5]);
+    expect(corner.x).to.be.above(1.8);
+  });
+});
+
+describe('pipeline: sleeping', () => {
+  it('a settled pyramid falls asleep within 5 s, and an impulse wakes it', () => {
+    const { world, bodies } = scene('pyramid');
+    let asleepAt = -1;
+    for (let k = 0; k < 300 && asleepAt < 0; k++) {
+      world.step();
+      if (world.settled) asleepAt = k;
+    }
+    console.log(`pyramid asleep after ${(asleepAt / 60).toFixed(2)} s`);
+    expect(asleepAt).to.be.within(0, 300);
+    expect(bodies.slice(1).every((b) => !world.isAwake(b.body))).to.equal(true);
+    const top = bodies[bodies.length - 1].body;
+    world.applyBodyImpulse(top, 5, 0);
+    world.step();
+    expect(world.isAwake(top)).to.equal(true);
+    expect(world.settled).to.equal(false);
+  });
+
+  it('a box dropped on a sleeping pile wakes it', () => {
+    const { world, bodies } = scene('stack');
+    for (let k = 0; k < 120; k++) world.step();
+    expect(world.settled).to.equal(true);
+    const ball = createCircle(world, { x: 0.2, y: -14, radius: 0.5, mass: 5 });
+    let woke = false;
+    for (let k = 0; k < 120; k++) {
+      world.step();
+      if (world.isAwake(bodies[bodies.length - 1].body)) woke = true;
+    }
+    expect(woke).to.equal(true);
+    expect(world.bodyCentroid(ball.body).y).to.be.below(-10); // it landed on the stack, not through it
+  });
+});
+
+describe('pipeline: determinism with collisions', () => {
+  it('the same scene gives the same hash, and snapshot/restore replays it exactly', () => {
+    const run = () => {
+      const { world } = buildScene(catalogue.ragdolls.make());
+      for (let k = 0; k < 120; k++) world.step();
+      return world;
+    };
+    const a = run();
+    const b = run();
+    expect(a.stateHash()).to.equal(b.stateHash());
+    const snap = structuredClone(a.snapshot());
+    for (let k = 0; k < 60; k++) a.step();
+    const expected = a.stateHash();
+    a.restore(snap);
+    for (let k = 0; k < 60; k++) a.step();
+    expect(a.stateHash()).to.equal(expected);
+  });
+});
