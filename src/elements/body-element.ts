@@ -1,0 +1,156 @@
+// The base class of the body elements (<physics-box>, <physics-circle>, …). A body element draws nothing itself: it
+// describes a body as plain data, and its <physics-scene> parent turns that into a body in the running engine.
+import { LitElement, css, nothing } from 'lit';
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import type { BodyStyle } from '../render/renderer.js';
+import { Checker, toDegrees, toRadians, type Problem } from './checks.js';
+import type { SceneHost } from './scene-host.js';
+
+export interface Described<T> {
+  desc: T | null;
+  problems: Problem[];
+}
+
+/**
+ * A body inside a `<physics-scene>`. Attributes give the initial state; `x`, `y` and `angle` read the live pose
+ * once the body is simulated. Changing an attribute (or property) updates the running simulation.
+ */
+export abstract class PhysicsBodyElement extends LitElement {
+  static override styles = css`
+    :host {
+      display: none;
+    }
+  `;
+
+  /** Total mass; default from `density` × area. */
+  @property({ type: Number }) mass?: number;
+  /** Mass per unit area (default 1) when `mass` is not given. */
+  @property({ type: Number }) density?: number;
+  /** Immovable (floors, walls, obstacles). */
+  @property({ type: Boolean, attribute: 'static' }) isStatic = false;
+  /** Coulomb friction coefficient (>= 0). Default 0.6. */
+  @property({ type: Number }) friction?: number;
+  /** Bounciness in [0, 1]. Default 0. */
+  @property({ type: Number }) restitution?: number;
+  /** Fill colour (any CSS colour, or "none"). */
+  @property() fill?: string;
+  /** Outline colour (any CSS colour, or "none"). */
+  @property() stroke?: string;
+
+  /** Set by the owning scene. @internal */
+  _scene: SceneHost | null = null;
+
+  private _x?: number;
+  private _y?: number;
+  private _angle?: number;
+
+  /**
+   * Horizontal position in world units. Reads the live position while simulated; setting it moves the body.
+   * @attr x
+   */
+  @property({ type: Number, noAccessor: true })
+  get x(): number {
+    const pose = this._scene?.poseOf(this);
+    return pose ? pose[0] : (this._x ?? 0);
+  }
+  set x(value: number) {
+    const old = this._x;
+    this._x = value;
+    this.requestUpdate('x', old);
+  }
+
+  /**
+   * Vertical position in world units (y grows downward). Live while simulated.
+   * @attr y
+   */
+  @property({ type: Number, noAccessor: true })
+  get y(): number {
+    const pose = this._scene?.poseOf(this);
+    return pose ? pose[1] : (this._y ?? 0);
+  }
+  set y(value: number) {
+    const old = this._y;
+    this._y = value;
+    this.requestUpdate('y', old);
+  }
+
+  /**
+   * Rotation in degrees, clockwise on screen (as SVG's rotate()). Live while simulated.
+   * @attr angle
+   */
+  @property({ type: Number, noAccessor: true })
+  get angle(): number {
+    const pose = this._scene?.poseOf(this);
+    return pose ? toDegrees(pose[2]) : (this._angle ?? 0);
+  }
+  set angle(value: number) {
+    const old = this._angle;
+    this._angle = value;
+    this.requestUpdate('angle', old);
+  }
+
+  /** The declared (markup) position and angle, not the live pose. */
+  protected get declared(): { x: unknown; y: unknown; angle: unknown } {
+    return { x: this._x, y: this._y, angle: this._angle };
+  }
+
+  /** Changes the body's velocity by impulse / mass (world units · mass / s). */
+  applyImpulse(ix: number, iy: number): void {
+    this._scene?.applyImpulse(this, ix, iy);
+  }
+
+  /** Sets the velocity of every particle of the body (world units / s). */
+  setVelocity(vx: number, vy: number): void {
+    this._scene?.setVelocity(this, vx, vy);
+  }
+
+  /** The body as plain data for the engine, or null with problems when the markup cannot make one. @internal */
+  abstract describe(): Described<BodyDescription>;
+
+  /** Default colours of this kind of body. */
+  protected abstract defaultStyle(): { fill: string | null; stroke: string | null };
+
+  /** Drawing style from `fill` / `stroke`. @internal */
+  styleOf(check: Checker = new Checker(this)): BodyStyle {
+    const d = this.defaultStyle();
+    const fallbackFill = this.isStatic && d.fill ? '#8a8f98' : d.fill;
+    return {
+      fill: check.color('fill', this.fill, fallbackFill),
+      stroke: check.color('stroke', this.stroke, d.stroke),
+      lineWidth: 1.5,
+    };
+  }
+
+  /** Position, angle and material fields shared by the rigid shapes. */
+  protected common(check: Checker, area: number | null): Record<string, unknown> {
+    const out: Record<string, unknown> = {};
+    const { x, y, angle } = this.declared;
+    out.x = check.number('x', x, { fallback: 0 });
+    out.y = check.number('y', y, { fallback: 0 });
+    out.angle = toRadians(check.number('angle', angle, { fallback: 0 })!);
+    this.material(check, out, area);
+    return out;
+  }
+
+  protected material(check: Checker, out: Record<string, unknown>, area: number | null): void {
+    const mass = check.number('mass', this.mass, { positive: true });
+    const density = check.number('density', this.density, { positive: true });
+    if (mass !== undefined) out.mass = mass;
+    else if (density !== undefined && area !== null && area > 0) out.mass = density * area;
+    if (this.isStatic) out.static = true;
+    const friction = check.number('friction', this.friction, { min: 0 });
+    if (friction !== undefined) out.friction = friction;
+    const restitution = check.number('restitution', this.restitution, { min: 0, max: 1 });
+    if (restitution !== undefined) out.restitution = restitution;
+    if (this.id) out.id = this.id;
+  }
+
+  protected override render() {
+    return nothing;
+  }
+
+  protected override updated(): void {
+    this._scene?.childChanged(this);
+  }
+}

@@ -1,0 +1,96 @@
+// Attribute checks for the elements: a bad value is recorded as a problem naming the attribute and the value as
+// written in the markup, and a fallback is used, so bad markup never throws.
+
+/** A rejected attribute value. */
+export interface Problem {
+  attribute: string;
+  value: string;
+  message: string;
+}
+
+export interface NumberRule {
+  fallback?: number;
+  /** Smallest allowed value (inclusive). */
+  min?: number;
+  max?: number;
+  /** Must be > 0. */
+  positive?: boolean;
+  integer?: boolean;
+}
+
+export class Checker {
+  readonly problems: Problem[] = [];
+
+  constructor(private readonly element: Element) {}
+
+  /** The value as written: the attribute's text when there is one, else the property value. */
+  raw(attribute: string, value: unknown): string {
+    return this.element.getAttribute(attribute) ?? String(value);
+  }
+
+  fail(attribute: string, value: unknown, message: string): void {
+    this.problems.push({ attribute, value: this.raw(attribute, value), message });
+  }
+
+  number(attribute: string, value: unknown, rule: NumberRule = {}): number | undefined {
+    if (value === undefined || value === null || value === '') return rule.fallback;
+    const n = typeof value === 'number' ? value : Number(value);
+    let problem = '';
+    if (!Number.isFinite(n)) problem = 'must be a finite number';
+    else if (rule.positive && !(n > 0)) problem = 'must be a number > 0';
+    else if (rule.min !== undefined && n < rule.min) problem = `must be >= ${rule.min}`;
+    else if (rule.max !== undefined && n > rule.max) problem = `must be <= ${rule.max}`;
+    else if (rule.integer && !Number.isInteger(n)) problem = 'must be a whole number';
+    if (problem) {
+      this.fail(attribute, value, problem);
+      return rule.fallback;
+    }
+    return n;
+  }
+
+  oneOf<T extends string>(attribute: string, value: unknown, options: readonly T[], fallback: T): T {
+    if (value === undefined || value === null || value === '') return fallback;
+    if ((options as readonly unknown[]).includes(value)) return value as T;
+    this.fail(attribute, value, `must be one of ${options.join(', ')}`);
+    return fallback;
+  }
+
+  /** A list of numbers separated by spaces or commas ("0 9.81", "1,2 3,4"). */
+  numbers(attribute: string, value: unknown): number[] | null {
+    if (value === undefined || value === null) return null;
+    const parts = String(value).trim().split(/[\s,]+/).filter(Boolean);
+    const out = parts.map(Number);
+    if (out.length === 0 || out.some((n) => !Number.isFinite(n))) {
+      this.fail(attribute, value, 'must be a list of numbers');
+      return null;
+    }
+    return out;
+  }
+
+  /** A CSS colour, "none", or undefined. */
+  color(attribute: string, value: unknown, fallback: string | null): string | null {
+    if (value === undefined || value === null || value === '') return fallback;
+    const v = String(value).trim();
+    if (v === 'none') return null;
+    if (typeof CSS !== 'undefined' && CSS.supports && !CSS.supports('color', v)) {
+      this.fail(attribute, value, 'must be a CSS colour or "none"');
+      return fallback;
+    }
+    return v;
+  }
+}
+
+/** `<physics-box id="a">` for messages. */
+export function describeElement(el: Element): string {
+  const id = el.getAttribute('id');
+  return `<${el.localName}${id ? ` id="${id}"` : ''}>`;
+}
+
+/** Defines a custom element unless a tag of that name exists already (two copies of the library on one page). */
+export function define(name: string, ctor: CustomElementConstructor): void {
+  if (!customElements.get(name)) customElements.define(name, ctor);
+}
+
+/** Degrees (markup) → radians (engine). */
+export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
+export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;

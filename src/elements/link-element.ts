@@ -1,0 +1,53 @@
+// The base class of elements that link bodies by id (<physics-joint>, <physics-spring>, <physics-pin>).
+import { LitElement, css, nothing } from 'lit';
+import { property } from 'lit/decorators.js';
+import type { LinkDescription } from '../worker/protocol.js';
+import type { Described } from './body-element.js';
+import { Checker } from './checks.js';
+import type { SceneHost } from './scene-host.js';
+
+/** Finds the body key of an element id in the scene, or null. */
+export type Resolve = (id: string) => number | null;
+
+export abstract class PhysicsLinkElement extends LitElement {
+  static override styles = css`
+    :host {
+      display: none;
+    }
+  `;
+
+  /** Anchor point in world units; without one, the link joins the two bodies' nearest particles. */
+  @property({ type: Number }) x?: number;
+  @property({ type: Number }) y?: number;
+
+  /** Set by the owning scene. @internal */
+  _scene: SceneHost | null = null;
+
+  /** @internal */
+  abstract describe(resolve: Resolve): Described<LinkDescription>;
+
+  /** Resolves an id attribute to a body key, recording a problem when it names no body of the scene. */
+  protected resolveBody(check: Checker, attribute: string, id: string | undefined, resolve: Resolve): number | null {
+    if (!id) {
+      check.fail(attribute, id ?? '', 'must name the id of a body element in the same scene');
+      return null;
+    }
+    const key = resolve(id);
+    if (key === null) check.fail(attribute, id, `no body element with id "${id}" in this scene`);
+    return key;
+  }
+
+  protected anchor(check: Checker): { x?: number; y?: number } {
+    const x = check.number('x', this.x);
+    const y = check.number('y', this.y);
+    return x !== undefined && y !== undefined ? { x, y } : {};
+  }
+
+  protected override render() {
+    return nothing;
+  }
+
+  protected override updated(): void {
+    this._scene?.childChanged(this);
+  }
+}

@@ -1,0 +1,36 @@
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import { PhysicsBodyElement, type Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+
+/**
+ * A ball: one particle colliding as a circle. `x`, `y` is its centre. A ball does not track its own rotation.
+ *
+ * @summary A ball.
+ * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsCircleElement extends PhysicsBodyElement {
+  /** Radius in world units (> 0). Default 0.5. */
+  @property({ type: Number }) radius?: number;
+
+  describe(): Described<BodyDescription> {
+    const check = new Checker(this);
+    const radius = check.number('radius', this.radius, { positive: true, fallback: 0.5 });
+    const common = this.common(check, Math.PI * (radius ?? 0.5) ** 2);
+    // A negative or zero radius cannot make a ball: report it and leave the body out.
+    if (check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
+    return { desc: { type: 'circle', radius, ...common } as BodyDescription, problems: check.problems };
+  }
+
+  protected defaultStyle() {
+    return { fill: '#e0823d', stroke: '#9c5220' };
+  }
+}
+
+define('physics-circle', PhysicsCircleElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-circle': PhysicsCircleElement;
+  }
+}

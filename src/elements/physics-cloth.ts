@@ -1,0 +1,70 @@
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import { PhysicsBodyElement, type Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+
+/**
+ * A cloth of `columns` × `rows` particles `spacing` apart, its top-left corner at `x`, `y`, hanging from `pins`.
+ *
+ * @summary A cloth.
+ * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsClothElement extends PhysicsBodyElement {
+  /** Particles across (whole number >= 2). Default 12. */
+  @property({ type: Number }) columns?: number;
+  /** Particles down (whole number >= 2). Default 10. */
+  @property({ type: Number }) rows?: number;
+  /** Rest distance between neighbours in world units. Default 0.3. */
+  @property({ type: Number }) spacing?: number;
+  /** Pinned top-row particles: "top" (default), "corners", "none" or column indices "0 5 11". */
+  @property() pins?: string;
+  /** Compliance of the structural links (0 = inextensible, default). */
+  @property({ type: Number }) compliance?: number;
+  /** Compliance of diagonal shear links (none when absent). */
+  @property({ type: Number }) shear?: number;
+  /** Compliance of bend links two particles apart (none when absent). */
+  @property({ type: Number }) bend?: number;
+  /** Collides with other bodies (its particles as small circles). */
+  @property({ type: Boolean }) collide = false;
+
+  describe(): Described<BodyDescription> {
+    const check = new Checker(this);
+    const { x, y } = this.declared;
+    const origin = { x: check.number('x', x, { fallback: 0 })!, y: check.number('y', y, { fallback: 0 })! };
+    const columns = check.number('columns', this.columns, { integer: true, min: 2, max: 4096, fallback: 12 })!;
+    const rows = check.number('rows', this.rows, { integer: true, min: 2, max: 4096, fallback: 10 })!;
+    const spacing = check.number('spacing', this.spacing, { positive: true, fallback: 0.3 })!;
+    let pins: string | number[] = 'top';
+    if (this.pins !== undefined && this.pins !== null) {
+      const p = this.pins.trim();
+      if (p === 'top' || p === 'corners' || p === 'none') pins = p;
+      else {
+        const list = check.numbers('pins', p);
+        if (list && list.every((c) => Number.isInteger(c) && c >= 0 && c < columns)) pins = list;
+        else if (list) check.fail('pins', this.pins, `column indices must be whole numbers from 0 to ${columns - 1}`);
+      }
+    }
+    const out: Record<string, unknown> = { type: 'cloth', origin, columns, rows, spacing, pins, collide: this.collide, radius: this.collide ? spacing * 0.3 : 0 };
+    const compliance = check.number('compliance', this.compliance, { min: 0 });
+    if (compliance !== undefined) out.structural = compliance;
+    const shear = check.number('shear', this.shear, { min: 0 });
+    if (shear !== undefined) out.shear = shear;
+    const bend = check.number('bend', this.bend, { min: 0 });
+    if (bend !== undefined) out.bend = bend;
+    this.material(check, out, null);
+    delete out.static;
+    return { desc: out as unknown as BodyDescription, problems: check.problems };
+  }
+
+  protected defaultStyle() {
+    return { fill: '#9cc3ec', stroke: '#2f6fb5' };
+  }
+}
+
+define('physics-cloth', PhysicsClothElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-cloth': PhysicsClothElement;
+  }
+}

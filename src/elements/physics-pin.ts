@@ -1,0 +1,42 @@
+import { property } from 'lit/decorators.js';
+import type { LinkDescription } from '../worker/protocol.js';
+import type { Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+import { PhysicsLinkElement, type Resolve } from './link-element.js';
+
+/**
+ * Pins a body (element id in `body`) to the world point `x`, `y`: its particle nearest to the point (or the
+ * `particle`-th of the body) is held there, rigidly or, with `compliance`, like a zero-length spring.
+ *
+ * @summary Pins a body to a point.
+ * @fires physics-error - A missing id or a bad value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsPinElement extends PhysicsLinkElement {
+  /** Id of the body element to pin. */
+  @property() body?: string;
+  /** Index of the particle within the body (default: the one nearest to x, y). */
+  @property({ type: Number }) particle?: number;
+  /** 0 (default) holds exactly; > 0 pulls like a zero-length spring. */
+  @property({ type: Number }) compliance?: number;
+
+  describe(resolve: Resolve): Described<LinkDescription> {
+    const check = new Checker(this);
+    const a = this.resolveBody(check, 'body', this.body, resolve);
+    const x = check.number('x', this.x);
+    const y = check.number('y', this.y);
+    if (x === undefined && this.x === undefined) check.fail('x', '', 'is required');
+    if (y === undefined && this.y === undefined) check.fail('y', '', 'is required');
+    const particle = check.number('particle', this.particle, { integer: true, min: 0 });
+    const compliance = check.number('compliance', this.compliance, { min: 0 });
+    if (a === null || x === undefined || y === undefined) return { desc: null, problems: check.problems };
+    return { desc: { type: 'pin', a, x, y, particle, compliance }, problems: check.problems };
+  }
+}
+
+define('physics-pin', PhysicsPinElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-pin': PhysicsPinElement;
+  }
+}

@@ -1,0 +1,44 @@
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import { PhysicsBodyElement, type Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+
+/**
+ * A stick-figure ragdoll whose pelvis is at `x`, `y`: bones as sticks, joints with angle limits.
+ *
+ * @summary A ragdoll.
+ * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsRagdollElement extends PhysicsBodyElement {
+  /** Height from feet to the top of the head, in world units. Default 1.8. */
+  @property({ type: Number }) height?: number;
+  /** Compliance of the joint limits (0 = hard stops, default). */
+  @property({ type: Number, attribute: 'joint-compliance' }) jointCompliance?: number;
+
+  describe(): Described<BodyDescription> {
+    const check = new Checker(this);
+    const { x, y } = this.declared;
+    const out: Record<string, unknown> = {
+      type: 'ragdoll',
+      x: check.number('x', x, { fallback: 0 }),
+      y: check.number('y', y, { fallback: 0 }),
+      height: check.number('height', this.height, { positive: true, fallback: 1.8 }),
+    };
+    const jc = check.number('joint-compliance', this.jointCompliance, { min: 0 });
+    if (jc !== undefined) out.jointCompliance = jc;
+    this.material(check, out, null);
+    return { desc: out as unknown as BodyDescription, problems: check.problems };
+  }
+
+  protected defaultStyle() {
+    return { fill: null, stroke: '#333a44' };
+  }
+}
+
+define('physics-ragdoll', PhysicsRagdollElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-ragdoll': PhysicsRagdollElement;
+  }
+}

@@ -1,0 +1,706 @@
+import { LitElement, css, html } from 'lit';
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import { SceneRenderer, type DrawHook } from '../render/renderer.js';
+import { EngineClient } from '../worker/client.js';
+import { EVENT, type Diagnostics, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
+import { PhysicsBodyElement } from './body-element.js';
+import { Checker, define, describeElement, type Problem } from './checks.js';
+import { PhysicsLinkElement } from './link-element.js';
+import type { SceneHost } from './scene-host.js';
+
+/** Detail of `physics-error`. */
+export interface PhysicsErrorDetail {
+  /** The element whose markup is wrong (a child, or the scene). */
+  element: Element;
+  /** The attribute at fault ("" when the problem is not one attribute's). */
+  attribute: string;
+  /** Its value as written. */
+  value: string;
+  message: string;
+}
+
+/** Detail of `physics-collision` and `physics-collision-end`. */
+export interface PhysicsCollisionDetail {
+  a: Element | null;
+  b: Element | null;
+  /** Contact normal from a to b (zero for end events). */
+  normal: { x: number; y: number };
+  /** Deepest overlap seen when the contact began (0 for end events). */
+  depth: number;
+}
+
+/** Detail of `physics-ready`. */
+export interface PhysicsReadyDetail {
+  /** Where the engine runs. */
+  mode: 'worker' | 'main';
+  /** How states reach the page: SharedArrayBuffer, transferred ArrayBuffers, or directly (main thread). */
+  transport: Transport;
+}
+
+interface Entry {
+  element: PhysicsBodyElement | PhysicsLinkElement;
+  kind: 'body' | 'link';
+  /** JSON of the description last sent to the engine ('' = none). */
+  sent: string;
+  /** Problems already reported, so each is reported once per change. */
+  reported: Set<string>;
+}
+
+interface Config {
+  width: number;
+  height: number;
+  gravity: { x: number; y: number };
+  iterations: number;
+  substeps: number;
+  timestep: number;
+  broadphase: 'grid' | 'brute';
+  narrowphase: 'sat' | 'gjk';
+  bounds: 'view' | 'none';
+}
+
+const COLLISION_EVENTS = new Set(['physics-collision', 'physics-collision-end']);
+const ENGINE_FIELDS: Record<string, string> = { from: 'x1', to: 'x2', origin: 'x', center: 'x', structural: 'compliance', jointCompliance: 'joint-compliance' };
+
+/**
+ * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
+ * scene simulates them in a Web Worker at a fixed step and draws them with p5 into a canvas in its shadow root.
+ * The markup is the source of truth: adding, removing or changing a child or an attribute updates the running
+ * simulation. World units: `width` × `height` is the visible box (like an SVG viewBox), y grows downward.
+ *
+ * @summary A declarative 2D physics scene.
+ *
+ * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
+ * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth}`, a and b are the body elements). Sent only while a listener is registered on the scene (or `collision-events` is set).
+ * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`).
+ * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running.
+ *
+ * @csspart stage - The box that holds the canvas.
+ * @csspart canvas - The p5 canvas.
+ *
+ * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height).
+ */
+export class PhysicsSceneElement extends LitElement implements SceneHost {
+  static override styles = css`
+    :host {
+      display: block;
+      position: relative;
+      aspect-ratio: var(--physics-scene-aspect, 16 / 9);
+      overflow: hidden;
+      touch-action: none;
+      user-select: none;
+      -webkit-user-select: none;
+      contain: layout paint;
+    }
+    :host([hidden]) {
+      display: none;
+    }
+    .stage {
+      position: absolute;
+      inset: 0;
+    }
+    ::slotted(*) {
+      display: none;
+    }
+  `;
+
+  /** Makes the engine worker; replace it to load the worker from elsewhere (or to test a failing one). */
+  static workerFactory: (() => Worker) | null = null;
+  /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error`. */
+  static callTimeout = 8000;
+
+  /** World units across the view. Default 16. */
+  @property({ type: Number }) width = 16;
+  /** World units down the view. Default 9. */
+  @property({ type: Number }) height = 9;
+  /** Gravity "x y" in world units / s² (y grows downward). Default "0 9.81". */
+  @property() gravity = '0 9.81';
+  /** Gauss–Seidel iterations per substep. Default 1. */
+  @property({ type: Number }) iterations = 1;
+  /** Substeps per step. Default 10. */
+  @property({ type: Number }) substeps = 10;
+  /** Fixed step in seconds. Default 1/60. */
+  @property({ type: Number }) timestep = 1 / 60;
+  /** Starts (and stays) paused. */
+  @property({ type: Boolean, reflect: true }) paused = false;
+  /** Draws AABBs, contacts and the broad phase's grid cells. */
+  @property({ type: Boolean, reflect: true }) debug = false;
+  /** Broad phase: "grid" (default) or "brute". */
+  @property() broadphase = 'grid';
+  /** Narrow phase: "sat" (default) or "gjk". The engine's collision pipeline currently runs SAT for polygon pairs either way. */
+  @property() narrowphase = 'sat';
+  /** "view" (default): walls at the sides and bottom of the width × height box (open at the top); "none": unbounded. */
+  @property() bounds = 'view';
+  /** Canvas background (CSS colour). Default "#f7f5f0". */
+  @property() background = '#f7f5f0';
+  /** "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. */
+  @property() worker = 'auto';
+  /** Send collision events even with no listener on the scene itself (for listeners on ancestors). */
+  @property({ type: Boolean, attribute: 'collision-events' }) collisionEvents = false;
+  /** How `drawHook` combines with the default drawing: "over" (default) or "replace". */
+  @property({ attribute: 'draw-mode' }) drawMode = 'over';
+  /**
+   * Custom p5 drawing, called every frame with a DrawView (the p5 instance, the 2D context, interpolated particle
+   * positions, the topology and the world → canvas mapping), after the default drawing ("over") or instead ("replace").
+   */
+  @property({ attribute: false }) drawHook: DrawHook | null = null;
+
+  private client: EngineClient | null = null;
+  private renderer: SceneRenderer | null = null;
+  private generation = 0;
+  private loaded = false;
+  private nextKey = 1;
+  private keys = new WeakMap<Element, number>();
+  private readonly entries = new Map<number, Entry>();
+  private readonly ownReported = new Set<string>();
+  private collisionListeners = 0;
+  private eventsOn = false;
+  private drag: { id: number; grab: number | null; x: number; y: number; done: boolean } | null = null;
+  private readonly observer = new MutationObserver(() => this.sync());
+  private readyResolve: (() => void) | null = null;
+  private _ready: Promise<void> = this.newReady();
+
+  /** Resolves when the engine has loaded the scene (after each start). */
+  get ready(): Promise<void> {
+    return this._ready;
+  }
+
+  /** Where the engine runs ('worker' or 'main'), or null before it started. */
+  get mode(): 'worker' | 'main' | null {
+    return this.client?.mode ?? null;
+  }
+
+  /** How states reach the page, or null before the engine started. */
+  get transport(): Transport | null {
+    return this.client?.transport ?? null;
+  }
+
+  /** Frames drawn so far. */
+  get renderedFrames(): number {
+    return this.renderer?.drawn ?? 0;
+  }
+
+  /** The canvas, once p5 has made it. */
+  get canvas(): HTMLCanvasElement | null {
+    return this.renderer?.canvas ?? null;
+  }
+
+  /** Where the body elements live. Presets built on this class may keep generated bodies elsewhere. */
+  protected get bodyContainer(): ParentNode & Node {
+    return this;
+  }
+
+  // ---- public methods ----------------------------------------------------------------------------------------
+
+  /** Runs the simulation (clears `paused`). */
+  play(): void {
+    this.paused = false;
+  }
+
+  /** Stops the simulation (sets `paused`). */
+  pause(): void {
+    this.paused = true;
+  }
+
+  /** Takes `n` fixed steps now (also while paused). Resolves to the step count. */
+  async step(n = 1): Promise<number> {
+    await this.ready;
+    return this.client ? this.client.api.step(n) : 0;
+  }
+
+  /** Rebuilds the scene from its markup, at time 0. */
+  async reset(): Promise<void> {
+    await this.ready;
+    await this.client?.api.reset();
+  }
+
+  /** Where and how the engine runs, and what it holds. */
+  async diagnostics(): Promise<Diagnostics & { mode: 'worker' | 'main' }> {
+    await this.ready;
+    if (!this.client) throw new Error('<physics-scene> is not running');
+    return { ...(await this.client.api.diagnostics()), mode: this.client.mode };
+  }
+
+  /** A hash of the full simulation state: equal markup and equal steps give equal hashes in every mode. */
+  async stateHash(): Promise<string> {
+    await this.ready;
+    return this.client ? this.client.api.stateHash() : '';
+  }
+
+  /** The whole simulation state as plain data. */
+  async snapshot(): Promise<HostSnapshot> {
+    await this.ready;
+    if (!this.client) throw new Error('<physics-scene> is not running');
+    return this.client.api.snapshot();
+  }
+
+  /** Puts back a state from snapshot() (of this scene's markup). */
+  async restore(snapshot: HostSnapshot): Promise<void> {
+    await this.ready;
+    await this.client?.api.restore(snapshot);
+  }
+
+  /** A world point in viewport (client) coordinates, e.g. to place an overlay or synthesise pointer events. */
+  worldToClient(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!this.renderer || !canvas) return { x: NaN, y: NaN };
+    const r = canvas.getBoundingClientRect();
+    const p = this.renderer.worldToCanvas(x, y);
+    return { x: r.left + p.x, y: r.top + p.y };
+  }
+
+  /** A viewport point in world units. */
+  clientToWorld(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!this.renderer || !canvas) return { x: NaN, y: NaN };
+    const r = canvas.getBoundingClientRect();
+    return this.renderer.canvasToWorld(x - r.left, y - r.top);
+  }
+
+  // ---- lifecycle ---------------------------------------------------------------------------------------------
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    if (!this.client && !this.starting) void this.start();
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    // A move (disconnect then connect in the same task) keeps the running engine.
+    queueMicrotask(() => {
+      if (!this.isConnected) this.stop();
+    });
+  }
+
+  override addEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | AddEventListenerOptions): void {
+    if (!listener) return;
+    super.addEventListener(type, listener, options);
+    if (COLLISION_EVENTS.has(type) && listener) {
+      this.collisionListeners++;
+      this.updateEventFlag();
+    }
+  }
+
+  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | EventListenerOptions): void {
+    if (!listener) return;
+    super.removeEventListener(type, listener, options);
+    if (COLLISION_EVENTS.has(type) && listener && this.collisionListeners > 0) {
+      this.collisionListeners--;
+      this.updateEventFlag();
+    }
+  }
+
+  protected override render() {
+    return html`<div
+        class="stage"
+        part="stage"
+        @pointerdown=${this.onPointerDown}
+        @pointermove=${this.onPointerMove}
+        @pointerup=${this.onPointerUp}
+        @pointercancel=${this.onPointerUp}
+      ></div>
+      <slot></slot>`;
+  }
+
+  protected override updated(changed: Map<string, unknown>): void {
+    const config = this.config();
+    this.style.setProperty('--physics-scene-aspect', `${config.width} / ${config.height}`);
+    const r = this.renderer;
+    if (r) this.applyView(r, config);
+    if (changed.has('worker') && changed.get('worker') !== undefined && this.client) {
+      this.stop();
+      void this.start();
+      return;
+    }
+    const c = this.client;
+    if (!c || !this.loaded) return;
+    const params: Partial<HostParams> = {};
+    if (changed.has('gravity')) params.gravity = config.gravity;
+    if (changed.has('iterations')) params.iterations = config.iterations;
+    if (changed.has('substeps')) params.substeps = config.substeps;
+    if (changed.has('timestep')) params.timestep = config.timestep;
+    if (changed.has('broadphase')) params.broadphase = config.broadphase;
+    if (changed.has('debug')) params.debug = this.debug;
+    if (Object.keys(params).length > 0) c.api.setParams(params).then((e) => e && this.reportHostError(e), (e) => this.reportFailure(e));
+    if (changed.has('paused')) (this.paused ? c.api.pause() : c.api.play()).catch((e) => this.reportFailure(e));
+  }
+
+  private starting = false;
+
+  private newReady(): Promise<void> {
+    return new Promise((resolve) => (this.readyResolve = resolve));
+  }
+
+  private async start(): Promise<void> {
+    const gen = ++this.generation;
+    this.starting = true;
+    try {
+      await this.updateComplete;
+      if (gen !== this.generation || !this.isConnected) return;
+      const stage = this.renderRoot.querySelector('.stage') as HTMLElement;
+      this.renderer = new SceneRenderer(stage, () => this.client);
+      this.applyView(this.renderer, this.config());
+      this.observer.observe(this.bodyContainer, { childList: true, subtree: true, attributes: true, attributeFilter: ['id'] });
+      const client = await EngineClient.start({
+        worker: this.worker === 'none' ? 'none' : 'auto',
+        timeout: PhysicsSceneElement.callTimeout,
+        createWorker: PhysicsSceneElement.workerFactory ?? undefined,
+        onEvents: (data, count) => this.dispatchCollisions(data, count),
+        onError: (message) => this.report(this, 'worker', this.worker, message),
+      });
+      if (gen !== this.generation) {
+        client.dispose();
+        return;
+      }
+      this.client = client;
+      const scene = this.collect();
+      this.loaded = true;
+      const errors = await client.api.load(scene);
+      if (gen !== this.generation) return;
+      for (const e of errors) this.reportHostError(e);
+      this.dispatch('physics-ready', { mode: client.mode, transport: client.transport } satisfies PhysicsReadyDetail);
+      this.readyResolve?.();
+    } catch (error) {
+      if (gen === this.generation) this.reportFailure(error);
+    } finally {
+      if (gen === this.generation) {
+        this.starting = false;
+        // Never leave callers of ready waiting, also when the start failed.
+        this.readyResolve?.();
+      }
+    }
+  }
+
+  private stop(): void {
+    this.generation++;
+    this.starting = false;
+    this.observer.disconnect();
+    this.client?.dispose();
+    this.client = null;
+    this.renderer?.dispose();
+    this.renderer = null;
+    this.loaded = false;
+    this.drag = null;
+    for (const e of this.entries.values()) e.element._scene = null;
+    this.entries.clear();
+    this.keys = new WeakMap();
+    this.readyResolve?.();
+    this._ready = this.newReady();
+  }
+
+  // ---- configuration -----------------------------------------------------------------------------------------
+
+  private config(): Config {
+    const check = new Checker(this);
+    const width = check.number('width', this.width, { positive: true, fallback: 16 })!;
+    const height = check.number('height', this.height, { positive: true, fallback: 9 })!;
+    let gravity = { x: 0, y: 9.81 };
+    const g = check.numbers('gravity', this.gravity);
+    if (g && g.length === 2) gravity = { x: g[0], y: g[1] };
+    else if (g) check.fail('gravity', this.gravity, 'must be two numbers "x y"');
+    const iterations = check.number('iterations', this.iterations, { integer: true, min: 1, max: 1000, fallback: 1 })!;
+    const substeps = check.number('substeps', this.substeps, { integer: true, min: 1, max: 1000, fallback: 10 })!;
+    const timestep = check.number('timestep', this.timestep, { positive: true, max: 1, fallback: 1 / 60 })!;
+    const broadphase = check.oneOf('broadphase', this.broadphase, ['grid', 'brute'] as const, 'grid');
+    const narrowphase = check.oneOf('narrowphase', this.narrowphase, ['sat', 'gjk'] as const, 'sat');
+    const bounds = check.oneOf('bounds', this.bounds, ['view', 'none'] as const, 'view');
+    check.oneOf('worker', this.worker, ['auto', 'none'] as const, 'auto');
+    check.oneOf('draw-mode', this.drawMode, ['over', 'replace'] as const, 'over');
+    check.color('background', this.background, null);
+    this.reportProblems(this, check.problems, this.ownReported);
+    return { width, height, gravity, iterations, substeps, timestep, broadphase, narrowphase, bounds };
+  }
+
+  private applyView(r: SceneRenderer, config: Config): void {
+    r.viewWidth = config.width;
+    r.viewHeight = config.height;
+    r.background = new Checker(this).color('background', this.background, '#f7f5f0') ?? 'transparent';
+    r.debug = this.debug;
+    r.drawMode = this.drawMode === 'replace' ? 'replace' : 'over';
+    r.hook = this.drawHook;
+  }
+
+  // ---- children ----------------------------------------------------------------------------------------------
+
+  private childElements(): (PhysicsBodyElement | PhysicsLinkElement)[] {
+    const out: (PhysicsBodyElement | PhysicsLinkElement)[] = [];
+    for (const el of Array.from(this.bodyContainer.children)) {
+      if (el instanceof PhysicsBodyElement || el instanceof PhysicsLinkElement) out.push(el);
+    }
+    return out;
+  }
+
+  /** Reads every child into a scene description for load(). */
+  private collect(): HostScene {
+    const config = this.config();
+    const bodies: KeyedBody[] = [];
+    const links: KeyedLink[] = [];
+    const children = this.childElements();
+    for (const el of children) if (el instanceof PhysicsBodyElement) {
+      const key = this.adopt(el, 'body');
+      const desc = this.describeBody(this.entries.get(key)!);
+      if (desc) bodies.push({ key, desc });
+    }
+    for (const el of children) if (el instanceof PhysicsLinkElement) {
+      const key = this.adopt(el, 'link');
+      const desc = this.describeLink(this.entries.get(key)!);
+      if (desc) links.push({ key, desc });
+    }
+    return {
+      world: {
+        // Walls at the sides and a floor at the bottom; open at the top, so bodies may start above the view.
+        bounds: config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null,
+      },
+      params: {
+        gravity: config.gravity,
+        iterations: config.iterations,
+        substeps: config.substeps,
+        timestep: config.timestep,
+        broadphase: config.broadphase,
+        debug: this.debug,
+        events: this.wantsEvents(),
+      },
+      bodies,
+      links,
+      running: !this.paused,
+    };
+  }
+
+  private adopt(el: PhysicsBodyElement | PhysicsLinkElement, kind: 'body' | 'link'): number {
+    const key = this.nextKey++;
+    this.keys.set(el, key);
+    this.entries.set(key, { element: el, kind, sent: '', reported: new Set() });
+    el._scene = this;
+    return key;
+  }
+
+  private describeBody(entry: Entry): BodyDescription | null {
+    const el = entry.element as PhysicsBodyElement;
+    const { desc, problems } = el.describe();
+    const check = new Checker(el);
+    const style = el.styleOf(check);
+    this.reportProblems(el, [...problems, ...check.problems], entry.reported);
+    const key = this.keys.get(el)!;
+    this.renderer?.setStyle(key, style);
+    entry.sent = desc ? JSON.stringify(desc) : '';
+    return desc;
+  }
+
+  private describeLink(entry: Entry): LinkDescription | null {
+    const el = entry.element as PhysicsLinkElement;
+    const { desc, problems } = el.describe((id) => this.resolve(id));
+    this.reportProblems(el, problems, entry.reported);
+    entry.sent = desc ? JSON.stringify(desc) : '';
+    return desc;
+  }
+
+  private resolve(id: string): number | null {
+    for (const [key, e] of this.entries) if (e.kind === 'body' && e.element.id === id) return key;
+    return null;
+  }
+
+  /** Child list changed: add new children, remove gone ones, re-resolve links. */
+  private sync(): void {
+    const c = this.client;
+    if (!c || !this.loaded) return;
+    const children = this.childElements();
+    const present = new Set<Element>(children);
+    for (const [key, e] of [...this.entries]) {
+      if (present.has(e.element)) continue;
+      if (e.kind === 'body') {
+        c.api.removeBody(key).catch((err) => this.reportFailure(err));
+        this.renderer?.deleteStyle(key);
+      } else {
+        c.api.removeLink(key).catch((err) => this.reportFailure(err));
+      }
+      e.element._scene = null;
+      this.entries.delete(key);
+      this.keys.delete(e.element);
+    }
+    for (const el of children) {
+      if (this.keys.has(el) || !(el instanceof PhysicsBodyElement)) continue;
+      const key = this.adopt(el, 'body');
+      const desc = this.describeBody(this.entries.get(key)!);
+      if (desc) c.api.addBody({ key, desc }).then((e) => e && this.reportHostError(e), (err) => this.reportFailure(err));
+    }
+    for (const el of children) if (!this.keys.has(el) && el instanceof PhysicsLinkElement) this.adopt(el, 'link');
+    this.refreshLinks();
+  }
+
+  /** Re-describes every link (ids may now name other bodies) and sends the ones that changed. */
+  private refreshLinks(): void {
+    const c = this.client;
+    if (!c) return;
+    for (const [key, e] of this.entries) {
+      if (e.kind !== 'link') continue;
+      const before = e.sent;
+      const desc = this.describeLink(e);
+      if (e.sent === before) continue;
+      if (desc) c.api.updateLink({ key, desc }).then((err) => err && this.reportHostError(err), (err) => this.reportFailure(err));
+      else c.api.removeLink(key).catch((err) => this.reportFailure(err));
+    }
+  }
+
+  /** @internal */
+  childChanged(child: Element): void {
+    const c = this.client;
+    if (!c || !this.loaded) return;
+    const key = this.keys.get(child);
+    if (key === undefined) {
+      this.sync();
+      return;
+    }
+    const e = this.entries.get(key)!;
+    if (e.kind === 'link') {
+      this.refreshLinks();
+      return;
+    }
+    const before = e.sent;
+    const desc = this.describeBody(e);
+    if (e.sent !== before) {
+      if (desc) c.api.updateBody({ key, desc }).then((err) => err && this.reportHostError(err), (err) => this.reportFailure(err));
+      else c.api.removeBody(key).catch((err) => this.reportFailure(err));
+    }
+    this.refreshLinks();
+  }
+
+  /** @internal */
+  poseOf(child: Element): [number, number, number] | null {
+    const key = this.keys.get(child);
+    return key === undefined || !this.client ? null : this.client.pose(key);
+  }
+
+  /** @internal */
+  applyImpulse(child: Element, ix: number, iy: number): void {
+    const key = this.keys.get(child);
+    if (key !== undefined && this.client && Number.isFinite(ix) && Number.isFinite(iy)) this.client.api.applyImpulse(key, ix, iy).catch((e) => this.reportFailure(e));
+  }
+
+  /** @internal */
+  setVelocity(child: Element, vx: number, vy: number): void {
+    const key = this.keys.get(child);
+    if (key !== undefined && this.client && Number.isFinite(vx) && Number.isFinite(vy)) this.client.api.setVelocity(key, vx, vy).catch((e) => this.reportFailure(e));
+  }
+
+  // ---- events ------------------------------------------------------------------------------------------------
+
+  private wantsEvents(): boolean {
+    return this.collisionEvents || this.collisionListeners > 0;
+  }
+
+  private updateEventFlag(): void {
+    const on = this.wantsEvents();
+    if (on === this.eventsOn) return;
+    this.eventsOn = on;
+    if (this.client && this.loaded) this.client.api.setParams({ events: on }).catch((e) => this.reportFailure(e));
+  }
+
+  private dispatchCollisions(data: Float64Array, count: number): void {
+    for (let k = 0; k < count; k++) {
+      const o = k * EVENT;
+      const a = this.entries.get(data[o + 1])?.element ?? null;
+      const b = this.entries.get(data[o + 2])?.element ?? null;
+      const detail: PhysicsCollisionDetail = { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] };
+      this.dispatch(data[o] === 0 ? 'physics-collision' : 'physics-collision-end', detail);
+    }
+  }
+
+  private dispatch(type: string, detail: unknown, target: Element = this): void {
+    target.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+  }
+
+  private reportProblems(el: Element, problems: Problem[], reported: Set<string>): void {
+    const now = new Set<string>();
+    for (const p of problems) {
+      const id = `${p.attribute}\u0000${p.value}\u0000${p.message}`;
+      now.add(id);
+      if (!reported.has(id)) this.report(el, p.attribute, p.value, p.message);
+    }
+    reported.clear();
+    for (const id of now) reported.add(id);
+  }
+
+  /** A console warning naming the element, the attribute and the value, and a `physics-error` event. */
+  private report(el: Element, attribute: string, value: string, message: string): void {
+    console.warn(`${describeElement(el)} ${attribute ? `${attribute}="${value}"` : ''}: ${message}`);
+    const detail: PhysicsErrorDetail = { element: el, attribute, value, message };
+    this.dispatch('physics-error', detail, el.isConnected ? el : this);
+  }
+
+  private reportHostError(e: HostError): void {
+    const entry = this.entries.get(e.key);
+    const el = entry?.element ?? this;
+    const attribute = ENGINE_FIELDS[e.field] ?? e.field;
+    this.report(el, attribute, attribute ? (el.getAttribute(attribute) ?? '') : '', e.message);
+  }
+
+  private reportFailure(error: unknown): void {
+    if (!this.client && !this.starting) return;
+    this.report(this, '', '', `engine: ${error instanceof Error ? error.message : String(error)}`);
+  }
+
+  // ---- pointer -----------------------------------------------------------------------------------------------
+
+  private readonly onPointerDown = (e: PointerEvent): void => {
+    const c = this.client;
+    if (!c || !this.renderer || this.drag || (e.pointerType === 'mouse' && e.button !== 0)) return;
+    const p = this.clientToWorld(e.clientX, e.clientY);
+    if (!Number.isFinite(p.x)) return;
+    try {
+      (e.currentTarget as Element).setPointerCapture(e.pointerId);
+    } catch {
+      // Synthetic events have no active pointer to capture.
+    }
+    const drag = { id: e.pointerId, grab: null as number | null, x: p.x, y: p.y, done: false };
+    this.drag = drag;
+    e.preventDefault();
+    c.api.grab(p.x, p.y).then(
+      (g) => {
+        if (g === null) {
+          if (this.drag === drag) this.drag = null;
+          return;
+        }
+        if (drag.done || this.client !== c) {
+          c.api.release(g).catch(() => {});
+          return;
+        }
+        drag.grab = g;
+        c.api.moveGrab(g, drag.x, drag.y).catch(() => {});
+      },
+      () => {
+        if (this.drag === drag) this.drag = null;
+      },
+    );
+  };
+
+  private readonly onPointerMove = (e: PointerEvent): void => {
+    const d = this.drag;
+    if (!d || e.pointerId !== d.id || !this.client) return;
+    const p = this.clientToWorld(e.clientX, e.clientY);
+    if (!Number.isFinite(p.x)) return;
+    d.x = p.x;
+    d.y = p.y;
+    if (d.grab !== null) this.client.api.moveGrab(d.grab, p.x, p.y).catch(() => {});
+  };
+
+  private readonly onPointerUp = (e: PointerEvent): void => {
+    const d = this.drag;
+    if (!d || e.pointerId !== d.id) return;
+    d.done = true;
+    this.drag = null;
+    if (d.grab !== null) this.client?.api.release(d.grab).catch(() => {});
+    try {
+      (e.currentTarget as Element).releasePointerCapture(e.pointerId);
+    } catch {
+      // Not captured.
+    }
+  };
+}
+
+define('physics-scene', PhysicsSceneElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-scene': PhysicsSceneElement;
+  }
+}

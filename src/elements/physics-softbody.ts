@@ -1,0 +1,51 @@
+import { property } from 'lit/decorators.js';
+import type { BodyDescription } from '../engine/index.js';
+import { PhysicsBodyElement, type Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+
+/**
+ * A deformable ring centred at `x`, `y`: a pressurised loop (default) or a mass–spring wheel.
+ *
+ * @summary A soft body.
+ * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsSoftbodyElement extends PhysicsBodyElement {
+  /** Radius in world units (> 0). Default 1. */
+  @property({ type: Number }) radius?: number;
+  /** Particles on the ring (whole number >= 3). Default 16. */
+  @property({ type: Number }) segments?: number;
+  /** Rest area as a multiple of the drawn area (pressure model). Default 1. */
+  @property({ type: Number }) pressure?: number;
+  /** "pressure" (default) or "springs". */
+  @property() model?: string;
+  /** Compliance of the ring's links. Default 0.0001. */
+  @property({ type: Number }) compliance?: number;
+
+  describe(): Described<BodyDescription> {
+    const check = new Checker(this);
+    const { x, y } = this.declared;
+    const center = { x: check.number('x', x, { fallback: 0 })!, y: check.number('y', y, { fallback: 0 })! };
+    const radius = check.number('radius', this.radius, { positive: true, fallback: 1 })!;
+    const segments = check.number('segments', this.segments, { integer: true, min: 3, max: 4096, fallback: 16 })!;
+    const pressure = check.number('pressure', this.pressure, { positive: true, fallback: 1 })!;
+    const model = check.oneOf('model', this.model, ['pressure', 'springs'] as const, 'pressure');
+    const out: Record<string, unknown> = { type: 'softbody', center, radius, segments, pressure, model };
+    const compliance = check.number('compliance', this.compliance, { min: 0 });
+    if (compliance !== undefined) out.compliance = compliance;
+    this.material(check, out, Math.PI * radius * radius);
+    if (check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
+    return { desc: out as unknown as BodyDescription, problems: check.problems };
+  }
+
+  protected defaultStyle() {
+    return { fill: '#d45d79', stroke: '#8f2f47' };
+  }
+}
+
+define('physics-softbody', PhysicsSoftbodyElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-softbody': PhysicsSoftbodyElement;
+  }
+}

@@ -1,0 +1,48 @@
+import { property } from 'lit/decorators.js';
+import type { LinkDescription } from '../worker/protocol.js';
+import type { Described } from './body-element.js';
+import { Checker, define } from './checks.js';
+import { PhysicsLinkElement, type Resolve } from './link-element.js';
+
+/**
+ * A damped Hooke spring between body `a` and body `b` (element ids), attached at their particles nearest to the
+ * anchor `x`, `y` (or nearest to each other).
+ *
+ * @summary A spring between two bodies.
+ * @fires physics-error - A missing id or a bad value (detail: element, attribute, value, message); bubbles to the scene.
+ */
+export class PhysicsSpringElement extends PhysicsLinkElement {
+  /** Id of the first body element. */
+  @property() a?: string;
+  /** Id of the second body element. */
+  @property() b?: string;
+  /** Hooke constant (force per unit length, >= 0). Default 50. */
+  @property({ type: Number }) stiffness?: number;
+  /** Damping (force per unit relative speed, >= 0). Default 1. */
+  @property({ type: Number }) damping?: number;
+  /** Rest length; default the distance when the spring is made. */
+  @property({ type: Number }) length?: number;
+
+  describe(resolve: Resolve): Described<LinkDescription> {
+    const check = new Checker(this);
+    const a = this.resolveBody(check, 'a', this.a, resolve);
+    const b = this.resolveBody(check, 'b', this.b, resolve);
+    const stiffness = check.number('stiffness', this.stiffness, { min: 0, fallback: 50 })!;
+    const damping = check.number('damping', this.damping, { min: 0, fallback: 1 });
+    const length = check.number('length', this.length, { min: 0 });
+    if (a === null || b === null) return { desc: null, problems: check.problems };
+    if (a === b) {
+      check.fail('b', this.b, 'must name a different body than a');
+      return { desc: null, problems: check.problems };
+    }
+    return { desc: { type: 'spring', a, b, ...this.anchor(check), stiffness, damping, length }, problems: check.problems };
+  }
+}
+
+define('physics-spring', PhysicsSpringElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-spring': PhysicsSpringElement;
+  }
+}

@@ -1,0 +1,447 @@
+// Draws the newest physics state with p5 into a canvas inside a shadow root. Positions are interpolated between the
+// two newest published frames, the world's viewBox is fitted into the element's box keeping its aspect ratio
+// (like SVG's preserveAspectRatio="xMidYMid meet"), and bodies are drawn in batches: one canvas path per style.
+import p5 from 'p5';
+import { F, HEADER, POSE, type Topology, type TopologyBody } from '../worker/protocol.js';
+import type { FrameStore } from '../worker/client.js';
+import { track } from '../worker/resources.js';
+
+p5.disableFriendlyErrors = true;
+
+export interface BodyStyle {
+  /** CSS colour or null for none. */
+  fill: string | null;
+  stroke: string | null;
+  /** Stroke width in CSS pixels. */
+  lineWidth: number;
+}
+
+/** What a custom drawing hook receives each frame. */
+export interface DrawView {
+  /** The p5 instance (instance mode): use its drawing functions, in canvas CSS pixels. */
+  p: p5;
+  /** The canvas 2D context, for batched drawing. */
+  ctx: CanvasRenderingContext2D;
+  /** Interpolated particle positions in world units: x at 2·i, y at 2·i + 1 (i = particle storage index). */
+  positions: Float64Array;
+  topology: Topology;
+  /** The newest frame (see F in worker/protocol.ts for its header). */
+  frame: Float64Array;
+  /** World → canvas CSS pixels: px = offsetX + x · scale, py = offsetY + y · scale. */
+  scale: number;
+  offsetX: number;
+  offsetY: number;
+  /** Blend factor between the two newest frames that was used. */
+  alpha: number;
+}
+
+export type DrawHook = (view: DrawView) => void;
+
+/** Where the renderer reads frames from (an EngineClient). */
+export interface FrameSource {
+  readonly frames: FrameStore;
+  readonly topology: Topology | null;
+  poll(): void;
+}
+
+/** Ragdoll bones as particle pairs (the builder's order: head, neck, pelvis, elbows, hands, knees, feet). */
+const RAGDOLL_BONES = [0, 1, 1, 2, 1, 3, 3, 4, 1, 5, 5, 6, 2, 7, 7, 8, 2, 9, 9, 10];
+
+interface Group {
+  style: BodyStyle;
+  bodies: number[];
+  /** 'shape': closed outlines and discs; 'line': polylines; 'cloth'; 'ragdoll'. */
+  kind: 'shape' | 'line' | 'cloth' | 'ragdoll';
+}
+
+function shapeKind(b: TopologyBody): Group['kind'] {
+  if (b.type === 'rope') return 'line';
+  if (b.type === 'cloth') return 'cloth';
+  if (b.type === 'ragdoll') return 'ragdoll';
+  return 'shape';
+}
+
+export class SceneRenderer {
+  /** World units shown across and down (the viewBox, origin at the top-left). */
+  viewWidth = 16;
+  viewHeight = 9;
+  background = '#f7f5f0';
+  debug = false;
+  /** 'over': the hook draws on top of the default drawing; 'replace': instead of it. */
+  drawMode: 'over' | 'replace' = 'over';
+  hook: DrawHook | null = null;
+  /** Frames drawn (for tests and diagnostics). */
+  drawn = 0;
+
+  private readonly styles = new Map<number, BodyStyle>();
+  private groups: Group[] = [];
+  private groupsFor: Topology | null = null;
+  private positions = new Float64Array(64);
+  private readonly instance: p5;
+  private readonly observer: ResizeObserver;
+  private scale = 1;
+  private offsetX = 0;
+  private offsetY = 0;
+  private cssWidth = 1;
+  private cssHeight = 1;
+  private ready = false;
+  private removed = false;
+
+  constructor(
+    private readonly container: HTMLElement,
+    private readonly source: () => FrameSource | null,
+  ) {
+    this.instance = new p5((s: p5) => {
+      s.setup = () => {
+        const { width, height } = this.boxSize();
+        s.pixelDensity(Math.max(1, Math.min(3, window.devicePixelRatio || 1)));
+        const renderer = s.createCanvas(width, height);
+        const canvas = (renderer as unknown as { elt: HTMLCanvasElement }).elt;
+        canvas.setAttribute('part', 'canvas');
+        canvas.style.display = 'block';
+        this.cssWidth = width;
+        this.cssHeight = height;
+        this.ready = true;
+      };
+      s.draw = () => this.draw(s);
+    }, container);
+    track('sketches', 1);
+    this.observer = new ResizeObserver(() => this.resize());
+    this.observer.observe(container);
+    track('observers', 1);
+  }
+
+  get canvas(): HTMLCanvasElement | null {
+    return this.container.querySelector('canvas');
+  }
+
+  /** True once p5 has made the canvas. */
+  get isReady(): boolean {
+    return this.ready;
+  }
+
+  setStyle(key: number, style: BodyStyle): void {
+    this.styles.set(key, style);
+    this.groupsFor = null;
+  }
+
+  deleteStyle(key: number): void {
+    this.styles.delete(key);
+    this.groupsFor = null;
+  }
+
+  /** World point → canvas CSS pixels (relative to the canvas' top-left corner). */
+  worldToCanvas(x: number, y: number): { x: number; y: number } {
+    this.fit();
+    return { x: this.offsetX + x * this.scale, y: this.offsetY + y * this.scale };
+  }
+
+  canvasToWorld(x: number, y: number): { x: number; y: number } {
+    this.fit();
+    return { x: (x - this.offsetX) / this.scale, y: (y - this.offsetY) / this.scale };
+  }
+
+  /** Device pixels per CSS pixel of the canvas. */
+  get pixelRatio(): number {
+    return this.ready ? this.instance.pixelDensity() : 1;
+  }
+
+  dispose(): void {
+    if (this.removed) return;
+    this.removed = true;
+    this.observer.disconnect();
+    track('observers', -1);
+    void this.instance.remove();
+    track('sketches', -1);
+  }
+
+  private boxSize(): { width: number; height: number } {
+    const r = this.container.getBoundingClientRect();
+    return { width: Math.max(1, Math.round(r.width)), height: Math.max(1, Math.round(r.height)) };
+  }
+
+  private resize(): void {
+    if (!this.ready || this.removed) return;
+    const { width, height } = this.boxSize();
+    if (width === this.cssWidth && height === this.cssHeight) return;
+    this.cssWidth = width;
+    this.cssHeight = height;
+    this.instance.resizeCanvas(width, height);
+  }
+
+  /** viewBox fit: the whole world box visible, centred, aspect ratio kept. */
+  private fit(): void {
+    const s = Math.min(this.cssWidth / this.viewWidth, this.cssHeight / this.viewHeight);
+    this.scale = s > 0 && Number.isFinite(s) ? s : 1;
+    this.offsetX = (this.cssWidth - this.viewWidth * this.scale) / 2;
+    this.offsetY = (this.cssHeight - this.viewHeight * this.scale) / 2;
+  }
+
+  private rebuildGroups(t: Topology): void {
+    const byKey = new Map<string, Group>();
+    this.groups = [];
+    t.bodies.forEach((b, k) => {
+      const style = this.styles.get(b.key) ?? { fill: '#888888', stroke: null, lineWidth: 1 };
+      const kind = shapeKind(b);
+      const id = `${kind}|${style.fill}|${style.stroke}|${style.lineWidth}`;
+      let g = byKey.get(id);
+      if (!g) {
+        g = { style, bodies: [], kind };
+        byKey.set(id, g);
+        this.groups.push(g);
+      }
+      g.bodies.push(k);
+    });
+    this.groupsFor = t;
+  }
+
+  private draw(s: p5): void {
+    const src = this.source();
+    if (!src || this.removed) return;
+    src.poll();
+    const t = src.topology;
+    const frames = src.frames;
+    const f = frames.curr;
+    if (!t || frames.received === 0 || f[F.topology] !== t.version) return;
+    this.fit();
+    if (this.groupsFor !== t) this.rebuildGroups(t);
+    const alpha = this.interpolate(frames);
+    const ctx = s.drawingContext as CanvasRenderingContext2D;
+    s.background(this.background);
+    if (this.drawMode === 'over' || !this.hook) this.drawBodies(ctx, t, f);
+    if (this.debug) this.drawDebug(ctx, t, f);
+    if (this.hook) {
+      ctx.save();
+      try {
+        this.hook({ p: s, ctx, positions: this.positions, topology: t, frame: f, scale: this.scale, offsetX: this.offsetX, offsetY: this.offsetY, alpha });
+      } catch (error) {
+        console.warn('<physics-scene> draw hook threw:', error);
+      }
+      ctx.restore();
+    }
+    this.drawn++;
+  }
+
+  /** Blends the two newest frames into `positions`; returns the blend factor. */
+  private interpolate(frames: FrameStore): number {
+    const f = frames.curr;
+    const prev = frames.prev;
+    const n = f[F.particles];
+    if (this.positions.length < 2 * n) this.positions = new Float64Array(Math.ceil(2 * n * 1.5));
+    const pos = this.positions;
+    let alpha = 1;
+    const interval = (f[F.time] - prev[F.time]) * 1000;
+    if (frames.received > 1 && prev[F.topology] === f[F.topology] && prev[F.particles] === n && interval > 0 && f[F.running]) {
+      alpha = Math.min(1, Math.max(0, (performance.now() - frames.currAt) / interval));
+    }
+    if (alpha >= 1) {
+      for (let i = 0; i < 2 * n; i++) pos[i] = f[HEADER + i];
+    } else {
+      const a = alpha;
+      const b = 1 - alpha;
+      for (let i = 0; i < 2 * n; i++) pos[i] = prev[HEADER + i] * b + f[HEADER + i] * a;
+    }
+    return alpha;
+  }
+
+  private drawBodies(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {
+    const pos = this.positions;
+    const s = this.scale;
+    const ox = this.offsetX;
+    const oy = this.offsetY;
+    const X = (i: number) => ox + pos[2 * i] * s;
+    const Y = (i: number) => oy + pos[2 * i + 1] * s;
+    ctx.lineJoin = 'round';
+    ctx.lineCap = 'round';
+    for (const g of this.groups) {
+      const { fill, stroke, lineWidth } = g.style;
+      ctx.beginPath();
+      if (g.kind === 'shape') {
+        for (const k of g.bodies) {
+          const b = t.bodies[k];
+          const idx = b.indices;
+          if (b.type === 'circle') {
+            const i = idx[0];
+            const r = (b.radius ?? 0.5) * s;
+            ctx.moveTo(X(i) + r, Y(i));
+            ctx.arc(X(i), Y(i), r, 0, Math.PI * 2);
+            // A spoke shows the rotation of rigid shapes; a lone particle has none to show.
+            continue;
+          }
+          const n = b.ring ?? idx.length;
+          ctx.moveTo(X(idx[0]), Y(idx[0]));
+          for (let q = 1; q < n; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
+          ctx.closePath();
+        }
+        if (fill) {
+          ctx.fillStyle = fill;
+          ctx.fill();
+        }
+        if (stroke) {
+          ctx.strokeStyle = stroke;
+          ctx.lineWidth = lineWidth;
+          ctx.stroke();
+        }
+      } else if (g.kind === 'line') {
+        let width = lineWidth;
+        for (const k of g.bodies) {
+          const b = t.bodies[k];
+          const idx = b.indices;
+          width = Math.max(width, 2 * (b.radius ?? 0) * s);
+          ctx.moveTo(X(idx[0]), Y(idx[0]));
+          for (let q = 1; q < idx.length; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
+        }
+        ctx.strokeStyle = stroke ?? fill ?? '#000';
+        ctx.lineWidth = width;
+        ctx.stroke();
+      } else if (g.kind === 'cloth') {
+        if (fill) {
+          for (const k of g.bodies) {
+            const b = t.bodies[k];
+            const idx = b.indices;
+            const cols = b.columns ?? 2;
+            const rows = b.rows ?? 2;
+            for (let r = 0; r + 1 < rows; r++) {
+              for (let c = 0; c + 1 < cols; c++) {
+                const a = idx[r * cols + c];
+                ctx.moveTo(X(a), Y(a));
+                ctx.lineTo(X(idx[r * cols + c + 1]), Y(idx[r * cols + c + 1]));
+                ctx.lineTo(X(idx[(r + 1) * cols + c + 1]), Y(idx[(r + 1) * cols + c + 1]));
+                ctx.lineTo(X(idx[(r + 1) * cols + c]), Y(idx[(r + 1) * cols + c]));
+                ctx.closePath();
+              }
+            }
+          }
+          ctx.fillStyle = fill;
+          ctx.fill();
+        }
+        if (stroke) {
+          ctx.beginPath();
+          for (const k of g.bodies) {
+            const b = t.bodies[k];
+            const idx = b.indices;
+            const cols = b.columns ?? 2;
+            const rows = b.rows ?? 2;
+            for (let r = 0; r < rows; r++) {
+              ctx.moveTo(X(idx[r * cols]), Y(idx[r * cols]));
+              for (let c = 1; c < cols; c++) ctx.lineTo(X(idx[r * cols + c]), Y(idx[r * cols + c]));
+            }
+            for (let c = 0; c < cols; c++) {
+              ctx.moveTo(X(idx[c]), Y(idx[c]));
+              for (let r = 1; r < rows; r++) ctx.lineTo(X(idx[r * cols + c]), Y(idx[r * cols + c]));
+            }
+          }
+          ctx.strokeStyle = stroke;
+          ctx.lineWidth = lineWidth;
+          ctx.stroke();
+        }
+      } else {
+        // Ragdolls: bones as thick strokes, heads as discs.
+        let width = 2;
+        for (const k of g.bodies) {
+          const b = t.bodies[k];
+          const idx = b.indices;
+          width = Math.max(width, (b.radius ?? 0.1) * 0.7 * s);
+          for (let q = 0; q < RAGDOLL_BONES.length; q += 2) {
+            ctx.moveTo(X(idx[RAGDOLL_BONES[q]]), Y(idx[RAGDOLL_BONES[q]]));
+            ctx.lineTo(X(idx[RAGDOLL_BONES[q + 1]]), Y(idx[RAGDOLL_BONES[q + 1]]));
+          }
+        }
+        ctx.strokeStyle = stroke ?? fill ?? '#333';
+        ctx.lineWidth = width;
+        ctx.stroke();
+        ctx.beginPath();
+        for (const k of g.bodies) {
+          const b = t.bodies[k];
+          const head = b.indices[0];
+          const r = (b.radius ?? 0.1) * s;
+          ctx.moveTo(X(head) + r, Y(head));
+          ctx.arc(X(head), Y(head), r, 0, Math.PI * 2);
+        }
+        ctx.fillStyle = fill ?? stroke ?? '#333';
+        ctx.fill();
+      }
+    }
+    // Joints and springs: thin lines between the particles they hold.
+    if (t.links.length > 0) {
+      ctx.beginPath();
+      for (let k = 0; k < t.links.length; k += 2) {
+        const a = t.links[k];
+        const b = t.links[k + 1];
+        if (a === b) {
+          ctx.moveTo(X(a) + 3, Y(a));
+          ctx.arc(X(a), Y(a), 3, 0, Math.PI * 2);
+        } else {
+          ctx.moveTo(X(a), Y(a));
+          ctx.lineTo(X(b), Y(b));
+        }
+      }
+      ctx.strokeStyle = '#555';
+      ctx.lineWidth = 1.5;
+      ctx.stroke();
+    }
+  }
+
+  private drawDebug(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {
+    const s = this.scale;
+    const ox = this.offsetX;
+    const oy = this.offsetY;
+    const n = f[F.particles];
+    const b = f[F.bodies];
+    if (!f[F.debug]) return;
+    // Grid cells of the broad phase.
+    const cell = f[F.cellSize];
+    if (cell > 0 && this.viewWidth / cell < 400 && this.viewHeight / cell < 400) {
+      ctx.beginPath();
+      for (let x = 0; x <= this.viewWidth; x += cell) {
+        ctx.moveTo(ox + x * s, oy);
+        ctx.lineTo(ox + x * s, oy + this.viewHeight * s);
+      }
+      for (let y = 0; y <= this.viewHeight; y += cell) {
+        ctx.moveTo(ox, oy + y * s);
+        ctx.lineTo(ox + this.viewWidth * s, oy + y * s);
+      }
+      ctx.strokeStyle = 'rgba(0, 0, 0, 0.12)';
+      ctx.lineWidth = 1;
+      ctx.stroke();
+    }
+    // AABBs.
+    let o = HEADER + 2 * n + POSE * b;
+    ctx.beginPath();
+    for (let k = 0; k < b && k < t.bodies.length; k++) {
+      const x0 = f[o++];
+      const y0 = f[o++];
+      const x1 = f[o++];
+      const y1 = f[o++];
+      if (Number.isFinite(x0)) ctx.rect(ox + x0 * s, oy + y0 * s, (x1 - x0) * s, (y1 - y0) * s);
+    }
+    ctx.strokeStyle = 'rgba(200, 0, 200, 0.8)';
+    ctx.lineWidth = 1;
+    ctx.stroke();
+    // Contacts: a dot and the normal.
+    const c = f[F.contacts];
+    ctx.beginPath();
+    const dots = o;
+    for (let k = 0; k < c; k++) {
+      const x = ox + f[o] * s;
+      const y = oy + f[o + 1] * s;
+      ctx.moveTo(x, y);
+      ctx.lineTo(x + f[o + 2] * 12, y + f[o + 3] * 12);
+      o += 4;
+    }
+    ctx.strokeStyle = '#d00';
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    ctx.beginPath();
+    o = dots;
+    for (let k = 0; k < c; k++) {
+      const x = ox + f[o] * s;
+      const y = oy + f[o + 1] * s;
+      ctx.moveTo(x + 2.5, y);
+      ctx.arc(x, y, 2.5, 0, Math.PI * 2);
+      o += 4;
+    }
+    ctx.fillStyle = '#d00';
+    ctx.fill();
+  }
+}

@@ -1,0 +1,257 @@
+// The page's side of the engine: starts the comlink worker (or, with worker="none" or when no Worker can be made, an
+// EngineHost on the main thread), gives every call a timeout, and keeps the two newest published frames for the
+// renderer. Both modes expose the same promise-returning EngineApi.
+import * as Comlink from 'comlink';
+import { EngineHost } from './engine-host.js';
+import { TripleBuffer } from './triple-buffer.js';
+import { TripleBufferPublisher } from './publishers.js';
+import { F, HEADER, POSE, type EngineApi, type PortMessage, type Topology, type Transport } from './protocol.js';
+import type { WorkerEndpoint } from './engine.worker.js';
+import { track } from './resources.js';
+
+export type Remote = { [K in keyof EngineApi]: (...args: Parameters<EngineApi[K]>) => Promise<ReturnType<EngineApi[K]>> };
+
+export interface ClientOptions {
+  /** 'auto' (default): a worker when possible; 'none': the main thread. */
+  worker?: 'auto' | 'none';
+  /** Milliseconds a call (and the worker's start) may take before it fails. Default 8000. */
+  timeout?: number;
+  /** Makes the worker (tests replace it). */
+  createWorker?: () => Worker;
+  onTopology?: (topology: Topology) => void;
+  onEvents?: (data: Float64Array, count: number) => void;
+  /** Problems after start: the worker died, a call timed out, the fallback to the main thread. */
+  onError?: (message: string) => void;
+}
+
+/** The bundler (rollup.config.js) emits this worker as its own chunk, or inlines it as a blob: URL. */
+export function createEngineWorker(): Worker {
+  return new Worker(new URL('./engine.worker.js', import.meta.url), { type: 'module' });
+}
+
+export class TimeoutError extends Error {}
+
+/** The two newest frames, copied out of whatever carried them (no allocation unless the scene grows). */
+export class FrameStore {
+  prev = new Float64Array(HEADER);
+  curr = new Float64Array(HEADER);
+  /** performance.now() when each arrived. */
+  prevAt = 0;
+  currAt = 0;
+  /** Frames received so far. */
+  received = 0;
+
+  accept(src: Float64Array): void {
+    if (this.received > 0 && src[F.seq] === this.curr[F.seq]) return;
+    const length = frameSize(src);
+    const spare = this.prev;
+    this.prev = this.curr;
+    this.prevAt = this.currAt;
+    this.curr = spare.length >= length ? spare : new Float64Array(Math.ceil(length * 1.5));
+    this.curr.set(src.subarray(0, length));
+    this.currAt = performance.now();
+    this.received++;
+  }
+}
+
+function frameSize(f: Float64Array): number {
+  const n = f[F.particles];
+  const b = f[F.bodies];
+  return HEADER + 2 * n + POSE * b + (f[F.debug] ? 4 * b + 4 * f[F.contacts] : 0);
+}
+
+export class EngineClient {
+  readonly frames = new FrameStore();
+  /** Newest topology (null until the first scene is loaded). */
+  topology: Topology | null = null;
+  readonly api: Remote;
+  private triple: TripleBuffer | null = null;
+  private disposed = false;
+  private readonly pending = new Set<(error: Error) => void>();
+
+  private constructor(
+    /** 'worker' or 'main': where the engine runs. */
+    readonly mode: 'worker' | 'main',
+    readonly transport: Transport,
+    private readonly invoke: (method: keyof EngineApi, args: unknown[]) => Promise<unknown>,
+    private readonly teardown: () => void,
+    private readonly options: ClientOptions,
+  ) {
+    const timeout = options.timeout ?? 8000;
+    this.api = new Proxy({} as Remote, {
+      get: (_, method: string) => (...args: unknown[]) => this.call(method as keyof EngineApi, args, timeout),
+    });
+  }
+
+  /**
+   * Starts an engine. In 'auto' mode a worker that cannot be created, fails to load or does not answer in time is
+   * reported through onError and replaced by the main-thread engine: the promise never hangs.
+   */
+  static async start(options: ClientOptions = {}): Promise<EngineClient> {
+    if ((options.worker ?? 'auto') !== 'none') {
+      try {
+        return await EngineClient.startWorker(options);
+      } catch (error) {
+        options.onError?.(`engine worker failed, running on the main thread instead: ${error instanceof Error ? error.message : String(error)}`);
+      }
+    }
+    return EngineClient.startMain(options);
+  }
+
+  private static async startWorker(options: ClientOptions): Promise<EngineClient> {
+    if (typeof Worker !== 'function') throw new Error('Worker is not available');
+    const worker = (options.createWorker ?? createEngineWorker)();
+    track('workers', 1);
+    let terminated = false;
+    const terminate = () => {
+      if (terminated) return;
+      terminated = true;
+      worker.terminate();
+      track('workers', -1);
+    };
+    const remote = Comlink.wrap<WorkerEndpoint>(worker);
+    const channel = new MessageChannel();
+    let client: EngineClient | null = null;
+    let failed: ((error: Error) => void) | null = null;
+    const onError = (event: ErrorEvent | MessageEvent) => {
+      const message = 'message' in event && typeof event.message === 'string' && event.message ? event.message : 'the worker script failed to load';
+      const error = new Error(message);
+      if (failed) failed(error);
+      if (client) {
+        client.failAll(error);
+        client.options.onError?.(`engine worker error: ${message}`);
+      }
+    };
+    worker.addEventListener('error', onError);
+    worker.addEventListener('messageerror', onError);
+    const cleanup = () => {
+      worker.removeEventListener('error', onError);
+      worker.removeEventListener('messageerror', onError);
+      remote[Comlink.releaseProxy]();
+      channel.port1.close();
+      terminate();
+    };
+    try {
+      const ready = remote.init(Comlink.transfer(channel.port2, [channel.port2]), typeof SharedArrayBuffer === 'function' && globalThis.crossOriginIsolated === true);
+      const info = await new Promise<{ transport: Transport }>((resolve, reject) => {
+        failed = reject;
+        const timer = setTimeout(() => reject(new TimeoutError(`the worker did not answer within ${options.timeout ?? 8000} ms`)), options.timeout ?? 8000);
+        ready.then(resolve, reject).finally(() => clearTimeout(timer));
+      });
+      failed = null;
+      client = new EngineClient('worker', info.transport, (method, args) => remote.invoke(method, args), cleanup, options);
+      const c = client;
+      channel.port1.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data, channel.port1);
+      return client;
+    } catch (error) {
+      cleanup();
+      throw error;
+    }
+  }
+
+  private static startMain(options: ClientOptions): EngineClient {
+    let client: EngineClient;
+    const publisher = new TripleBufferPublisher('direct', (buffer) => {
+      client.triple = new TripleBuffer(buffer);
+    });
+    const host = new EngineHost(publisher, {
+      topology: (topology) => client.receive({ type: 'topology', topology }, null),
+      events: (data, count) => client.receive({ type: 'events', data, count }, null),
+    });
+    track('hosts', 1);
+    client = new EngineClient(
+      'main',
+      'direct',
+      async (method, args) => (host[method] as (...a: unknown[]) => unknown)(...args),
+      () => {
+        host.dispose();
+        track('hosts', -1);
+      },
+      options,
+    );
+    return client;
+  }
+
+  private call(method: keyof EngineApi, args: unknown[], timeout: number): Promise<unknown> {
+    if (this.disposed) return Promise.reject(new Error(`engine stopped (${method})`));
+    return new Promise((resolve, reject) => {
+      const fail = (error: Error) => {
+        clearTimeout(timer);
+        this.pending.delete(fail);
+        track('pendingCalls', -1);
+        reject(error);
+      };
+      const timer = setTimeout(() => fail(new TimeoutError(`${method}() did not answer within ${timeout} ms`)), timeout);
+      this.pending.add(fail);
+      track('pendingCalls', 1);
+      this.invoke(method, args).then(
+        (value) => {
+          if (!this.pending.has(fail)) return;
+          clearTimeout(timer);
+          this.pending.delete(fail);
+          track('pendingCalls', -1);
+          this.poll();
+          resolve(value);
+        },
+        (error) => {
+          if (this.pending.has(fail)) fail(error instanceof Error ? error : new Error(String(error)));
+        },
+      );
+    });
+  }
+
+  private failAll(error: Error): void {
+    for (const fail of [...this.pending]) fail(error);
+  }
+
+  private receive(message: PortMessage, port: MessagePort | null): void {
+    if (this.disposed) return;
+    switch (message.type) {
+      case 'frame':
+        this.frames.accept(new Float64Array(message.buffer));
+        port?.postMessage({ type: 'recycle', buffer: message.buffer }, [message.buffer]);
+        break;
+      case 'shared':
+        this.triple = new TripleBuffer(message.buffer);
+        this.poll();
+        break;
+      case 'topology':
+        this.topology = message.topology;
+        this.options.onTopology?.(message.topology);
+        break;
+      case 'events':
+        this.options.onEvents?.(message.data, message.count);
+        break;
+    }
+  }
+
+  /** Takes the newest frame from the shared (or main-thread) triple buffer, if there is a newer one. */
+  poll(): void {
+    const f = this.triple?.read();
+    if (f) this.frames.accept(f);
+  }
+
+  /** The pose [x, y, angle] of a body in the newest frame, or null. */
+  pose(key: number): [number, number, number] | null {
+    this.poll();
+    const t = this.topology;
+    const f = this.frames.curr;
+    if (!t || this.frames.received === 0 || f[F.topology] !== t.version) return null;
+    const k = t.bodies.findIndex((b) => b.key === key);
+    if (k < 0) return null;
+    const o = HEADER + 2 * f[F.particles] + POSE * k;
+    return [f[o], f[o + 1], f[o + 2]];
+  }
+
+  get alive(): boolean {
+    return !this.disposed;
+  }
+
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.failAll(new Error('engine stopped'));
+    this.teardown();
+    this.triple = null;
+  }
+}

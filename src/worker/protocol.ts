@@ -1,0 +1,183 @@
+// What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
+// and in the worker), and the layout of one published state frame (a Float64Array).
+import type { BodyDescription, BodyKind, BodyType, WorldOptions } from '../engine/index.js';
+
+/** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
+export interface KeyedBody {
+  key: number;
+  desc: BodyDescription;
+}
+
+/**
+ * A link between bodies, named by body keys. Each end attaches to the body's particle nearest to the anchor
+ * (`x`, `y`), or, without an anchor, to the particles of the two bodies nearest to each other.
+ */
+export type LinkDescription =
+  | { type: 'joint'; a: number; b: number; x?: number; y?: number; compliance?: number; length?: number }
+  | { type: 'spring'; a: number; b: number; x?: number; y?: number; stiffness: number; damping?: number; length?: number }
+  /** Pins body `a` to the world point (x, y) (its particle nearest to it, or `particle`, an index into the body). */
+  | { type: 'pin'; a: number; x: number; y: number; particle?: number; compliance?: number };
+
+export interface KeyedLink {
+  key: number;
+  desc: LinkDescription;
+}
+
+/** Run-time parameters; every field optional in updates. */
+export interface HostParams {
+  gravity: { x: number; y: number };
+  timestep: number;
+  substeps: number;
+  iterations: number;
+  broadphase: 'grid' | 'brute';
+  /** Write AABBs, contacts and the grid cell size into frames. */
+  debug: boolean;
+  /** Send collision events (only while someone listens). */
+  events: boolean;
+}
+
+export interface HostScene {
+  world: WorldOptions;
+  params?: Partial<HostParams>;
+  bodies: KeyedBody[];
+  links: KeyedLink[];
+  /** Start running at once (default false). */
+  running?: boolean;
+}
+
+/** What the renderer needs to draw a body: its particles (storage indices) and its shape. */
+export interface TopologyBody {
+  key: number;
+  type: BodyType;
+  kind: BodyKind;
+  indices: Int32Array;
+  /** Cloth grid size. */
+  columns?: number;
+  rows?: number;
+  /** Circles, rope thickness, ragdoll head: a drawing radius in world units. */
+  radius?: number;
+  /** Soft bodies of the springs model carry a hub particle after the ring. */
+  ring?: number;
+}
+
+export interface Topology {
+  version: number;
+  bodies: TopologyBody[];
+  /** Links as particle index pairs (joints and springs; pins use the same particle twice), for drawing. */
+  links: Float64Array;
+}
+
+export type Transport = 'shared' | 'transfer' | 'direct';
+
+export interface Diagnostics {
+  /** True when the engine code runs inside a DedicatedWorkerGlobalScope. */
+  inWorker: boolean;
+  transport: Transport;
+  crossOriginIsolated: boolean;
+  running: boolean;
+  stepCount: number;
+  particleCount: number;
+  bodyCount: number;
+  linkCount: number;
+  /** Frames published, and frames skipped because every pooled transfer buffer was in flight. */
+  published: number;
+  skipped: number;
+  /** Transfer buffers ever allocated (stays at the pool size in the steady state). */
+  buffersAllocated: number;
+}
+
+export interface HostError {
+  key: number;
+  /** Best guess at the description field the engine complained about (e.g. "radius"), or "". */
+  field: string;
+  message: string;
+}
+
+export interface HostSnapshot {
+  world: unknown;
+  bodies: { key: number; desc: BodyDescription; handle: number; pose: number[] }[];
+  links: { key: number; desc: LinkDescription; handles: number[]; pa: number; pb: number }[];
+  params: HostParams;
+}
+
+/** The command interface of the engine host. Every call returns a promise on the client side. */
+export interface EngineApi {
+  load(scene: HostScene): HostError[];
+  addBody(body: KeyedBody): HostError | null;
+  updateBody(body: KeyedBody): HostError | null;
+  removeBody(key: number): void;
+  addLink(link: KeyedLink): HostError | null;
+  updateLink(link: KeyedLink): HostError | null;
+  removeLink(key: number): void;
+  setParams(params: Partial<HostParams>): HostError | null;
+  play(): void;
+  pause(): void;
+  /** Takes n fixed steps now (paused or not); returns the step count. */
+  step(n?: number): number;
+  /** Rebuilds the scene from the current descriptions (time 0). */
+  reset(): void;
+  grab(x: number, y: number, stiffness?: number): number | null;
+  moveGrab(grab: number, x: number, y: number): void;
+  release(grab: number): void;
+  applyImpulse(key: number, ix: number, iy: number): void;
+  setVelocity(key: number, vx: number, vy: number): void;
+  snapshot(): HostSnapshot;
+  restore(snapshot: HostSnapshot): void;
+  stateHash(): string;
+  diagnostics(): Diagnostics;
+  /** Bodies (keys) whose shape contains the point. */
+  bodiesAt(x: number, y: number): number[];
+}
+
+// ---- frame layout --------------------------------------------------------------------------------------------
+
+/** Header slots of a frame (Float64Array). */
+export const F = {
+  seq: 0,
+  topology: 1,
+  stepCount: 2,
+  time: 3,
+  particles: 4,
+  bodies: 5,
+  contacts: 6,
+  debug: 7,
+  cellSize: 8,
+  running: 9,
+  /** performance.now() of the publisher when the frame was written (worker clock). */
+  stamp: 10,
+  links: 11,
+} as const;
+export const HEADER = 16;
+/** Pose per body: x, y, angle (radians). */
+export const POSE = 3;
+/** Debug: AABB per body (minX, minY, maxX, maxY), contact point and normal (x, y, nx, ny). */
+export const AABB = 4;
+export const CONTACT = 4;
+export const MAX_CONTACTS = 1024;
+
+/** Floats needed for a frame. */
+export function frameLength(particles: number, bodies: number, contacts: number, debug: boolean): number {
+  return HEADER + 2 * particles + POSE * bodies + (debug ? AABB * bodies + CONTACT * contacts : 0);
+}
+
+export function poseOffset(particles: number): number {
+  return HEADER + 2 * particles;
+}
+export function aabbOffset(particles: number, bodies: number): number {
+  return HEADER + 2 * particles + POSE * bodies;
+}
+export function contactOffset(particles: number, bodies: number): number {
+  return HEADER + 2 * particles + POSE * bodies + AABB * bodies;
+}
+
+/** Collision events: [type (0 begin, 1 end), keyA, keyB, normalX, normalY, depth] per event. */
+export const EVENT = 6;
+
+/** Messages on the frame port (worker → page). */
+export type PortMessage =
+  | { type: 'frame'; buffer: ArrayBuffer }
+  | { type: 'shared'; buffer: SharedArrayBuffer }
+  | { type: 'topology'; topology: Topology }
+  | { type: 'events'; data: Float64Array; count: number };
+/** Page → worker: a transfer buffer handed back to the pool. */
+export type ReturnMessage = { type: 'recycle'; buffer: ArrayBuffer };
