@@ -127,7 +127,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   @property({ type: Boolean, reflect: true }) debug = false;
   /** Broad phase: "grid" (default) or "brute". */
   @property() broadphase = 'grid';
-  /** Narrow phase: "sat" (default) or "gjk". The engine's collision pipeline currently runs SAT for polygon pairs either way. */
+  /** Narrow phase for polygon pairs: "sat" (default, separating axes) or "gjk" (GJK distance, EPA when overlapping). */
   @property() narrowphase = 'sat';
   /** "view" (default): walls at the sides and bottom of the width × height box (open at the top); "none": unbounded. */
   @property() bounds = 'view';
@@ -205,13 +205,23 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   /** Takes `n` fixed steps now (also while paused). Resolves to the step count. */
   async step(n = 1): Promise<number> {
     await this.ready;
-    return this.client ? this.client.api.step(n) : 0;
+    const c = this.client;
+    if (!c) return 0;
+    const count = await c.api.step(n);
+    await c.frameAt(count);
+    return count;
+  }
+
+  /** Steps taken, as of the newest frame received. */
+  get stepCount(): number {
+    return this.client?.latestStep ?? 0;
   }
 
   /** Rebuilds the scene from its markup, at time 0. */
   async reset(): Promise<void> {
     await this.ready;
     await this.client?.api.reset();
+    await this.client?.frameAt(0);
   }
 
   /** Where and how the engine runs, and what it holds. */
@@ -320,6 +330,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (changed.has('substeps')) params.substeps = config.substeps;
     if (changed.has('timestep')) params.timestep = config.timestep;
     if (changed.has('broadphase')) params.broadphase = config.broadphase;
+    if (changed.has('narrowphase')) params.narrowphase = config.narrowphase;
     if (changed.has('debug')) params.debug = this.debug;
     if (Object.keys(params).length > 0) c.api.setParams(params).then((e) => e && this.reportHostError(e), (e) => this.reportFailure(e));
     if (changed.has('paused')) (this.paused ? c.api.pause() : c.api.play()).catch((e) => this.reportFailure(e));
@@ -457,6 +468,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
         substeps: config.substeps,
         timestep: config.timestep,
         broadphase: config.broadphase,
+        narrowphase: config.narrowphase,
         debug: this.debug,
         events: this.wantsEvents(),
       },

@@ -79,6 +79,7 @@ export class SceneRenderer {
   private positions = new Float64Array(64);
   private readonly instance: p5;
   private readonly observer: ResizeObserver;
+  private view: DrawView | null = null;
   private scale = 1;
   private offsetX = 0;
   private offsetY = 0;
@@ -93,6 +94,12 @@ export class SceneRenderer {
   ) {
     this.instance = new p5((s: p5) => {
       s.setup = () => {
+        if (this.removed) {
+          // Disposed before p5 finished starting: remove() found no canvas to stop then; stop it now.
+          s.noLoop();
+          void s.remove();
+          return;
+        }
         const { width, height } = this.boxSize();
         s.pixelDensity(Math.max(1, Math.min(3, window.devicePixelRatio || 1)));
         const renderer = s.createCanvas(width, height);
@@ -213,7 +220,16 @@ export class SceneRenderer {
     if (this.hook) {
       ctx.save();
       try {
-        this.hook({ p: s, ctx, positions: this.positions, topology: t, frame: f, scale: this.scale, offsetX: this.offsetX, offsetY: this.offsetY, alpha });
+        const v = (this.view ??= { p: s, ctx, positions: this.positions, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha });
+        v.ctx = ctx;
+        v.positions = this.positions;
+        v.topology = t;
+        v.frame = f;
+        v.scale = this.scale;
+        v.offsetX = this.offsetX;
+        v.offsetY = this.offsetY;
+        v.alpha = alpha;
+        this.hook(v);
       } catch (error) {
         console.warn('<physics-scene> draw hook threw:', error);
       }
@@ -244,13 +260,14 @@ export class SceneRenderer {
     return alpha;
   }
 
+  /** World → canvas pixels of particle i at the interpolated position (bound once, no allocation per frame). */
+  private readonly X = (i: number): number => this.offsetX + this.positions[2 * i] * this.scale;
+  private readonly Y = (i: number): number => this.offsetY + this.positions[2 * i + 1] * this.scale;
+
   private drawBodies(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {
-    const pos = this.positions;
     const s = this.scale;
-    const ox = this.offsetX;
-    const oy = this.offsetY;
-    const X = (i: number) => ox + pos[2 * i] * s;
-    const Y = (i: number) => oy + pos[2 * i + 1] * s;
+    const X = this.X;
+    const Y = this.Y;
     ctx.lineJoin = 'round';
     ctx.lineCap = 'round';
     for (const g of this.groups) {

@@ -243,6 +243,28 @@ export class EngineClient {
     return [f[o], f[o + 1], f[o + 2]];
   }
 
+  /** Step count of the newest frame received. */
+  get latestStep(): number {
+    this.poll();
+    return this.frames.received > 0 ? this.frames.curr[F.stepCount] : 0;
+  }
+
+  /**
+   * Resolves once a frame of step `step` (or, for step 0, any frame after a reset) has arrived: frames and replies
+   * travel on different ports, so a reply can overtake its frame.
+   */
+  async frameAt(step: number, timeout = 2000): Promise<void> {
+    const until = performance.now() + timeout;
+    const seen = this.frames.received;
+    for (;;) {
+      this.poll();
+      const s = this.frames.received > 0 ? this.frames.curr[F.stepCount] : -1;
+      if (step === 0 ? this.frames.received > seen || s === 0 : s >= step) return;
+      if (this.disposed || performance.now() > until) return;
+      await new Promise((r) => setTimeout(r, 0));
+    }
+  }
+
   get alive(): boolean {
     return !this.disposed;
   }

@@ -43,6 +43,7 @@ const DEFAULT_PARAMS: HostParams = {
   substeps: 10,
   iterations: 1,
   broadphase: 'grid',
+  narrowphase: 'sat',
   debug: false,
   events: false,
 };
@@ -345,6 +346,7 @@ export class EngineHost implements EngineApi {
       substeps: p.substeps,
       iterations: p.iterations,
       broadphase: p.broadphase,
+      narrowphase: p.narrowphase,
     };
   }
 
@@ -379,6 +381,10 @@ export class EngineHost implements EngineApi {
     set('broadphase', () => {
       w.broadphase = params.broadphase!;
       this.params.broadphase = params.broadphase!;
+    });
+    set('narrowphase', () => {
+      w.narrowphase = params.narrowphase!;
+      this.params.narrowphase = params.narrowphase!;
     });
     if (params.debug !== undefined) this.params.debug = Boolean(params.debug);
     if (params.events !== undefined) {

@@ -30,6 +30,7 @@ export interface HostParams {
   substeps: number;
   iterations: number;
   broadphase: 'grid' | 'brute';
+  narrowphase: 'sat' | 'gjk';
   /** Write AABBs, contacts and the grid cell size into frames. */
   debug: boolean;
   /** Send collision events (only while someone listens). */

@@ -1,0 +1,69 @@
+// Shared by the element tests: mounting scenes from markup, polling for conditions, sampling canvas pixels.
+import '../../src/index.js';
+import type { PhysicsSceneElement } from '../../src/index.js';
+
+/** Mounts `<physics-scene {attrs}>{children}</physics-scene>` in a sized container and waits for physics-ready. */
+export async function mount(attrs: string, children: string, options: { width?: number; height?: number; ready?: boolean; before?: (scene: PhysicsSceneElement) => void } = {}): Promise<PhysicsSceneElement> {
+  const box = document.createElement('div');
+  box.style.cssText = `width: ${options.width ?? 400}px; height: ${options.height ?? 400}px; position: relative;`;
+  // Test markup only: fixed strings written in the tests.
+  box.innerHTML = `<physics-scene ${attrs} style="width: 100%; height: 100%">${children}</physics-scene>`;
+  const scene = box.querySelector('physics-scene')!;
+  options.before?.(scene);
+  document.body.append(box);
+  if (options.ready !== false) await scene.ready;
+  return scene;
+}
+
+/** Removes a mounted scene with its container. */
+export function unmount(scene: Element | null | undefined): void {
+  const box = scene?.parentElement;
+  if (box && box !== document.body) box.remove();
+  else scene?.remove();
+}
+
+/** Polls `condition` every animation frame until it holds; fails with `what` after `timeout` ms. */
+export async function waitFor(condition: () => boolean | Promise<boolean>, what: string, timeout = 4000): Promise<void> {
+  const until = performance.now() + timeout;
+  while (!(await condition())) {
+    if (performance.now() > until) throw new Error(`timed out after ${timeout} ms waiting for ${what}`);
+    await nextFrame();
+  }
+}
+
+export function nextFrame(): Promise<void> {
+  return new Promise((resolve) => requestAnimationFrame(() => resolve()));
+}
+
+export async function frames(n: number): Promise<void> {
+  for (let k = 0; k < n; k++) await nextFrame();
+}
+
+/** Waits until the scene has drawn `n` more frames. */
+export async function drawn(scene: PhysicsSceneElement, n = 2): Promise<void> {
+  const target = scene.renderedFrames + n;
+  await waitFor(() => scene.renderedFrames >= target, `${n} drawn frames`);
+}
+
+/** [r, g, b, a] of the canvas pixel under the world point (x, y). */
+export function pixelAt(scene: PhysicsSceneElement, x: number, y: number): [number, number, number, number] {
+  const canvas = scene.canvas!;
+  const client = scene.worldToClient(x, y);
+  const rect = canvas.getBoundingClientRect();
+  const ratio = canvas.width / rect.width;
+  const px = Math.floor((client.x - rect.left) * ratio);
+  const py = Math.floor((client.y - rect.top) * ratio);
+  const data = canvas.getContext('2d')!.getImageData(px, py, 1, 1).data;
+  return [data[0], data[1], data[2], data[3]];
+}
+
+/** CSS hex colour → [r, g, b]. */
+export function rgb(hex: string): [number, number, number] {
+  const n = parseInt(hex.slice(1), 16);
+  return [(n >> 16) & 255, (n >> 8) & 255, n & 255];
+}
+
+/** Largest channel difference between a pixel and a colour. */
+export function colourDistance(pixel: readonly number[], colour: readonly number[]): number {
+  return Math.max(Math.abs(pixel[0] - colour[0]), Math.abs(pixel[1] - colour[1]), Math.abs(pixel[2] - colour[2]));
+}
