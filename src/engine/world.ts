@@ -1097,7 +1097,7 @@ export class World {
 
   private substep(h: number): void {
     const h2 = h * h;
-    this.accelerate();
+    this.accelerate(h);
     integrate(this.particles, h, 1 / (1 + h * this._damping), this._integrator);
     placeRigidPins(this.pins, this.particles);
     this.distances.lambda.fill(0, 0, this.distances.count);
@@ -1114,7 +1114,7 @@ export class World {
   }
 
   /** Gravity, the user's forces and the springs' forces, as accelerations. */
-  private accelerate(): void {
+  private accelerate(h: number): void {
     const { ax, ay, fx, fy, invMass } = this.particles;
     const gx = this.gravity.x;
     const gy = this.gravity.y;
@@ -1122,7 +1122,7 @@ export class World {
       ax[i] = gx + fx[i] * invMass[i];
       ay[i] = gy + fy[i] * invMass[i];
     }
-    if (this.springs.count > 0) accumulateSprings(this.springs, this.particles, ax, ay);
+    if (this.springs.count > 0) accumulateSprings(this.springs, this.particles, ax, ay, h);
   }
 
   /** One Gauss–Seidel sweep over every constraint (seed Algorithm 1), then the bounds. */

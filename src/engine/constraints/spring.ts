@@ -17,12 +17,26 @@ export class Springs extends Table {
   slot = new Int32Array(16);
 }
 
+/**
+ * An explicit spring is stable only while ω·h < 2 (ω² = k / m). So that a stiff spring on a light particle softens
+ * instead of exploding, each spring's stiffness is capped at SPRING_LIMIT·m/h² and its damping at SPRING_LIMIT·m/h,
+ * with m the pair's reduced mass: a particle held by up to 40 such springs stays under the limit (Σk·h²/m ≤ 4).
+ */
+const SPRING_LIMIT = 0.1;
+
 /** Adds spring forces into ax/ay (accelerations scratch, already holding gravity + user force per unit mass). */
-export function accumulateSprings(s: Springs, p: ParticleStore, ax: Float64Array, ay: Float64Array): void {
+export function accumulateSprings(s: Springs, p: ParticleStore, ax: Float64Array, ay: Float64Array, h: number): void {
   const { x, y, vx, vy, invMass } = p;
   for (let i = 0, n = s.count; i < n; i++) {
     const ia = s.a[i];
     const ib = s.b[i];
+    const w = invMass[ia] + invMass[ib];
+    if (w === 0) continue;
+    const reduced = 1 / w;
+    const kMax = (SPRING_LIMIT * reduced) / (h * h);
+    const cMax = (SPRING_LIMIT * reduced) / h;
+    const k = s.stiffness[i] < kMax ? s.stiffness[i] : kMax;
+    const c = s.damping[i] < cMax ? s.damping[i] : cMax;
     let dx = x[ib] - x[ia];
     let dy = y[ib] - y[ia];
     const d = Math.sqrt(dx * dx + dy * dy);
@@ -30,7 +44,7 @@ export function accumulateSprings(s: Springs, p: ParticleStore, ax: Float64Array
     dx /= d;
     dy /= d;
     const relSpeed = (vx[ib] - vx[ia]) * dx + (vy[ib] - vy[ia]) * dy;
-    const f = s.stiffness[i] * (d - s.restLength[i]) + s.damping[i] * relSpeed;
+    const f = k * (d - s.restLength[i]) + c * relSpeed;
     ax[ia] += f * dx * invMass[ia];
     ay[ia] += f * dy * invMass[ia];
     ax[ib] -= f * dx * invMass[ib];
