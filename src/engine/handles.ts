@@ -33,9 +33,17 @@ export class HandleRegistry {
   high = 0;
   private free: number[] = [];
 
-  constructor(readonly what: string) {}
+  /** The most live objects allowed at once (a page must not freeze building a million bodies by mistake). */
+  limit = SLOT_COUNT;
+  private live = 0;
+
+  constructor(readonly what: string, private readonly limitName = '', private readonly plural = `${what}s`) {}
 
   allocate(): Handle {
+    if (this.live >= this.limit) {
+      throw new RangeError(`too many ${this.plural}: the limit is ${this.limit}${this.limitName ? ` (world option limits.${this.limitName})` : ''}`);
+    }
+    this.live++;
     let slot: number;
     if (this.free.length > 0) slot = this.free.pop()!;
     else {
@@ -49,6 +57,7 @@ export class HandleRegistry {
 
   release(handle: Handle): number {
     const slot = this.slotOf(handle);
+    this.live--;
     this.alive[slot] = 0;
     this.generation[slot]++;
     this.free.push(slot);
@@ -94,6 +103,7 @@ export class HandleRegistry {
     this.alive.set(s.alive);
     this.high = s.high;
     this.free = s.free.slice();
+    this.live = s.high - s.free.length;
   }
 }
 

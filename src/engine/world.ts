@@ -1,4 +1,4 @@
-import { handleSlot, HandleRegistry, type Handle, type RegistrySnapshot } from './handles.js';
+import { handleSlot, HandleRegistry, MAX_SLOTS, type Handle, type RegistrySnapshot } from './handles.js';
 import { ParticleFlag, ParticleStore } from './particles.js';
 import type { Column, Table } from './table.js';
 import { DistanceConstraints, solveDistances } from './constraints/distance.js';
@@ -61,7 +61,18 @@ export interface WorldOptions {
   sleeping?: boolean;
   /** The fastest an overlap that already exists is pushed apart (units/s). Default 4. */
   maxPushSpeed?: number;
+  /** Caps on live objects; creating more throws a RangeError. Defaults: DEFAULT_LIMITS. */
+  limits?: Partial<Limits>;
 }
+
+export interface Limits {
+  particles: number;
+  constraints: number;
+  bodies: number;
+}
+
+/** Default caps: far above what a page can simulate at 60 steps a second, low enough to fail fast on a runaway loop. */
+export const DEFAULT_LIMITS: Limits = { particles: 200_000, constraints: 1_000_000, bodies: 100_000 };
 
 export interface GrabOptions {
   /** Pull per unit of distance and of mass (1/s²): how tightly the body follows. Default 2000. */
@@ -211,9 +222,9 @@ export class World {
   /** Bodies or constraints changed: the sleep bookkeeping needs rebuilding. */
   private topologyDirty = true;
 
-  private readonly particleIds = new HandleRegistry('particle');
-  private readonly constraintIds = new HandleRegistry('constraint');
-  private readonly bodyIds = new HandleRegistry('body');
+  private readonly particleIds = new HandleRegistry('particle', 'particles');
+  private readonly constraintIds = new HandleRegistry('constraint', 'constraints');
+  private readonly bodyIds = new HandleRegistry('body', 'bodies', 'bodies');
   /** Per constraint slot: which table and which row. */
   private constraintKind = new Uint8Array(64);
   private constraintRow = new Int32Array(64);
@@ -274,6 +285,15 @@ export class World {
     this.narrowPhase.mode = oneOf('narrowphase', o.narrowphase, ['sat', 'gjk'] as const);
     this.sleep.enabled = Boolean(o.sleeping);
     this._maxPushSpeed = positive('maxPushSpeed', o.maxPushSpeed);
+    const limits = { ...DEFAULT_LIMITS, ...options.limits };
+    this.particleIds.limit = integer('limits.particles', limits.particles, 1, MAX_SLOTS);
+    this.constraintIds.limit = integer('limits.constraints', limits.constraints, 1, MAX_SLOTS);
+    this.bodyIds.limit = integer('limits.bodies', limits.bodies, 1, MAX_SLOTS);
+  }
+
+  /** The caps in force. */
+  get limits(): Limits {
+    return { particles: this.particleIds.limit, constraints: this.constraintIds.limit, bodies: this.bodyIds.limit };
   }
 
   private _maxPushSpeed: number;
@@ -1276,6 +1296,7 @@ export class World {
         contactSlop: this._contactSlop,
         sleeping: this.sleep.enabled,
         maxPushSpeed: this._maxPushSpeed,
+        limits: this.limits,
       },
       time: this.time,
       stepCount: this.stepCount,
@@ -1309,6 +1330,9 @@ export class World {
       _contactSlop: s.settings.contactSlop,
       _maxPushSpeed: s.settings.maxPushSpeed,
     });
+    this.particleIds.limit = s.settings.limits.particles;
+    this.constraintIds.limit = s.settings.limits.constraints;
+    this.bodyIds.limit = s.settings.limits.bodies;
     this.broadphase = s.settings.broadphase;
     this.narrowphase = s.settings.narrowphase;
     this.sleep.enabled = s.settings.sleeping;
@@ -1345,7 +1369,7 @@ export class World {
 }
 
 export interface WorldSnapshot {
-  settings: Required<Omit<WorldOptions, 'bounds'>> & { bounds: Bounds | null };
+  settings: Required<Omit<WorldOptions, 'bounds' | 'limits'>> & { bounds: Bounds | null; limits: Limits };
   time: number;
   stepCount: number;
   accumulator: number;

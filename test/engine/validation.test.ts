@@ -110,3 +110,19 @@ describe('handles', () => {
     expect([...world.bodies()]).to.deep.equal([keep.body]);
   });
 });
+
+describe('limits', () => {
+  it('creating more than the caps allow throws a RangeError naming the limit, and the world keeps working', () => {
+    const world = new World({ limits: { particles: 50, bodies: 3 } });
+    expect(world.limits).to.deep.equal({ particles: 50, constraints: 1_000_000, bodies: 3 });
+    throwsNaming(() => createCloth(world, { origin: { x: 0, y: 0 }, columns: 10, rows: 10, spacing: 0.1 }), RangeError, 'too many particles', 'limits.particles', '50');
+    expect(world.particleCount).to.equal(0); // the failed cloth left nothing behind
+    for (let k = 0; k < 3; k++) createRope(world, { from: { x: k, y: 0 }, to: { x: k, y: 1 }, segments: 2 });
+    throwsNaming(() => createRope(world, { from: { x: 9, y: 0 }, to: { x: 9, y: 1 }, segments: 2 }), RangeError, 'too many bodies', 'limits.bodies');
+    world.removeBody([...world.bodies()][0]);
+    createRope(world, { from: { x: 9, y: 0 }, to: { x: 9, y: 1 }, segments: 2 }); // room again
+    world.step();
+    expect(allFinite(world)).to.equal(true);
+    throwsNaming(() => new World({ limits: { bodies: 0 } }), RangeError, 'limits.bodies', '0');
+  });
+});
