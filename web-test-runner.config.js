@@ -10,13 +10,26 @@ const args = [
 ];
 
 export default {
-  files: ['test/**/*.test.ts'],
+  // .test.html files are pages of their own (their URL can carry "transfer", see below).
+  files: ['test/**/*.test.ts', 'test/**/*.test.html'],
   nodeResolve: true,
   // Cross-origin isolation everywhere except for test files whose name says "transfer": those run without it, so
   // both ways of publishing state (SharedArrayBuffer, transferred ArrayBuffer) are exercised.
   middleware: [crossOriginIsolation({ when: (ctx) => !/transfer/.test(ctx.headers.referer ?? '') && !/transfer/.test(ctx.path) }), jsToTs],
   plugins,
-  browsers: [chromeLauncher({ launchOptions: { executablePath, headless: true, args } })],
+  browsers: [
+    chromeLauncher({
+      launchOptions: { executablePath, headless: true, args },
+      // Each test page in a browser context of its own: with concurrency 2, a second tab of one context is a hidden
+      // page that gets no animation frames, and canvas tests starve.
+      createPage: async ({ browser }) => {
+        const context = await browser.createBrowserContext();
+        const page = await context.newPage();
+        page.once('close', () => context.close().catch(() => {}));
+        return page;
+      },
+    }),
+  ],
   concurrency: 2,
   testFramework: { config: { timeout: 60000 } },
   testsFinishTimeout: 15 * 60 * 1000,
