@@ -31,8 +31,18 @@ export async function waitFor(condition: () => boolean | Promise<boolean>, what:
   }
 }
 
+/** The next animation frame, or 100 ms if the page gets none (a background page), so polling never hangs. */
 export function nextFrame(): Promise<void> {
-  return new Promise((resolve) => requestAnimationFrame(() => resolve()));
+  return new Promise((resolve) => {
+    const timer = setTimeout(() => {
+      cancelAnimationFrame(frame);
+      resolve();
+    }, 100);
+    const frame = requestAnimationFrame(() => {
+      clearTimeout(timer);
+      resolve();
+    });
+  });
 }
 
 export async function frames(n: number): Promise<void> {

@@ -1,0 +1,75 @@
+// Live markup: the children are the source of truth while the simulation runs.
+import { expect } from '@open-wc/testing';
+import type { PhysicsSceneElement } from '../../src/index.js';
+import { colourDistance, drawn, mount, pixelAt, rgb, unmount, waitFor } from './helpers.js';
+
+const WHITE = rgb('#ffffff');
+
+async function bodyCount(scene: PhysicsSceneElement): Promise<number> {
+  return (await scene.diagnostics()).bodyCount;
+}
+
+describe('<physics-scene> live markup', () => {
+  let scene: PhysicsSceneElement | null = null;
+  afterEach(() => unmount(scene));
+
+  it('appending a <physics-circle> adds a body to the running simulation; removing it removes it', async () => {
+    scene = await mount('width="10" height="10" gravity="0 0" bounds="none" background="#ffffff"', `<physics-box x="2" y="2" width="1" height="1" fill="#0000ff"></physics-box>`);
+    expect(await bodyCount(scene)).to.equal(1);
+    await waitFor(() => scene!.stepCount > 10, 'the simulation to run');
+    const before = scene.stepCount;
+    const circle = document.createElement('physics-circle');
+    circle.setAttribute('x', '7');
+    circle.setAttribute('y', '3');
+    circle.setAttribute('radius', '1');
+    circle.setAttribute('fill', '#00ff00');
+    scene.append(circle);
+    await waitFor(async () => (await bodyCount(scene!)) === 2, 'two bodies');
+    // Not restarted: the step count went on.
+    expect(scene.stepCount).to.be.at.least(before);
+    await waitFor(() => colourDistance(pixelAt(scene!, 7, 3), rgb('#00ff00')) < 8, 'the circle to be drawn');
+    expect(circle.x).to.be.closeTo(7, 1e-6);
+    expect(circle.y).to.be.closeTo(3, 1e-6);
+    circle.remove();
+    await waitFor(async () => (await bodyCount(scene!)) === 1, 'one body');
+    await drawn(scene, 2);
+    expect(colourDistance(pixelAt(scene, 7, 3), WHITE)).to.be.below(8);
+    expect(colourDistance(pixelAt(scene, 2, 2), rgb('#0000ff'))).to.be.below(8);
+  });
+
+  it('changing gravity changes the direction of motion', async () => {
+    scene = await mount('width="10" height="10" gravity="0 10" bounds="none" paused', `<physics-circle id="ball" x="5" y="5" radius="0.5"></physics-circle>`);
+    const ball = scene.querySelector('physics-circle')!;
+    const sample = async () => {
+      await scene!.step(10);
+      return { x: ball.x, y: ball.y };
+    };
+    // Second differences over 10 steps of 1/60 s: g · (10/60)².
+    const expected = 10 * (10 / 60) ** 2;
+    let [p0, p1, p2] = [await sample(), await sample(), await sample()];
+    expect(p2.y - 2 * p1.y + p0.y).to.be.closeTo(expected, 1e-6);
+    expect(p2.x - 2 * p1.x + p0.x).to.be.closeTo(0, 1e-9);
+    expect(p2.y).to.be.greaterThan(p0.y);
+    scene.setAttribute('gravity', '-10 0');
+    await scene.updateComplete;
+    [p0, p1, p2] = [await sample(), await sample(), await sample()];
+    expect(p2.x - 2 * p1.x + p0.x).to.be.closeTo(-expected, 1e-6);
+    expect(p2.y - 2 * p1.y + p0.y).to.be.closeTo(0, 1e-6);
+    expect(p2.x).to.be.lessThan(p0.x);
+  });
+
+  it("changing a body's fill (attribute or property) changes its pixels; changing its width changes its shape", async () => {
+    scene = await mount('width="10" height="10" paused background="#ffffff"', `<physics-box x="5" y="5" width="2" height="2" fill="#ff0000" stroke="none"></physics-box>`);
+    const box = scene.querySelector('physics-box')!;
+    await drawn(scene, 2);
+    expect(colourDistance(pixelAt(scene, 5, 5), rgb('#ff0000'))).to.be.below(8);
+    box.setAttribute('fill', '#00ff00');
+    await waitFor(() => colourDistance(pixelAt(scene!, 5, 5), rgb('#00ff00')) < 8, 'green pixels');
+    box.fill = '#0000ff';
+    await waitFor(() => colourDistance(pixelAt(scene!, 5, 5), rgb('#0000ff')) < 8, 'blue pixels');
+    expect(colourDistance(pixelAt(scene, 6.6, 5), WHITE)).to.be.below(8);
+    box.setAttribute('width', '4');
+    await waitFor(() => colourDistance(pixelAt(scene!, 6.6, 5), rgb('#0000ff')) < 8, 'the wider box');
+    expect(colourDistance(pixelAt(scene, 7.2, 5), WHITE)).to.be.below(8);
+  });
+});
