@@ -1,6 +1,6 @@
 // What the canvas shows: body colours where the bodies are, the viewBox fit, and a box falling onto a floor.
 import { expect } from '@open-wc/testing';
-import type { PhysicsSceneElement } from '../../src/index.js';
+import type { PhysicsBoxElement, PhysicsSceneElement } from '../../src/index.js';
 import { colourDistance, drawn, mount, pixelAt, rgb, unmount, waitFor } from './helpers.js';
 
 const WHITE = rgb('#ffffff');
@@ -65,7 +65,7 @@ describe('<physics-scene> canvas', () => {
       `<physics-box x="5" y="9.5" width="10" height="1" static fill="#0000ff" stroke="none"></physics-box>
        <physics-box id="crate" x="5" y="5" width="1" height="1" fill="#ff0000" stroke="none"></physics-box>`,
     );
-    const crate = scene.querySelector('physics-box#crate')!;
+    const crate = scene.querySelector<PhysicsBoxElement>('physics-box#crate')!;
     const ys: number[] = [];
     let still = 0;
     await waitFor(() => {
