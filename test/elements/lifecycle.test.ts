@@ -1,0 +1,161 @@
+// Removing a scene terminates its worker; connect/disconnect cycles leave no worker, timer, frame callback,
+// listener, observer or p5 sketch behind.
+import { expect } from '@open-wc/testing';
+import { liveResources, type PhysicsSceneElement } from '../../src/index.js';
+import { frames, mount, unmount, waitFor } from './helpers.js';
+
+/** Counts workers made and terminated, by replacing the global Worker for the duration of a test. */
+function countWorkers() {
+  const Real = window.Worker;
+  const counts = { made: 0, terminated: 0 };
+  class CountingWorker extends Real {
+    constructor(url: string | URL, options?: WorkerOptions) {
+      super(url, options);
+      counts.made++;
+    }
+    override terminate(): void {
+      counts.terminated++;
+      super.terminate();
+    }
+  }
+  window.Worker = CountingWorker;
+  return { counts, restore: () => (window.Worker = Real) };
+}
+
+/** Tracks pending timeouts, animation frames and window/document listeners added from now on. */
+function trackGlobals() {
+  const timers = new Set<number>();
+  const rafs = new Set<number>();
+  const listeners = new Set<{ target: EventTarget; type: string; listener: unknown; capture: boolean; signal?: AbortSignal }>();
+  const orig = {
+    setTimeout: window.setTimeout,
+    clearTimeout: window.clearTimeout,
+    raf: window.requestAnimationFrame,
+    caf: window.cancelAnimationFrame,
+    add: EventTarget.prototype.addEventListener,
+    remove: EventTarget.prototype.removeEventListener,
+  };
+  window.setTimeout = ((fn: TimerHandler, ms?: number, ...rest: unknown[]) => {
+    const id: number = orig.setTimeout.call(window, (...a: unknown[]) => {
+      timers.delete(id);
+      if (typeof fn === 'function') fn(...a);
+    }, ms, ...rest);
+    timers.add(id);
+    return id;
+  }) as typeof window.setTimeout;
+  window.clearTimeout = ((id?: number) => {
+    if (id !== undefined) timers.delete(id);
+    orig.clearTimeout.call(window, id);
+  }) as typeof window.clearTimeout;
+  window.requestAnimationFrame = (cb) => {
+    const id = orig.raf.call(window, (t) => {
+      rafs.delete(id);
+      cb(t);
+    });
+    rafs.add(id);
+    return id;
+  };
+  window.cancelAnimationFrame = (id) => {
+    rafs.delete(id);
+    orig.caf.call(window, id);
+  };
+  const global = (t: EventTarget) => t === window || t === document;
+  EventTarget.prototype.addEventListener = function (this: EventTarget, type: string, listener: unknown, options?: unknown) {
+    if (global(this) && listener) {
+      const capture = typeof options === 'boolean' ? options : Boolean((options as AddEventListenerOptions | undefined)?.capture);
+      listeners.add({ target: this, type, listener, capture, signal: (options as AddEventListenerOptions | undefined)?.signal });
+    }
+    return orig.add.call(this, type, listener as EventListener, options as AddEventListenerOptions);
+  };
+  EventTarget.prototype.removeEventListener = function (this: EventTarget, type: string, listener: unknown, options?: unknown) {
+    if (global(this)) {
+      const capture = typeof options === 'boolean' ? options : Boolean((options as EventListenerOptions | undefined)?.capture);
+      for (const l of listeners) if (l.target === this && l.type === type && l.listener === listener && l.capture === capture) listeners.delete(l);
+    }
+    return orig.remove.call(this, type, listener as EventListener, options as EventListenerOptions);
+  };
+  return {
+    pending: () => ({ timers: timers.size, frames: rafs.size, listeners: [...listeners].filter((l) => !l.signal?.aborted).map((l) => l.type) }),
+    restore: () => {
+      window.setTimeout = orig.setTimeout;
+      window.clearTimeout = orig.clearTimeout;
+      window.requestAnimationFrame = orig.raf;
+      window.cancelAnimationFrame = orig.caf;
+      EventTarget.prototype.addEventListener = orig.add;
+      EventTarget.prototype.removeEventListener = orig.remove;
+    },
+  };
+}
+
+const CHILDREN = `<physics-box x="5" y="9" width="10" height="1" static></physics-box><physics-circle x="5" y="2" radius="0.5"></physics-circle><physics-cloth x="1" y="1" columns="5" rows="4"></physics-cloth>`;
+
+function allZero(): boolean {
+  const r = liveResources();
+  return r.workers === 0 && r.hosts === 0 && r.sketches === 0 && r.observers === 0 && r.pendingCalls === 0;
+}
+
+describe('<physics-scene> lifecycle', () => {
+  it('removing the element terminates its worker', async () => {
+    const w = countWorkers();
+    try {
+      const scene = await mount('width="10" height="10"', CHILDREN);
+      expect(scene.mode).to.equal('worker');
+      expect(w.counts.made).to.equal(1);
+      expect(liveResources().workers).to.equal(1);
+      expect(liveResources().sketches).to.equal(1);
+      unmount(scene);
+      await waitFor(() => w.counts.terminated === 1, 'the worker to be terminated', 1000);
+      expect(liveResources()).to.deep.include({ workers: 0, sketches: 0, observers: 0 });
+      // Moving a scene (disconnect and connect in one task) keeps its engine.
+      const moved = await mount('width="10" height="10"', CHILDREN);
+      const box = moved.parentElement!;
+      document.body.append(document.createElement('div'));
+      document.body.lastElementChild!.append(moved);
+      await frames(2);
+      expect(w.counts.made).to.equal(2);
+      expect(w.counts.terminated).to.equal(1);
+      expect(moved.mode).to.equal('worker');
+      box.remove();
+      moved.parentElement!.remove();
+      await waitFor(() => w.counts.terminated === 2, 'the moved scene\'s worker to be terminated', 1000);
+    } finally {
+      w.restore();
+    }
+  });
+
+  it('50 connect/disconnect cycles leave no worker, timer, frame callback, listener, observer or sketch behind', async () => {
+    const w = countWorkers();
+    const g = trackGlobals();
+    try {
+      let ready = 0;
+      for (let k = 0; k < 50; k++) {
+        const worker = k % 2 === 0 ? 'auto' : 'none';
+        const scene: PhysicsSceneElement = await mount(`width="10" height="10" worker="${worker}"`, CHILDREN, { ready: false, width: 120, height: 120 });
+        // Leave at once, after a frame, or once running: every stage of the start must clean up.
+        if (k % 3 === 1) await frames(1);
+        if (k % 3 === 2) {
+          await scene.ready;
+          if (scene.mode) ready++;
+        }
+        unmount(scene);
+        await Promise.resolve();
+      }
+      expect(ready).to.be.greaterThan(10);
+      await waitFor(() => allZero() && w.counts.terminated === w.counts.made, 'every resource to be released', 3000);
+      // Let stray callbacks fire, then check that nothing is pending.
+      await new Promise((r) => setTimeout(r, 150));
+      await frames(2);
+      expect(liveResources()).to.deep.equal({ workers: 0, hosts: 0, sketches: 0, observers: 0, listeners: 0, pendingCalls: 0 });
+      // Scenes removed in the task that added them never make a worker; every other 'auto' cycle made one.
+      expect(w.counts.made).to.equal(16);
+      expect(w.counts.terminated).to.equal(w.counts.made);
+      const pending = g.pending();
+      expect(pending.timers, 'pending timeouts').to.equal(0);
+      expect(pending.frames, 'pending animation frames').to.equal(0);
+      expect(pending.listeners, 'window/document listeners').to.deep.equal([]);
+    } finally {
+      g.restore();
+      w.restore();
+    }
+  });
+});
