@@ -1,0 +1,72 @@
+// Bad markup: a physics-error event and a console warning naming the element, the attribute and the value; the rest
+// of the scene keeps running, and no attribute value reaches the DOM as markup.
+import { expect } from '@open-wc/testing';
+import type { PhysicsBoxElement, PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
+import { mount, unmount, waitFor } from './helpers.js';
+
+describe('<physics-scene> bad markup', () => {
+  let scene: PhysicsSceneElement | null = null;
+  const warn = console.warn;
+  afterEach(() => {
+    console.warn = warn;
+    unmount(scene);
+    delete (window as { pwned?: number }).pwned;
+  });
+
+  it('reports width="abc", a two-point polygon, a joint naming a missing id and a negative radius; the rest runs', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="abc" height="10" gravity="0 10"',
+      `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>
+       <physics-polygon id="tri" x="3" y="3" points="0,0 1,1"></physics-polygon>
+       <physics-joint a="box" b="missing"></physics-joint>
+       <physics-circle id="ball" x="7" y="3" radius="-1"></physics-circle>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    const seen = errors.map((e) => [e.element.localName, e.attribute, e.value]);
+    expect(seen).to.have.deep.members([
+      ['physics-scene', 'width', 'abc'],
+      ['physics-polygon', 'points', '0,0 1,1'],
+      ['physics-joint', 'b', 'missing'],
+      ['physics-circle', 'radius', '-1'],
+    ]);
+    for (const [tag, attribute, value] of seen) {
+      expect(warnings.some((w) => w.includes(`<${tag}`) && w.includes(`${attribute}="${value}"`)), `a warning for <${tag}> ${attribute}="${value}"`).to.equal(true);
+    }
+    expect(warnings.length).to.equal(4);
+    // The box is simulated and falls; the broken bodies and the joint were left out; width fell back to 16.
+    const d = await scene.diagnostics();
+    expect(d.bodyCount).to.equal(1);
+    expect(d.linkCount).to.equal(0);
+    expect(scene.style.getPropertyValue('--physics-scene-aspect')).to.equal('16 / 10');
+    const box = scene.querySelector<PhysicsBoxElement>('#box')!;
+    await waitFor(() => box.y > 2.5, 'the good box to fall');
+    // Fixing the markup brings the body in, without another error.
+    scene.querySelector('physics-circle')!.setAttribute('radius', '0.5');
+    await waitFor(async () => (await scene!.diagnostics()).bodyCount === 2, 'the fixed circle');
+    expect(errors.length).to.equal(4);
+  });
+
+  it('an attribute value never reaches the DOM as markup', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const evil = '<img src=x onerror="window.pwned=1">';
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount('width="10" height="10"', `<physics-box x="5" y="2" width="1" height="1"></physics-box>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    const box = scene.querySelector('physics-box')!;
+    box.setAttribute('fill', evil);
+    box.setAttribute('id', evil);
+    scene.setAttribute('background', evil);
+    await waitFor(() => errors.length >= 2, 'two errors');
+    await new Promise((r) => setTimeout(r, 100));
+    expect(errors.map((e) => [e.attribute, e.value])).to.deep.include.members([['fill', evil], ['background', evil]]);
+    expect(scene.shadowRoot!.querySelector('img')).to.equal(null);
+    expect(document.querySelector('img')).to.equal(null);
+    expect((window as { pwned?: number }).pwned).to.equal(undefined);
+    expect(warnings.length).to.equal(2);
+  });
+});
