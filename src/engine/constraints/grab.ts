@@ -22,8 +22,15 @@ export class GrabConstraints extends Table {
   slot = new Int32Array(16);
 }
 
+/**
+ * The fastest a grab drags its point (units/s). A pointer that jumps (a touch elsewhere, a lost frame) would otherwise
+ * fling a light body at jump / h.
+ */
+export const GRAB_SPEED_LIMIT = 200;
+
 export function solveGrabs(g: GrabConstraints, p: ParticleStore, h2: number): void {
   const { x, y, invMass } = p;
+  const reach = GRAB_SPEED_LIMIT * Math.sqrt(h2);
   for (let i = 0, n = g.count; i < n; i++) {
     const a = g.p0[i];
     const b = g.p1[i];
@@ -36,8 +43,13 @@ export function solveGrabs(g: GrabConstraints, p: ParticleStore, h2: number): vo
     const mc = invMass[c];
     const w = wa * wa * ma + wb * wb * mb + wc * wc * mc;
     if (w === 0) continue;
-    const cx = wa * x[a] + wb * x[b] + wc * x[c] - g.tx[i];
-    const cy = wa * y[a] + wb * y[b] + wc * y[c] - g.ty[i];
+    let cx = wa * x[a] + wb * x[b] + wc * x[c] - g.tx[i];
+    let cy = wa * y[a] + wb * y[b] + wc * y[c] - g.ty[i];
+    const error = Math.sqrt(cx * cx + cy * cy);
+    if (error > reach) {
+      cx *= reach / error;
+      cy *= reach / error;
+    }
     const alpha = g.compliance[i] / h2;
     const dlx = (-cx - alpha * g.lambdaX[i]) / (w + alpha);
     const dly = (-cy - alpha * g.lambdaY[i]) / (w + alpha);

@@ -81,7 +81,9 @@ export function fuzzScene(seed: number): FuzzRun {
     const pa = a[Math.floor(rnd() * a.length)];
     const pb = b[Math.floor(rnd() * b.length)];
     if (pa === pb) continue;
-    if (rnd() < 0.5) world.addDistance(pa, pb, { minLength: 0, maxLength: 1 + rnd() * 5 });
+    // Joints start satisfied, as markup joints do (they link bodies at their current distance).
+    const gap = Math.hypot(world.getPosition(pa).x - world.getPosition(pb).x, world.getPosition(pa).y - world.getPosition(pb).y);
+    if (rnd() < 0.5) world.addDistance(pa, pb, { minLength: 0, maxLength: gap * (1 + rnd()) });
     else world.addSpring(pa, pb, { stiffness: rnd() * 500, damping: rnd() * 3 });
   }
   let grab: Handle | null = null;
