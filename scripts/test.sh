@@ -10,5 +10,6 @@ npx tsc --noEmit -p tsconfig.json
 npx tsc --noEmit -p test/tsconfig.json
 echo "== engine in Node"
 node scripts/engine-in-node.mjs
+node --expose-gc scripts/soak.mjs --steps 30000 --samples 5
 echo "== browser tests"
 npx web-test-runner --static-logging "$@"
