@@ -84,6 +84,7 @@ export class EngineHost implements EngineApi {
   private skipped = 0;
   private eventData = new Float64Array(EVENT * 64);
   private eventCount = 0;
+  private eventsSent = 0;
   private disposed = false;
 
   constructor(
@@ -326,6 +327,8 @@ export class EngineHost implements EngineApi {
       published: this.published,
       skipped: this.skipped,
       buffersAllocated: this.publisher.allocated,
+      events: this.params.events,
+      eventsSent: this.eventsSent,
     };
   }
 
@@ -601,7 +604,10 @@ export class EngineHost implements EngineApi {
   /** Events cross the boundary once per published frame, and only while someone listens. */
   private flushEvents(): void {
     if (this.eventCount === 0) return;
-    if (this.params.events) this.output.events(this.eventData.slice(0, this.eventCount * EVENT), this.eventCount);
+    if (this.params.events) {
+      this.output.events(this.eventData.slice(0, this.eventCount * EVENT), this.eventCount);
+      this.eventsSent += this.eventCount;
+    }
     this.eventCount = 0;
   }
 

@@ -85,6 +85,10 @@ export interface Diagnostics {
   skipped: number;
   /** Transfer buffers ever allocated (stays at the pool size in the steady state). */
   buffersAllocated: number;
+  /** Whether collision events are collected and sent (only while someone listens). */
+  events: boolean;
+  /** Collision events sent so far. */
+  eventsSent: number;
 }
 
 export interface HostError {
