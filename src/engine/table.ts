@@ -33,6 +33,13 @@ export abstract class Table {
     return i;
   }
 
+  /** Appends a row holding `values` (other columns zero) and returns its index. Not for hot paths. */
+  pushValues(values: Partial<Record<this['columns'][number], number>>): number {
+    const row = this.pushRow();
+    for (const [name, value] of Object.entries(values)) this.self[name][row] = value as number;
+    return row;
+  }
+
   /** Moves the last row into row i. Returns the index the moved row came from. */
   swapRemove(i: number): number {
     const last = --this.count;

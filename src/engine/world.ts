@@ -568,14 +568,8 @@ export class World {
     const maxLength = options.maxLength === undefined ? length : nonNegativeOrInfinity('maxLength', options.maxLength);
     if (minLength > maxLength) throw new RangeError(`minLength (${minLength}) must be <= maxLength (${maxLength})`);
     const compliance = nonNegative('compliance', options.compliance ?? 0);
-    const t = this.distances;
-    const row = t.pushRow();
-    t.a[row] = ia;
-    t.b[row] = ib;
-    t.minLength[row] = minLength;
-    t.maxLength[row] = maxLength;
-    t.compliance[row] = compliance;
-    return this.registerConstraint(Kind.Distance, t, row);
+    const row = this.distances.pushValues({ a: ia, b: ib, minLength, maxLength, compliance });
+    return this.registerConstraint(Kind.Distance, this.distances, row);
   }
 
   /** An angle limit at vertex b over the particles a, b, c. */
@@ -587,15 +581,9 @@ export class World {
     const min = finite('min', options.min);
     const max = finite('max', options.max);
     if (!(min <= max && max - min <= 2 * Math.PI)) throw new RangeError(`angle limits must satisfy min <= max <= min + 2π, got min ${min}, max ${max}`);
-    const t = this.angles;
-    const row = t.pushRow();
-    t.a[row] = ia;
-    t.b[row] = ib;
-    t.c[row] = ic;
-    t.min[row] = min;
-    t.max[row] = max;
-    t.compliance[row] = nonNegative('compliance', options.compliance ?? 0);
-    return this.registerConstraint(Kind.Angle, t, row);
+    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const row = this.angles.pushValues({ a: ia, b: ib, c: ic, min, max, compliance });
+    return this.registerConstraint(Kind.Angle, this.angles, row);
   }
 
   /** The current signed angle at b from (a − b) to (c − b), in (−π, π]. */
@@ -612,17 +600,11 @@ export class World {
     if (options == null) throw new TypeError('spring options {stiffness} are required');
     const p = this.particles;
     const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
-    const t = this.springs;
-    const length = options.length === undefined ? current : nonNegative('length', options.length);
+    const restLength = options.length === undefined ? current : nonNegative('length', options.length);
     const stiffness = nonNegative('stiffness', options.stiffness);
     const damping = nonNegative('damping', options.damping ?? 0);
-    const row = t.pushRow();
-    t.a[row] = ia;
-    t.b[row] = ib;
-    t.restLength[row] = length;
-    t.stiffness[row] = stiffness;
-    t.damping[row] = damping;
-    return this.registerConstraint(Kind.Spring, t, row);
+    const row = this.springs.pushValues({ a: ia, b: ib, restLength, stiffness, damping });
+    return this.registerConstraint(Kind.Spring, this.springs, row);
   }
 
   /** Pins a particle to a world point (its current position by default). */
@@ -634,11 +616,7 @@ export class World {
     const ty = options.y === undefined ? p.y[i] : finite('y', options.y);
     const compliance = nonNegative('compliance', options.compliance ?? 0);
     const t = this.pins;
-    const row = t.pushRow();
-    t.p[row] = i;
-    t.tx[row] = tx;
-    t.ty[row] = ty;
-    t.compliance[row] = compliance;
+    const row = t.pushValues({ p: i, tx, ty, compliance });
     if (compliance === 0) {
       t.savedInvMass[row] = p.invMass[i];
       p.invMass[i] = 0;
@@ -665,11 +643,10 @@ export class World {
     if (new Set(slots).size !== slots.length) throw new RangeError('an area constraint loop must not repeat a particle');
     const pressure = positive('pressure', options.pressure ?? 1);
     const t = this.areas;
-    const row = t.pushRow();
-    t.start[row] = t.appendLoop(slots);
-    t.length[row] = slots.length;
-    t.restArea[row] = loopArea(t.pool, t.start[row], slots.length, this.particles.x, this.particles.y) * pressure;
-    t.compliance[row] = nonNegative('compliance', options.compliance ?? 0);
+    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const start = t.appendLoop(slots);
+    const restArea = loopArea(t.pool, start, slots.length, this.particles.x, this.particles.y) * pressure;
+    const row = t.pushValues({ start, length: slots.length, restArea, compliance });
     return this.registerConstraint(Kind.Area, t, row);
   }
 
@@ -1005,18 +982,8 @@ export class World {
 
   private addGrab(a: number, b: number, c: number, wa: number, wb: number, wc: number, x: number, y: number, compliance: number): Handle {
     this.wakeParticle(a);
-    const t = this.grabs;
-    const row = t.pushRow();
-    t.p0[row] = a;
-    t.p1[row] = b;
-    t.p2[row] = c;
-    t.w0[row] = wa;
-    t.w1[row] = wb;
-    t.w2[row] = wc;
-    t.tx[row] = x;
-    t.ty[row] = y;
-    t.compliance[row] = compliance;
-    return this.registerConstraint(Kind.Grab, t, row);
+    const row = this.grabs.pushValues({ p0: a, p1: b, p2: c, w0: wa, w1: wb, w2: wc, tx: x, ty: y, compliance });
+    return this.registerConstraint(Kind.Grab, this.grabs, row);
   }
 
   private bodyMass(slot: number): number {
@@ -1382,7 +1349,7 @@ export interface WorldSnapshot {
   bodyParticles: Int32Array[];
   bodyConstraints: Handle[][];
   bodyParts: (number[][] | undefined)[];
-  anchors: { keys: Float64Array; anchors: Float64Array };
+  anchors: { keys: Float64Array; values: Float64Array };
   sleep: Float64Array[];
   colliders: (Float64Array | Uint8Array | Uint32Array | Int32Array)[];
 }

@@ -1,5 +1,6 @@
 import { Table } from '../table.js';
 import type { ParticleStore } from '../particles.js';
+import { KeyTable } from './key-table.js';
 
 /**
  * Contacts found by the narrow phase once per step, solved by projection inside every relaxation sweep (seed 4.2).
@@ -89,66 +90,34 @@ function featureKey(v: number, e0: number, e1: number): number {
   return (v * 4194304 + e0) * 2 + (e1 < 0 ? 1 : 0);
 }
 
-/**
- * Last step's anchors by feature key: an open-addressing hash table in typed arrays, refilled every step (its
- * arrays only grow, outside the steady state).
- */
+/** Last step's anchors by feature key. */
 export class AnchorCache {
-  private keys = new Float64Array(64).fill(-1);
-  private anchors = new Float64Array(64);
-  private mask = 63;
+  private readonly table = new KeyTable();
 
   /** Remembers the anchors of every contact that has one. */
   store(c: Contacts): void {
-    let size = this.keys.length;
-    while (size < c.count * 2) size *= 2;
-    if (size !== this.keys.length) {
-      this.keys = new Float64Array(size);
-      this.anchors = new Float64Array(size);
-      this.mask = size - 1;
-    }
-    this.keys.fill(-1);
+    this.table.reset(c.count);
     for (let i = 0; i < c.count; i++) {
       const a = c.anchor[i];
-      if (a !== a) continue; // NaN: never touched
-      const key = featureKey(c.v[i], c.e0[i], c.e1[i]);
-      let h = hashOf(key) & this.mask;
-      while (this.keys[h] !== -1) h = (h + 1) & this.mask;
-      this.keys[h] = key;
-      this.anchors[h] = a;
+      if (a === a) this.table.insert(featureKey(c.v[i], c.e0[i], c.e1[i]), a); // NaN: never touched
     }
   }
 
   /** Gives each new contact the anchor its feature had last step. */
   restore(c: Contacts): void {
     for (let i = 0; i < c.count; i++) {
-      const key = featureKey(c.v[i], c.e0[i], c.e1[i]);
-      let h = hashOf(key) & this.mask;
-      while (this.keys[h] !== -1) {
-        if (this.keys[h] === key) {
-          c.anchor[i] = this.anchors[h];
-          break;
-        }
-        h = (h + 1) & this.mask;
-      }
+      const slot = this.table.find(featureKey(c.v[i], c.e0[i], c.e1[i]));
+      if (slot >= 0) c.anchor[i] = this.table.values[slot];
     }
   }
 
-  snapshot(): { keys: Float64Array; anchors: Float64Array } {
-    return { keys: this.keys.slice(), anchors: this.anchors.slice() };
+  snapshot(): { keys: Float64Array; values: Float64Array } {
+    return this.table.snapshot();
   }
 
-  restoreSnapshot(s: { keys: Float64Array; anchors: Float64Array }): void {
-    this.keys = s.keys.slice();
-    this.anchors = s.anchors.slice();
-    this.mask = this.keys.length - 1;
+  restoreSnapshot(s: { keys: Float64Array; values: Float64Array }): void {
+    this.table.restore(s);
   }
-}
-
-function hashOf(key: number): number {
-  const lo = key % 4294967296;
-  const hi = (key - lo) / 4294967296;
-  return Math.imul(lo ^ Math.imul(hi, 0x9e3779b1), 0x85ebca6b) ^ (lo >>> 13);
 }
 
 /** How far past an edge's ends (as a fraction of its length) a vertex still counts as touching it. */
@@ -302,47 +271,22 @@ export function recordApproachSpeeds(c: Contacts, p: ParticleStore): void {
  * stacks would keep a residual normal jitter that lets them creep.
  */
 export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
-  const { x, y, vx, vy, invMass } = p;
+  const { vx, vy, invMass } = p;
   const { v, e0, e1, lambda, restitution, normalSpeed } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     if (lambda[i] <= 0) continue;
+    const vn = normalVelocity(c, p, i, scratch);
+    const nx = scratch[0];
+    const ny = scratch[1];
+    const alpha = scratch[2];
+    const beta = 1 - alpha;
     const iv = v[i];
     const i0 = e0[i];
     const i1 = e1[i];
     const wv = invMass[iv];
     const w0 = invMass[i0];
-    let nx: number;
-    let ny: number;
-    let alpha = 0;
-    let vn: number;
-    let w: number;
-    if (i1 >= 0) {
-      const ex = x[i1] - x[i0];
-      const ey = y[i1] - y[i0];
-      const len2 = ex * ex + ey * ey;
-      if (len2 < 1e-24) continue;
-      const inv = 1 / Math.sqrt(len2);
-      nx = ey * inv;
-      ny = -ex * inv;
-      alpha = ((x[iv] - x[i0]) * ex + (y[iv] - y[i0]) * ey) / len2;
-      alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
-      const beta = 1 - alpha;
-      vn = (vx[iv] - beta * vx[i0] - alpha * vx[i1]) * nx + (vy[iv] - beta * vy[i0] - alpha * vy[i1]) * ny;
-      w = wv + beta * beta * w0 + alpha * alpha * invMass[i1];
-    } else {
-      nx = x[iv] - x[i0];
-      ny = y[iv] - y[i0];
-      const d = Math.sqrt(nx * nx + ny * ny);
-      if (d > 1e-12) {
-        nx /= d;
-        ny /= d;
-      } else {
-        nx = c.nx[i];
-        ny = c.ny[i];
-      }
-      vn = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
-      w = wv + w0;
-    }
+    const w1 = i1 >= 0 ? invMass[i1] : 0;
+    const w = i1 >= 0 ? wv + beta * beta * w0 + alpha * alpha * w1 : wv + w0;
     if (w === 0) continue;
     let target = 0;
     if (restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD) {
@@ -353,8 +297,6 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
     vx[iv] += wv * dl * nx;
     vy[iv] += wv * dl * ny;
     if (i1 >= 0) {
-      const beta = 1 - alpha;
-      const w1 = invMass[i1];
       vx[i0] -= w0 * beta * dl * nx;
       vy[i0] -= w0 * beta * dl * ny;
       vx[i1] -= w1 * alpha * dl * nx;

@@ -1,5 +1,6 @@
 import { grown } from '../table.js';
 import type { Contacts } from './contacts.js';
+import { KeyTable } from './key-table.js';
 
 /**
  * Collision events of the last step: a 'begin' when two bodies start touching, an 'end' when they stop. Filled
@@ -36,59 +37,13 @@ export class CollisionEvents {
   }
 }
 
-/** A set of body-slot pairs (a < b) in an open-addressing table; two of them, swapped each step, give begin/end. */
-class PairSet {
-  keys = new Float64Array(64).fill(-1);
-  contact = new Int32Array(64);
-  mask = 63;
-  size = 0;
-
-  reset(capacity: number): void {
-    let n = this.keys.length;
-    while (n < capacity * 2) n *= 2;
-    if (n !== this.keys.length) {
-      this.keys = new Float64Array(n);
-      this.contact = new Int32Array(n);
-      this.mask = n - 1;
-    }
-    this.keys.fill(-1);
-    this.size = 0;
-  }
-
-  /** Inserts; returns the slot of the key (existing or new). */
-  insert(key: number, contact: number): number {
-    let h = spread(key) & this.mask;
-    while (this.keys[h] !== -1) {
-      if (this.keys[h] === key) return h;
-      h = (h + 1) & this.mask;
-    }
-    this.keys[h] = key;
-    this.contact[h] = contact;
-    this.size++;
-    return h;
-  }
-
-  has(key: number): boolean {
-    let h = spread(key) & this.mask;
-    while (this.keys[h] !== -1) {
-      if (this.keys[h] === key) return true;
-      h = (h + 1) & this.mask;
-    }
-    return false;
-  }
-}
-
-function spread(key: number): number {
-  const lo = key % 4294967296;
-  return Math.imul(lo ^ Math.imul((key - lo) / 4294967296, 0x9e3779b1), 0x85ebca6b) ^ (lo >>> 15);
-}
-
 const SLOTS = 4194304;
 
 /** Turns the touching contacts of each step into begin/end events. */
 export class EventTracker {
-  private current = new PairSet();
-  private previous = new PairSet();
+  /** Touching body pairs (lo · SLOTS + hi) → the deepest contact of the pair, this step and last step. */
+  private current = new KeyTable();
+  private previous = new KeyTable();
 
   /**
    * `touched[i]` says whether contact i acted this step; `handleOf` maps a body slot to its handle.
@@ -106,23 +61,20 @@ export class EventTracker {
       const lo = a < b ? a : b;
       const hi = a < b ? b : a;
       const key = lo * SLOTS + hi;
-      const before = cur.size;
       const slot = cur.insert(key, i);
-      if (cur.size === before) {
-        // Keep the deepest contact of the pair for the event's normal and depth.
-        if (c.depth[i] > c.depth[cur.contact[slot]]) cur.contact[slot] = i;
-      }
+      // Keep the deepest contact of the pair for the event's normal and depth.
+      if (c.depth[i] > c.depth[cur.values[slot]]) cur.values[slot] = i;
     }
     for (let h = 0; h < cur.keys.length; h++) {
       const key = cur.keys[h];
-      if (key === -1 || this.previous.has(key)) continue;
-      const i = cur.contact[h];
+      if (key === -1 || this.previous.find(key) >= 0) continue;
+      const i = cur.values[h];
       out.push(0, handleOf(c.bodyA[i]), handleOf(c.bodyB[i]), c.nx[i], c.ny[i], Math.max(0, c.depth[i]));
     }
     const prev = this.previous;
     for (let h = 0; h < prev.keys.length; h++) {
       const key = prev.keys[h];
-      if (key === -1 || cur.has(key)) continue;
+      if (key === -1 || cur.find(key) >= 0) continue;
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
       if (!alive(lo) || !alive(hi)) continue;
