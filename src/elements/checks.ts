@@ -86,11 +86,6 @@ export function describeElement(el: Element): string {
   return `<${el.localName}${id ? ` id="${id}"` : ''}>`;
 }
 
-/** Defines a custom element unless a tag of that name exists already (two copies of the library on one page). */
-export function define(name: string, ctor: CustomElementConstructor): void {
-  if (!customElements.get(name)) customElements.define(name, ctor);
-}
-
 /** Degrees (markup) → radians (engine). */
 export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;

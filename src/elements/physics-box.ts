@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A rigid box: four corner particles braced by sticks. `x`, `y` is its centre.
@@ -28,7 +28,7 @@ export class PhysicsBoxElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-box', PhysicsBoxElement);
+if (!customElements.get('physics-box')) customElements.define('physics-box', PhysicsBoxElement);
 
 declare global {
   interface HTMLElementTagNameMap {

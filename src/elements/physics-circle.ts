@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A ball: one particle colliding as a circle. `x`, `y` is its centre. A ball does not track its own rotation.
@@ -27,7 +27,7 @@ export class PhysicsCircleElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-circle', PhysicsCircleElement);
+if (!customElements.get('physics-circle')) customElements.define('physics-circle', PhysicsCircleElement);
 
 declare global {
   interface HTMLElementTagNameMap {

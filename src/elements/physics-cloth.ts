@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A cloth of `columns` × `rows` particles `spacing` apart, its top-left corner at `x`, `y`, hanging from `pins`.
@@ -61,7 +61,7 @@ export class PhysicsClothElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-cloth', PhysicsClothElement);
+if (!customElements.get('physics-cloth')) customElements.define('physics-cloth', PhysicsClothElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -36,7 +36,7 @@ export class PhysicsJointElement extends PhysicsLinkElement {
   }
 }
 
-define('physics-joint', PhysicsJointElement);
+if (!customElements.get('physics-joint')) customElements.define('physics-joint', PhysicsJointElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -33,7 +33,7 @@ export class PhysicsPinElement extends PhysicsLinkElement {
   }
 }
 
-define('physics-pin', PhysicsPinElement);
+if (!customElements.get('physics-pin')) customElements.define('physics-pin', PhysicsPinElement);
 
 declare global {
   interface HTMLElementTagNameMap {

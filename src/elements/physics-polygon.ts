@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A rigid polygon, convex or concave, from `points` in body coordinates (as SVG's `<polygon points>`), placed at
@@ -50,7 +50,7 @@ function area(points: { x: number; y: number }[]): number {
   return s / 2;
 }
 
-define('physics-polygon', PhysicsPolygonElement);
+if (!customElements.get('physics-polygon')) customElements.define('physics-polygon', PhysicsPolygonElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A stick-figure ragdoll whose pelvis is at `x`, `y`: bones as sticks, joints with angle limits.
@@ -35,7 +35,7 @@ export class PhysicsRagdollElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-ragdoll', PhysicsRagdollElement);
+if (!customElements.get('physics-ragdoll')) customElements.define('physics-ragdoll', PhysicsRagdollElement);
 
 declare global {
   interface HTMLElementTagNameMap {

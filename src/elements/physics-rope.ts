@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A rope (or, with `rigid`, a chain of sticks) from (`x1`, `y1`) to (`x2`, `y2`). `x`, `y` read its live centroid.
@@ -48,7 +48,7 @@ export class PhysicsRopeElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-rope', PhysicsRopeElement);
+if (!customElements.get('physics-rope')) customElements.define('physics-rope', PhysicsRopeElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -5,7 +5,7 @@ import { SceneRenderer, type DrawHook } from '../render/renderer.js';
 import { EngineClient } from '../worker/client.js';
 import { EVENT, type Diagnostics, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
 import { PhysicsBodyElement } from './body-element.js';
-import { Checker, define, describeElement, type Problem } from './checks.js';
+import { Checker, describeElement, type Problem } from './checks.js';
 import { PhysicsLinkElement } from './link-element.js';
 import type { SceneHost } from './scene-host.js';
 
@@ -709,7 +709,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   };
 }
 
-define('physics-scene', PhysicsSceneElement);
+if (!customElements.get('physics-scene')) customElements.define('physics-scene', PhysicsSceneElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 
 /**
  * A deformable ring centred at `x`, `y`: a pressurised loop (default) or a mass–spring wheel.
@@ -42,7 +42,7 @@ export class PhysicsSoftbodyElement extends PhysicsBodyElement {
   }
 }
 
-define('physics-softbody', PhysicsSoftbodyElement);
+if (!customElements.get('physics-softbody')) customElements.define('physics-softbody', PhysicsSoftbodyElement);
 
 declare global {
   interface HTMLElementTagNameMap {

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, define } from './checks.js';
+import { Checker } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -39,7 +39,7 @@ export class PhysicsSpringElement extends PhysicsLinkElement {
   }
 }
 
-define('physics-spring', PhysicsSpringElement);
+if (!customElements.get('physics-spring')) customElements.define('physics-spring', PhysicsSpringElement);
 
 declare global {
   interface HTMLElementTagNameMap {
