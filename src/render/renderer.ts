@@ -214,7 +214,15 @@ export class SceneRenderer {
     if (this.groupsFor !== t) this.rebuildGroups(t);
     const alpha = this.interpolate(frames);
     const ctx = s.drawingContext as CanvasRenderingContext2D;
-    s.background(this.background);
+    // The background straight on the context: p5's background() parses a colour object every frame.
+    ctx.save();
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    if (this.background === 'transparent') ctx.clearRect(0, 0, ctx.canvas.width, ctx.canvas.height);
+    else {
+      ctx.fillStyle = this.background;
+      ctx.fillRect(0, 0, ctx.canvas.width, ctx.canvas.height);
+    }
+    ctx.restore();
     if (this.drawMode === 'over' || !this.hook) this.drawBodies(ctx, t, f);
     if (this.debug) this.drawDebug(ctx, t, f);
     if (this.hook) {

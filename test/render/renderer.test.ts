@@ -1,0 +1,113 @@
+// The renderer on its own, fed hand-made frames: batched drawing (one path per style) and interpolation between
+// the two newest frames.
+import { expect } from '@open-wc/testing';
+import { SceneRenderer, FrameStore, type DrawView, type Topology, type TopologyBody } from '../../src/index.js';
+import { F, HEADER, POSE } from '../../src/worker/protocol.js';
+import { waitFor } from '../elements/helpers.js';
+
+function frame(seq: number, time: number, running: boolean, xy: number[], bodies: number): Float64Array {
+  const n = xy.length / 2;
+  const f = new Float64Array(HEADER + 2 * n + POSE * bodies);
+  f[F.seq] = seq;
+  f[F.topology] = 1;
+  f[F.time] = time;
+  f[F.particles] = n;
+  f[F.bodies] = bodies;
+  f[F.running] = running ? 1 : 0;
+  f.set(xy, HEADER);
+  return f;
+}
+
+describe('SceneRenderer', () => {
+  let box: HTMLDivElement;
+  let renderer: SceneRenderer | null = null;
+  beforeEach(() => {
+    box = document.createElement('div');
+    box.style.cssText = 'width: 300px; height: 300px';
+    document.body.append(box);
+  });
+  afterEach(() => {
+    renderer?.dispose();
+    box.remove();
+  });
+
+  it('draws in batches: one fill per style, whatever the number of bodies', async () => {
+    // 30 boxes (4 particles each) and 5 circles; two fill styles, no strokes.
+    const xy: number[] = [];
+    const bodies: TopologyBody[] = [];
+    for (let k = 0; k < 30; k++) {
+      const x = 1 + (k % 6) * 1.5;
+      const y = 1 + Math.floor(k / 6) * 1.5;
+      const first = xy.length / 2;
+      xy.push(x, y, x + 1, y, x + 1, y + 1, x, y + 1);
+      bodies.push({ key: k, type: 'box', kind: 'rigid', indices: Int32Array.of(first, first + 1, first + 2, first + 3) });
+    }
+    for (let k = 0; k < 5; k++) {
+      bodies.push({ key: 30 + k, type: 'circle', kind: 'particle', indices: Int32Array.of(xy.length / 2), radius: 0.4 });
+      xy.push(1.5 + k * 1.5, 9);
+    }
+    const topology: Topology = { version: 1, bodies, links: new Float64Array(0) };
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, false, xy, bodies.length));
+    renderer = new SceneRenderer(box, () => ({ frames, topology, poll: () => {} }));
+    renderer.viewWidth = 10;
+    renderer.viewHeight = 10;
+    bodies.forEach((b) => renderer!.setStyle(b.key, { fill: b.key % 2 ? '#ff0000' : '#0000ff', stroke: null, lineWidth: 1 }));
+    const proto = CanvasRenderingContext2D.prototype;
+    const fill = proto.fill;
+    const stroke = proto.stroke;
+    let fills = 0;
+    let strokes = 0;
+    const perFrame: [number, number][] = [];
+    proto.fill = function (this: CanvasRenderingContext2D, ...args: unknown[]) {
+      fills++;
+      return (fill as (...a: unknown[]) => void).apply(this, args);
+    } as typeof proto.fill;
+    proto.stroke = function (this: CanvasRenderingContext2D, ...args: unknown[]) {
+      strokes++;
+      return (stroke as (...a: unknown[]) => void).apply(this, args);
+    } as typeof proto.stroke;
+    try {
+      renderer.hook = () => {
+        perFrame.push([fills, strokes]);
+        fills = 0;
+        strokes = 0;
+      };
+      await waitFor(() => perFrame.length >= 4, 'four drawn frames');
+    } finally {
+      proto.fill = fill;
+      proto.stroke = stroke;
+    }
+    // The first entry counts whatever ran before the hook was set; every later frame is one draw.
+    for (const [f, s] of perFrame.slice(1)) {
+      expect(f).to.equal(2);
+      expect(s).to.equal(0);
+    }
+  });
+
+  it('interpolates between the two newest frames while running, and shows the newest when paused', async () => {
+    const topology: Topology = { version: 1, bodies: [{ key: 1, type: 'circle', kind: 'particle', indices: Int32Array.of(0), radius: 0.5 }], links: new Float64Array(0) };
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, true, [0, 5], 1));
+    frames.accept(frame(2, 1, true, [10, 5], 1));
+    const views: { x: number; alpha: number }[] = [];
+    renderer = new SceneRenderer(box, () => ({ frames, topology, poll: () => {} }));
+    renderer.viewWidth = 10;
+    renderer.viewHeight = 10;
+    renderer.hook = (v: DrawView) => views.push({ x: v.positions[0], alpha: v.alpha });
+    await waitFor(() => views.some((v) => v.alpha === 1), 'a frame drawn at the newest state');
+    // A second of simulated time between the two frames: the draws of that second fall in between, x = 10 · alpha.
+    const between = views.filter((v) => v.alpha < 1);
+    expect(between.length).to.be.greaterThan(0);
+    for (const v of between) {
+      expect(v.alpha).to.be.greaterThan(0);
+      expect(v.x).to.be.closeTo(10 * v.alpha, 1e-9);
+    }
+    expect(views.at(-1)!.x).to.equal(10);
+    // Paused frames are drawn as they are.
+    views.length = 0;
+    frames.accept(frame(3, 2, false, [3, 5], 1));
+    await waitFor(() => views.length >= 2, 'two more frames');
+    expect(views.map((v) => v.x)).to.deep.equal(views.map(() => 3));
+  });
+});
