@@ -260,6 +260,10 @@ export class World {
   private _maxCatchUpSteps: number;
   variableStep: boolean;
 
+  /** When true, each step records how long collision detection and the substeps took (ms) in `timings`. */
+  measureTimings = false;
+  readonly timings = { detect: 0, solve: 0 };
+
   /** Simulated seconds. */
   time = 0;
   /** Steps taken. */
@@ -1045,8 +1049,14 @@ export class World {
       this.stepCount++;
       return;
     }
+    const t0 = this.measureTimings ? performance.now() : 0;
     this.detectCollisions(dt);
+    const t1 = this.measureTimings ? performance.now() : 0;
     for (let s = 0; s < n; s++) this.substep(h);
+    if (this.measureTimings) {
+      this.timings.detect = t1 - t0;
+      this.timings.solve = performance.now() - t1;
+    }
     this.anchors.store(this.contacts);
     const bodySlots = this.bodyIds.high;
     this.eventTracker.update(this.contacts, this.contacts.touched, this.bodyHandleOf, this.bodyAlive, this.events);

@@ -57,6 +57,10 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     for (let k = 0; k < n; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % n], { compliance }));
     for (let k = 2; k < n - 1; k++) constraints.push(world.addDistance(particles[0], particles[k], { compliance }));
     for (const [a, b] of extraBraces) constraints.push(world.addDistance(particles[a], particles[b], { compliance }));
+    // A fan-braced outline can be pushed inside out (a vertex across a diagonal), after which its edge normals
+    // point inward and contacts push the wrong way: keeping the signed area stops that. Boxes, braced both ways,
+    // do not need it.
+    if (extraBraces.length === 0) constraints.push(world.addAreaConstraint(particles.slice(), { compliance }));
     return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true));
   });
 }
