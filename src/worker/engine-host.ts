@@ -654,6 +654,11 @@ export class EngineHost implements EngineApi {
       }
       mx /= idx.length;
       my /= idx.length;
+      if (r.desc.type === 'ragdoll' && idx.length > 2) {
+        // A ragdoll's position is its pelvis (particle 2), as in its markup.
+        mx = x[idx[2]];
+        my = y[idx[2]];
+      }
       const theta = idx.length >= 2 && (r.desc.type === 'box' || r.desc.type === 'polygon')
         ? Math.atan2(y[idx[1]] - y[idx[0]], x[idx[1]] - x[idx[0]]) - r.edge0
         : 0;
