@@ -451,8 +451,13 @@ export class EngineHost implements EngineApi {
       r.angle0 = typeof d.angle === 'number' ? d.angle : 0;
       if (r.desc.type === 'polygon' && !isConvex(idx, x, y)) {
         // A concave outline collides as convex parts (createPolygon gives one part: right for convex outlines only).
-        const points = Array.from(idx, (i) => ({ x: x[i], y: y[i] }));
-        this.world.setCollider(built.body, { parts: decompose(points) });
+        try {
+          const points = Array.from(idx, (i) => ({ x: x[i], y: y[i] }));
+          this.world.setCollider(built.body, { parts: decompose(points) });
+        } catch (error) {
+          // A self-crossing outline: the body stays, colliding as one part, and the markup is reported.
+          return { key: r.key, field: 'points', message: `the outline cannot be split into convex parts (${error instanceof Error ? error.message : String(error)})` };
+        }
       }
       return null;
     } catch (error) {
