@@ -678,29 +678,29 @@ export class EngineHost implements EngineApi {
       const radius = p.radius;
       for (let k = 0; k < b; k++) {
         const r = bodies[k];
-        const slot = handleSlot(r.handle!);
-        if (col.kind[slot] !== 0 && col.maxX[slot] >= col.minX[slot]) {
-          f[o++] = col.minX[slot];
-          f[o++] = col.minY[slot];
-          f[o++] = col.maxX[slot];
-          f[o++] = col.maxY[slot];
-        } else {
-          let x0 = Infinity;
-          let y0 = Infinity;
-          let x1 = -Infinity;
-          let y1 = -Infinity;
-          for (let q = 0; q < r.indices.length; q++) {
-            const i = r.indices[q];
-            x0 = Math.min(x0, x[i] - radius[i]);
-            y0 = Math.min(y0, y[i] - radius[i]);
-            x1 = Math.max(x1, x[i] + radius[i]);
-            y1 = Math.max(y1, y[i] + radius[i]);
-          }
-          f[o++] = x0;
-          f[o++] = y0;
-          f[o++] = x1;
-          f[o++] = y1;
+        // The particles' box; the collider's box (grown by this step's motion) when it is current, i.e. holds it.
+        let x0 = Infinity;
+        let y0 = Infinity;
+        let x1 = -Infinity;
+        let y1 = -Infinity;
+        for (let q = 0; q < r.indices.length; q++) {
+          const i = r.indices[q];
+          if (x[i] - radius[i] < x0) x0 = x[i] - radius[i];
+          if (y[i] - radius[i] < y0) y0 = y[i] - radius[i];
+          if (x[i] + radius[i] > x1) x1 = x[i] + radius[i];
+          if (y[i] + radius[i] > y1) y1 = y[i] + radius[i];
         }
+        const slot = handleSlot(r.handle!);
+        if (col.kind[slot] !== 0 && col.minX[slot] <= x0 && col.minY[slot] <= y0 && col.maxX[slot] >= x1 && col.maxY[slot] >= y1) {
+          x0 = col.minX[slot];
+          y0 = col.minY[slot];
+          x1 = col.maxX[slot];
+          y1 = col.maxY[slot];
+        }
+        f[o++] = x0;
+        f[o++] = y0;
+        f[o++] = x1;
+        f[o++] = y1;
       }
       const ct = w.contacts;
       for (let k = 0; k < c; k++) {

@@ -59,6 +59,32 @@ describe('<physics-scene> canvas', () => {
     expect(colourDistance(at(200, 2), rgb('#ff0000'))).to.be.below(8);
   });
 
+  it('debug draws each body\'s axis-aligned bounding box', async () => {
+    // A 2×2 box turned 45° at (5, 5): its AABB spans 5 ± √2; at 40 px per unit the top edge is the row y = 143.4 px.
+    const markup = `<physics-box x="5" y="5" width="2" height="2" angle="45" fill="#ffffff" stroke="none"></physics-box>`;
+    scene = await mount('width="10" height="10" paused bounds="none" gravity="0 0" background="#ffffff" debug', markup);
+    await drawn(scene, 3);
+    const canvas = scene.canvas!;
+    const ratio = canvas.width / canvas.getBoundingClientRect().width;
+    const ctx = canvas.getContext('2d')!;
+    const magenta = (x: number, y0: number, y1: number) => {
+      let best = 0;
+      for (let y = y0; y <= y1; y++) {
+        const [r, g, b] = ctx.getImageData(Math.floor(x * ratio), Math.floor(y * ratio), 1, 1).data;
+        best = Math.max(best, Math.min(r, b) - g);
+      }
+      return best;
+    };
+    const top = (5 - Math.SQRT2) * 40;
+    // Along the AABB's top edge, left of the box's corner (which is at x = 200 px): magenta; well below it: nothing.
+    expect(magenta(152, Math.floor(top) - 1, Math.ceil(top) + 1)).to.be.above(80);
+    expect(magenta(248, Math.floor(top) - 1, Math.ceil(top) + 1)).to.be.above(80);
+    expect(magenta(152, Math.floor(top) + 6, Math.floor(top) + 12)).to.equal(0);
+    scene.debug = false;
+    await drawn(scene, 3);
+    expect(magenta(152, Math.floor(top) - 1, Math.ceil(top) + 1)).to.equal(0);
+  });
+
   it('a box dropped onto a static floor moves down, then rests on it', async () => {
     scene = await mount(
       'width="10" height="10" gravity="0 30" background="#ffffff"',

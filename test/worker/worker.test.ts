@@ -59,6 +59,23 @@ describe('engine worker', () => {
     expect(await onMain.stateHash()).to.equal(await inWorker.stateHash());
   });
 
+  it('snapshot() and restore() put the simulation back (same hash after the same steps), also across modes', async () => {
+    const inWorker = await mount('paused', MARKUP);
+    const onMain = await mount('paused worker="none"', MARKUP);
+    scenes.push(inWorker, onMain);
+    await inWorker.step(30);
+    const snap = await inWorker.snapshot();
+    await inWorker.step(45);
+    const later = await inWorker.stateHash();
+    await inWorker.restore(snap);
+    await inWorker.step(45);
+    expect(await inWorker.stateHash()).to.equal(later);
+    // A snapshot is plain data: the main-thread engine continues it identically.
+    await onMain.restore(snap);
+    await onMain.step(45);
+    expect(await onMain.stateHash()).to.equal(later);
+  });
+
   it('a worker script that fails to load gives physics-error and the scene runs on the main thread', async () => {
     PhysicsSceneElement.workerFactory = () => new Worker(new URL('./no-such-worker.js', import.meta.url), { type: 'module' });
     const errors: PhysicsErrorDetail[] = [];
