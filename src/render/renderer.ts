@@ -80,6 +80,7 @@ export class SceneRenderer {
   private readonly instance: p5;
   private readonly observer: ResizeObserver;
   private view: DrawView | null = null;
+  private ownHooks: unknown[] = [];
   private scale = 1;
   private offsetX = 0;
   private offsetY = 0;
@@ -92,6 +93,10 @@ export class SceneRenderer {
     private readonly container: HTMLElement,
     private readonly source: () => FrameSource | null,
   ) {
+    // p5 pushes a 'remove' hook per instance onto a static list and never takes it off, which would keep every
+    // removed sketch (and its canvas) alive: note ours, and take them off after remove().
+    const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
+    const before = hooks ? hooks.length : 0;
     this.instance = new p5((s: p5) => {
       s.setup = () => {
         if (this.removed) {
@@ -112,6 +117,7 @@ export class SceneRenderer {
       };
       s.draw = () => this.draw(s);
     }, container);
+    this.ownHooks = hooks ? hooks.slice(before) : [];
     track('sketches', 1);
     this.observer = new ResizeObserver(() => this.resize());
     this.observer.observe(container);
@@ -158,7 +164,14 @@ export class SceneRenderer {
     this.removed = true;
     this.observer.disconnect();
     track('observers', -1);
-    void this.instance.remove();
+    const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
+    const own = this.ownHooks;
+    void Promise.resolve(this.instance.remove() as unknown).finally(() => {
+      for (const h of own) {
+        const i = hooks ? hooks.indexOf(h) : -1;
+        if (i >= 0) hooks!.splice(i, 1);
+      }
+    });
     track('sketches', -1);
   }
 

@@ -1,6 +1,7 @@
 // Removing a scene terminates its worker; connect/disconnect cycles leave no worker, timer, frame callback,
 // listener, observer or p5 sketch behind.
 import { expect } from '@open-wc/testing';
+import p5 from 'p5';
 import { liveResources, type PhysicsSceneElement } from '../../src/index.js';
 import { frames, mount, unmount, waitFor } from './helpers.js';
 
@@ -126,6 +127,8 @@ describe('<physics-scene> lifecycle', () => {
   it('50 connect/disconnect cycles leave no worker, timer, frame callback, listener, observer or sketch behind', async () => {
     const w = countWorkers();
     const g = trackGlobals();
+    const p5Hooks = () => (p5 as unknown as { lifecycleHooks: { remove: unknown[] } }).lifecycleHooks.remove.length;
+    const hooksBefore = p5Hooks();
     try {
       let ready = 0;
       for (let k = 0; k < 50; k++) {
@@ -153,6 +156,8 @@ describe('<physics-scene> lifecycle', () => {
       expect(pending.timers, 'pending timeouts').to.equal(0);
       expect(pending.frames, 'pending animation frames').to.equal(0);
       expect(pending.listeners, 'window/document listeners').to.deep.equal([]);
+      // p5 keeps a static list of per-sketch hooks; the renderer takes its own off again.
+      expect(p5Hooks()).to.equal(hooksBefore);
     } finally {
       g.restore();
       w.restore();
