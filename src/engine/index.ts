@@ -16,3 +16,4 @@ export { createCircle, type CircleOptions } from './builders/circle.js';
 export type { BodyOptions } from './builders/common.js';
 export { buildScene, buildBody, BODY_TYPES, type SceneDescription, type BodyDescription, type BodyType } from './scene.js';
 export { catalogue, SCENE_NAMES, type SceneName, type CatalogueEntry } from './scenes/catalogue.js';
+export * from './collision/index.js';

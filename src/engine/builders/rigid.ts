@@ -1,9 +1,11 @@
 import type { World } from '../world.js';
 import { finite, positive } from '../validate.js';
 import { colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { decompose } from '../collision/decompose.js';
 
 export interface PolygonOptions extends BodyOptions {
-  /** Outline in body coordinates (counter-clockwise in a y-up frame, clockwise on screen), at least 3 points. */
+  /** Outline in body coordinates, at least 3 points, either orientation; any simple polygon (a concave one collides
+   *  as convex parts from an ear-clipping + Hertel–Mehlhorn decomposition). */
   points: { x: number; y: number }[];
   /** Where the body's origin goes. Default (0, 0). */
   x?: number;
@@ -61,7 +63,9 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     // point inward and contacts push the wrong way: keeping the signed area stops that. Boxes, braced both ways,
     // do not need it.
     if (extraBraces.length === 0) constraints.push(world.addAreaConstraint(particles.slice(), { compliance }));
-    return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true));
+    // A concave outline (seed 2.8) collides as convex parts: indices into the outline, i.e. into `particles`.
+    const parts = isConvex(local) ? undefined : decompose(local);
+    return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true, parts));
   });
 }
 
@@ -94,6 +98,18 @@ export function createBox(world: World, o: BoxOptions): Built {
     },
     [[1, 3]],
   );
+}
+
+/** Whether a counter-clockwise outline turns left (or goes straight) at every vertex. */
+function isConvex(points: { x: number; y: number }[]): boolean {
+  const n = points.length;
+  for (let k = 0; k < n; k++) {
+    const a = points[k];
+    const b = points[(k + 1) % n];
+    const c = points[(k + 2) % n];
+    if ((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x) < 0) return false;
+  }
+  return true;
 }
 
 export function shoelace(points: { x: number; y: number }[]): number {
