@@ -3,7 +3,6 @@
 // and on the main thread (worker="none" or no Worker available), so both modes share every line of simulation code.
 import { World, buildBody, type BodyDescription, type Handle, type WorldOptions } from '../engine/index.js';
 import { handleSlot } from '../engine/handles.js';
-import { decompose } from '../engine/collision/decompose.js';
 import {
   EVENT, F, HEADER, MAX_CONTACTS, frameLength,
   type Diagnostics, type EngineApi, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody,
@@ -449,16 +448,6 @@ export class EngineHost implements EngineApi {
       r.dy = oy - my;
       r.edge0 = idx.length >= 2 ? Math.atan2(y[idx[1]] - y[idx[0]], x[idx[1]] - x[idx[0]]) : 0;
       r.angle0 = typeof d.angle === 'number' ? d.angle : 0;
-      if (r.desc.type === 'polygon' && !isConvex(idx, x, y)) {
-        // A concave outline collides as convex parts (createPolygon gives one part: right for convex outlines only).
-        try {
-          const points = Array.from(idx, (i) => ({ x: x[i], y: y[i] }));
-          this.world.setCollider(built.body, { parts: decompose(points) });
-        } catch (error) {
-          // A self-crossing outline: the body stays, colliding as one part, and the markup is reported.
-          return { key: r.key, field: 'points', message: `the outline cannot be split into convex parts (${error instanceof Error ? error.message : String(error)})` };
-        }
-      }
       return null;
     } catch (error) {
       r.handle = null;
@@ -714,22 +703,6 @@ export class EngineHost implements EngineApi {
     this.publisher.commit();
     this.published++;
   }
-}
-
-function isConvex(idx: Int32Array, x: Float64Array, y: Float64Array): boolean {
-  const n = idx.length;
-  let sign = 0;
-  for (let k = 0; k < n; k++) {
-    const a = idx[k];
-    const b = idx[(k + 1) % n];
-    const c = idx[(k + 2) % n];
-    const cross = (x[b] - x[a]) * (y[c] - y[b]) - (y[b] - y[a]) * (x[c] - x[b]);
-    if (Math.abs(cross) < 1e-12) continue;
-    const s = Math.sign(cross);
-    if (sign === 0) sign = s;
-    else if (s !== sign) return false;
-  }
-  return true;
 }
 
 function sameExcept(a: object, b: object, ignore: string[]): boolean {
