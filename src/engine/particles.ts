@@ -6,7 +6,7 @@ import { Table } from './table.js';
  * every loop already skips. Slots are reused by later particles.
  */
 export class ParticleStore extends Table {
-  readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags'] as const;
+  readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'sx', 'sy', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags'] as const;
   /** Position now. */
   x = new Float64Array(16);
   y = new Float64Array(16);
@@ -22,6 +22,9 @@ export class ParticleStore extends Table {
   /** Acceleration this substep: gravity + user force / mass + spring forces / mass. */
   ax = new Float64Array(16);
   ay = new Float64Array(16);
+  /** Position at the start of the step (sleeping judges motion over whole steps, not substep jitter). */
+  sx = new Float64Array(16);
+  sy = new Float64Array(16);
   /** Force accumulated by the user for the next step (cleared after it). */
   fx = new Float64Array(16);
   fy = new Float64Array(16);

@@ -1050,6 +1050,11 @@ export class World {
       return;
     }
     const t0 = this.measureTimings ? performance.now() : 0;
+    const { x, y, sx, sy } = this.particles;
+    for (let i = 0, count = this.particles.count; i < count; i++) {
+      sx[i] = x[i];
+      sy[i] = y[i];
+    }
     this.detectCollisions(dt);
     const t1 = this.measureTimings ? performance.now() : 0;
     for (let s = 0; s < n; s++) this.substep(h);

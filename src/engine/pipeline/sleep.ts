@@ -75,8 +75,10 @@ export class Sleep {
    */
   update(slots: number, alive: Uint8Array, bodyParticles: (slot: number) => Int32Array, p: ParticleStore, c: Contacts, touched: Uint8Array, dt: number): void {
     if (!this.enabled) return;
-    const { vx, vy, invMass } = p;
-    const limit2 = this.speedThreshold * this.speedThreshold;
+    const { x, y, sx, sy, invMass } = p;
+    // Judged on the motion over the whole step: substep jitter that goes nowhere should not keep a body awake.
+    const limit = this.speedThreshold * dt;
+    const limit2 = limit * limit;
     for (let s = 0; s < slots; s++) {
       this.parent[s] = s;
       if (!alive[s] || this.asleep[s]) continue;
@@ -87,8 +89,10 @@ export class Sleep {
         const i = idx[k];
         if (invMass[i] === 0) continue;
         movable = 1;
-        const v2 = vx[i] * vx[i] + vy[i] * vy[i];
-        if (v2 > fastest) fastest = v2;
+        const dx = x[i] - sx[i];
+        const dy = y[i] - sy[i];
+        const d2 = dx * dx + dy * dy;
+        if (d2 > fastest) fastest = d2;
       }
       this.dynamic[s] = movable;
       this.sleepTime[s] = movable && fastest < limit2 ? this.sleepTime[s] + dt : 0;
