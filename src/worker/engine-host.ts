@@ -245,10 +245,36 @@ export class EngineHost implements EngineApi {
 
   // ---- interaction -------------------------------------------------------------------------------------------
 
+  /**
+   * Grabs what is under the point. Rigid shapes are held softly at the point (the engine scales the pull by the
+   * body's mass). Particles of cloth, ropes, ragdolls, soft rings and balls are held firmly: a soft pull on one light
+   * particle loses to the rigid links of the rest of its body (the engine caps the drag speed, so nothing is flung).
+   * A press inside a soft ring takes its nearest ring particle.
+   */
   grab(x: number, y: number, stiffness?: number): number | null {
     try {
-      const g = this.world.grab(x, y, stiffness === undefined ? {} : { stiffness });
-      return g;
+      const w = this.world;
+      const rigid = w.bodiesAtPoint(x, y).some((h) => {
+        const type = this.bodies.get(this.keyOfHandle.get(h) ?? -1)?.desc.type;
+        return type === 'box' || type === 'polygon';
+      });
+      if (rigid) return w.grab(x, y, stiffness === undefined ? {} : { stiffness });
+      const firm = { stiffness: stiffness ?? PARTICLE_GRAB_STIFFNESS };
+      const g = w.grab(x, y, firm);
+      if (g !== null) return g;
+      const { x: px, y: py } = w.particles;
+      for (const r of this.order) {
+        if (r.desc.type !== 'softbody' || r.handle === null) continue;
+        const ring = r.desc.model === 'springs' ? r.indices.subarray(0, r.indices.length - 1) : r.indices;
+        if (!insideLoop(ring, px, py, x, y)) continue;
+        const i = this.nearest(ring, x, y);
+        const held = w.grab(px[i], py[i], firm);
+        if (held !== null) {
+          w.moveGrab(held, x, y);
+          return held;
+        }
+      }
+      return null;
     } catch {
       return null;
     }
@@ -703,6 +729,20 @@ export class EngineHost implements EngineApi {
     this.publisher.commit();
     this.published++;
   }
+}
+
+/** Pull of a grab on loose particles, per unit mass (1/s²): firm enough to beat the rigid links of a cloth. */
+const PARTICLE_GRAB_STIFFNESS = 1e6;
+
+/** Even–odd test of (x, y) against the closed loop of particles. */
+function insideLoop(loop: Int32Array, px: Float64Array, py: Float64Array, x: number, y: number): boolean {
+  let inside = false;
+  for (let k = 0, j = loop.length - 1; k < loop.length; j = k++) {
+    const a = loop[k];
+    const b = loop[j];
+    if (py[a] > y !== py[b] > y && x < ((px[b] - px[a]) * (y - py[a])) / (py[b] - py[a]) + px[a]) inside = !inside;
+  }
+  return inside;
 }
 
 function sameExcept(a: object, b: object, ignore: string[]): boolean {

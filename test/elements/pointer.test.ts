@@ -60,4 +60,14 @@ describe('<physics-scene> pointer drag', () => {
     for (let i = 0; i < x0.length; i++) most = Math.max(most, Math.hypot(x1[i] - x0[i], y1[i] - y0[i]));
     expect(most).to.be.greaterThan(1);
   });
+
+  it('a press inside a soft body (not on its ring) drags it', async () => {
+    scene = await mount('width="10" height="10" gravity="0 0"', `<physics-softbody x="5" y="6" radius="1" segments="16"></physics-softbody>`);
+    const blob = scene.querySelector('physics-softbody')!;
+    expect(blob.y).to.be.closeTo(6, 1e-6);
+    await drag(scene, 5, 6, 5, 3, 15);
+    await waitFor(() => blob.y < 4.5, 'the soft body to follow the pointer up');
+    pointer(scene, 'pointerup', 5, 3);
+    expect(blob.x).to.be.closeTo(5, 0.5);
+  });
 });
