@@ -72,4 +72,22 @@ describe('<physics-scene> live markup', () => {
     await waitFor(() => colourDistance(pixelAt(scene!, 6.6, 5), rgb('#0000ff')) < 8, 'the wider box');
     expect(colourDistance(pixelAt(scene, 7.2, 5), WHITE)).to.be.below(8);
   });
+
+  it('a body element reads its live pose and takes impulses', async () => {
+    scene = await mount('width="10" height="10" gravity="0 0" bounds="none" paused', `<physics-box x="2" y="5" width="1" height="1" angle="30"></physics-box>`);
+    const box = scene.querySelector('physics-box')!;
+    expect(box.x).to.be.closeTo(2, 1e-9);
+    expect(box.y).to.be.closeTo(5, 1e-9);
+    expect(box.angle).to.be.closeTo(30, 1e-9);
+    // Unit box, density 1: mass 1. An impulse of (2, -1) gives it the velocity (2, -1).
+    box.applyImpulse(2, -1);
+    await scene.step(60);
+    expect(box.x).to.be.closeTo(4, 1e-6);
+    expect(box.y).to.be.closeTo(4, 1e-6);
+    expect(box.angle).to.be.closeTo(30, 1e-6);
+    // Setting a pose property moves the body there (the markup's value changes too).
+    box.x = 7;
+    await scene.step(1);
+    expect(box.x).to.be.closeTo(7, 1e-9);
+  });
 });

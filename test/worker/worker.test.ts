@@ -93,6 +93,20 @@ describe('engine worker', () => {
     await waitFor(() => ball.y > 1.5, 'the ball to fall');
   });
 
+  it('a Worker that cannot be created (as under a strict CSP) gives physics-error and the main-thread engine', async () => {
+    PhysicsSceneElement.workerFactory = () => {
+      throw new DOMException("Refused to create a worker: violates the Content Security Policy directive 'worker-src'", 'SecurityError');
+    };
+    const errors: PhysicsErrorDetail[] = [];
+    const scene = await mount('paused', `<physics-circle x="5" y="1" radius="0.5"></physics-circle>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    scenes.push(scene);
+    expect(errors.map((e) => e.message).join()).to.match(/Content Security Policy/);
+    expect(scene.mode).to.equal('main');
+    expect(await scene.step(3)).to.equal(3);
+  });
+
   it('a worker that never answers times out with physics-error instead of hanging', async () => {
     PhysicsSceneElement.callTimeout = 300;
     PhysicsSceneElement.workerFactory = () => new Worker(URL.createObjectURL(new Blob(['/* silent */'], { type: 'text/javascript' })), { type: 'module' });
