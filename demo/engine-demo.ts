@@ -8,13 +8,13 @@ const HEIGHT = 8;
 const world = new World({ gravity: { x: 0, y: 9.81 }, bounds: { minX: 0, minY: 0, maxX: WIDTH, maxY: HEIGHT } });
 const COLUMNS = 24;
 const ROWS = 18;
-const cloth = createCloth(world, { origin: { x: 1, y: 0.8 }, columns: COLUMNS, rows: ROWS, spacing: 0.25, pins: 'corners', shear: 1e-3, bend: 5e-3 });
+const cloth = createCloth(world, { origin: { x: 1, y: 0.8 }, columns: COLUMNS, rows: ROWS, spacing: 0.25, pins: [0, 5, 11, 17, 23], shear: 1e-3, bend: 5e-3 });
 const rope = createRope(world, { from: { x: 9, y: 0.8 }, to: { x: 11.5, y: 0.8 }, segments: 30, radius: 0.04 });
 world.applyImpulse(cloth.particles[cloth.particles.length - 1], 0.05, -0.02);
-// Bring the two corner pins together a little so the cloth drapes between them.
-const pins = cloth.constraints.filter((c) => world.constraintKindOf(c) === 'pin');
-world.setPinTarget(pins[0], 1.55, 0.8);
-world.setPinTarget(pins[1], 6.2, 0.8);
+// Gather the curtain's pins a little so the cloth drapes in folds between them.
+cloth.constraints
+  .filter((c) => world.constraintKindOf(c) === 'pin')
+  .forEach((pin, k) => world.setPinTarget(pin, 1.6 + k * 1.2, 0.8));
 const clothIndex = world.bodyParticleIndices(cloth.body);
 const ropeIndex = world.bodyParticleIndices(rope.body);
 

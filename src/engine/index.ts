@@ -9,7 +9,7 @@ export { createRope, type RopeOptions } from './builders/rope.js';
 export { createCloth, type ClothOptions, type ClothPins } from './builders/cloth.js';
 export { createBox, createPolygon, type BoxOptions, type PolygonOptions } from './builders/rigid.js';
 export { createSoftBody, type SoftBodyOptions } from './builders/softbody.js';
-export { createRagdoll, ragdollJoints, RAGDOLL_JOINTS, type RagdollOptions } from './builders/ragdoll.js';
+export { createRagdoll, ragdollJoints, RAGDOLL_JOINTS, RAGDOLL_BONES, type RagdollOptions } from './builders/ragdoll.js';
 export type { Built } from './builders/common.js';
 export { hashColumns } from './hash.js';
 export { createCircle, type CircleOptions } from './builders/circle.js';

@@ -821,6 +821,14 @@ export class World {
 
   private bodyParts: (number[][] | undefined)[] = [];
 
+  /** Whether a soft body has a centre particle held by springs (the 'springs' model): its last particle. */
+  private isHubbed(slot: number): boolean {
+    const idx = this.bodyParticles[slot];
+    const hub = idx[idx.length - 1];
+    for (let r = 0; r < this.springs.count; r++) if (this.springs.a[r] === hub || this.springs.b[r] === hub) return true;
+    return false;
+  }
+
   private checkCollider(o: ColliderOptions, particleCount: number): Required<Omit<ColliderOptions, 'parts'>> & { parts?: number[][] } {
     if (o == null || typeof o !== 'object') throw new TypeError(`collider options must be an object, got ${String(o)}`);
     const shape = oneOf('shape', o.shape ?? 'polygon', COLLIDER_SHAPES);
@@ -855,6 +863,10 @@ export class World {
     c.category[slot] = o.category;
     c.mask[slot] = o.mask;
     c.group[slot] = o.group;
+    // A soft ring is picked and queried by its inside, not only by its particles' circles (the springs model's
+    // last particle is the hub, not part of the ring).
+    const ring = this.bodyKind[slot] === 'soft' ? this.bodyParticles[slot].length - (this.springs.count > 0 && this.isHubbed(slot) ? 1 : 0) : 0;
+    c.ringLength[slot] = ring;
     this.bodyParts[slot] = o.parts;
     this.collidersDirty = true;
   }
@@ -956,7 +968,7 @@ export class World {
         }
       }
       const nearest = this.nearestParticle(idx, x, y);
-      if (nearest >= 0) return this.addGrab(nearest, nearest, nearest, 1, 0, 0, x, y, p.invMass[nearest] / stiffness);
+      if (nearest >= 0) return this.addGrab(nearest, nearest, nearest, 1, 0, 0, x, y, 1 / (stiffness * mass));
     }
     let best = -1;
     let bestD2 = pickRadius * pickRadius;
@@ -967,7 +979,11 @@ export class World {
     }
     if (best < 0) return null;
     this.wakeParticle(best);
-    return this.addGrab(best, best, best, 1, 0, 0, x, y, p.invMass[best] / stiffness);
+    // Held at one particle, a cloth or rope is still pulled as a whole: the pull scales with the mass of the body
+    // the particle belongs to, so dragging a cloth feels like dragging a box of the same mass.
+    const owner = this.sleep.particleBody[best];
+    const mass = owner >= 0 ? this.bodyMass(owner) : 1 / p.invMass[best];
+    return this.addGrab(best, best, best, 1, 0, 0, x, y, 1 / (stiffness * mass));
   }
 
   /** Moves a grab's target (the pointer). */

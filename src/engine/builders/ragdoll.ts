@@ -32,7 +32,8 @@ const POSE: [number, number][] = [
   [0.07, 0.5], // footR
 ];
 
-const BONES: [number, number][] = [
+/** Bones as pairs of indices into RAGDOLL_JOINTS (for drawing). */
+export const RAGDOLL_BONES: readonly (readonly [number, number])[] = [
   [0, 1], [1, 2], [1, 3], [3, 4], [1, 5], [5, 6], [2, 7], [7, 8], [2, 9], [9, 10],
 ];
 
@@ -61,7 +62,7 @@ export function createRagdoll(world: World, o: RagdollOptions): Built {
   const compliance = complianceOf('jointCompliance', o.jointCompliance);
   return transactional(world, (particles, constraints) => {
     for (const [px, py] of POSE) particles.push(world.addParticle({ x: x + px * height, y: y + py * height, mass: each, radius: 0.04 * height }));
-    for (const [a, b] of BONES) constraints.push(world.addDistance(particles[a], particles[b]));
+    for (const [a, b] of RAGDOLL_BONES) constraints.push(world.addDistance(particles[a], particles[b]));
     for (const [a, v, c, below, above] of LIMITS) {
       const rest = world.angleAt(particles[a], particles[v], particles[c]);
       constraints.push(world.addAngleLimit(particles[a], particles[v], particles[c], { min: rest - below, max: rest + above, compliance }));

@@ -22,6 +22,8 @@ export class Colliders {
   group = new Int32Array(16);
   partStart = new Int32Array(16);
   partCount = new Int32Array(16);
+  /** For soft rings: how many of the body's first particles form its closed outline (0 otherwise). */
+  ringLength = new Int32Array(16);
   /** 1 when every particle of the body is immovable. */
   isStatic = new Uint8Array(16);
   /** The body's AABB this step (enlarged by its motion), and its particles' index list. */
@@ -44,7 +46,7 @@ export class Colliders {
   activeCount = 0;
 
   ensureBodies(slots: number): void {
-    for (const name of ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'partStart', 'partCount', 'isStatic', 'minX', 'minY', 'maxX', 'maxY'] as const) {
+    for (const name of ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'partStart', 'partCount', 'isStatic', 'ringLength', 'minX', 'minY', 'maxX', 'maxY'] as const) {
       (this as unknown as Record<string, Float64Array>)[name] = grown((this as unknown as Record<string, Float64Array>)[name], slots);
     }
   }

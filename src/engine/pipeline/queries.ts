@@ -63,7 +63,20 @@ function contains(c: Colliders, p: ParticleStore, s: number, x: number, y: numbe
     const r = p.radius[i];
     if ((p.x[i] - x) ** 2 + (p.y[i] - y) ** 2 <= r * r) return true;
   }
-  return false;
+  return c.ringLength[s] >= 3 && insideRing(idx, c.ringLength[s], p, x, y);
+}
+
+/** Crossing-number test against a closed ring of particles (any simple outline, convex or not). */
+function insideRing(idx: Int32Array, n: number, p: ParticleStore, x: number, y: number): boolean {
+  let inside = false;
+  for (let k = 0, j = n - 1; k < n; j = k++) {
+    const xi = p.x[idx[k]];
+    const yi = p.y[idx[k]];
+    const xj = p.x[idx[j]];
+    const yj = p.y[idx[j]];
+    if (yi > y !== yj > y && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+  }
+  return inside;
 }
 
 /** Body slots whose shape overlaps the box [minX, maxX] × [minY, maxY]. */

@@ -1,5 +1,5 @@
 import { expect } from '@open-wc/testing';
-import { World, createBox, createCircle, createCloth, createPolygon, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
+import { World, createBox, createCircle, createCloth, createPolygon, createSoftBody, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
 import { scene } from './scene-helpers.js';
 
 describe('pipeline: narrow phase modes', () => {
@@ -214,5 +214,32 @@ describe('pipeline: concave bodies', () => {
     expect(world.bodyCentroid(ball.body).y).to.be.closeTo(-1.4, 0.02);
     expect(world.bodiesAtPoint(2, -2)).to.deep.equal([]); // the notch is empty space
     expect(world.bodiesAtPoint(0.5, -2)).to.deep.equal([l.body]);
+  });
+});
+
+describe('pipeline: picking soft bodies and pulling cloth', () => {
+  it('a point inside a soft ring finds the ring (both models), a point outside does not', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const pressure = createSoftBody(world, { center: { x: 0, y: 0 }, radius: 1, segments: 16 });
+    const springs = createSoftBody(world, { center: { x: 5, y: 0 }, radius: 1, model: 'springs' });
+    world.step();
+    expect(world.bodiesAtPoint(0.3, -0.2)).to.deep.equal([pressure.body]);
+    expect(world.bodiesAtPoint(5.2, 0.3)).to.deep.equal([springs.body]);
+    expect(world.bodiesAtPoint(2.5, 0)).to.deep.equal([]);
+    expect(world.grab(0.3, -0.2)).to.not.equal(null);
+  });
+
+  it('a cloth grabbed at one particle follows the pointer as a whole body would', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    const cloth = createCloth(world, { origin: { x: 0, y: 0 }, columns: 12, rows: 12, spacing: 0.2, pins: 'none' });
+    const corner = cloth.particles[0];
+    const grab = world.grab(0, 0)!;
+    for (let k = 1; k <= 120; k++) {
+      world.moveGrab(grab, (2 * k) / 120, (-2 * k) / 120);
+      world.step();
+    }
+    // The whole cloth hangs from the held corner, which is near the pointer despite the cloth's weight.
+    const held = world.getPosition(corner);
+    expect(Math.hypot(held.x - 2, held.y + 2)).to.be.below(0.2);
   });
 });
