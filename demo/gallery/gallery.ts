@@ -1,0 +1,342 @@
+// The gallery: a sidebar of stories, the live scene with a stats overlay, a controls panel generated from each
+// element's lit properties, and the markup snippet, kept in step with every edit. Everything is built with the DOM
+// API (createElement, setAttribute, textContent): no attribute value ever goes through innerHTML.
+import { allStories, type Node, type Story } from './stories.js';
+
+type SceneEl = HTMLElement & {
+  ready: Promise<void>;
+  mode: 'worker' | 'main' | null;
+  transport: string | null;
+  stepCount: number;
+  renderedFrames: number;
+  canvas: HTMLCanvasElement | null;
+  diagnostics(): Promise<{ bodyCount: number; particleCount: number; linkCount: number; transport: string; mode: string }>;
+  drawHook: unknown;
+};
+
+// ---- main-thread time: every timer and animation-frame callback on this page is timed ---------------------------
+
+const busy = { ms: 0 };
+{
+  const rawTimeout = window.setTimeout.bind(window);
+  const rawRaf = window.requestAnimationFrame.bind(window);
+  const timed = <A extends unknown[]>(fn: (...a: A) => void) => (...a: A) => {
+    const t0 = performance.now();
+    try {
+      fn(...a);
+    } finally {
+      busy.ms += performance.now() - t0;
+    }
+  };
+  window.setTimeout = ((fn: TimerHandler, ms?: number, ...rest: unknown[]) => (typeof fn === 'function' ? rawTimeout(timed(fn as (...a: unknown[]) => void), ms, ...rest) : rawTimeout(fn, ms, ...rest))) as typeof window.setTimeout;
+  window.requestAnimationFrame = ((cb: FrameRequestCallback) => rawRaf(timed(cb))) as typeof window.requestAnimationFrame;
+}
+
+let longTasks = 0;
+try {
+  new PerformanceObserver((list) => (longTasks += list.getEntries().length)).observe({ type: 'longtask', buffered: false });
+} catch {
+  /* no long-task timing in this browser */
+}
+
+await import('../../src/index.js');
+
+// ---- helpers ------------------------------------------------------------------------------------------------------
+
+function el<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<Record<string, string>> = {}, ...kids: (Node_ | string)[]): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(props)) if (v !== undefined) k === 'text' ? (e.textContent = v) : e.setAttribute(k, v);
+  for (const kid of kids) e.append(kid);
+  return e;
+}
+type Node_ = globalThis.Node;
+
+/** Escapes an attribute value for the markup snippet (shown as text, but copied as markup). */
+export const escapeAttr = (v: string) => v.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+
+function markup(node: Node, indent = ''): string {
+  const attrs = Object.entries(node.attrs)
+    .map(([k, v]) => (v === true ? ` ${k}` : ` ${k}="${escapeAttr(v)}"`))
+    .join('');
+  const kids = node.children ?? [];
+  if (!kids.length) return `${indent}<${node.tag}${attrs}></${node.tag}>`;
+  return `${indent}<${node.tag}${attrs}>\n${kids.map((c) => markup(c, indent + '  ')).join('\n')}\n${indent}</${node.tag}>`;
+}
+
+function build(node: Node): HTMLElement {
+  const e = document.createElement(node.tag);
+  for (const [k, v] of Object.entries(node.attrs)) e.setAttribute(k, v === true ? '' : v);
+  for (const c of node.children ?? []) e.append(build(c));
+  return e;
+}
+
+const clone = (node: Node): Node => ({ tag: node.tag, attrs: { ...node.attrs }, children: node.children?.map(clone) });
+
+const ENUMS: Record<string, string[]> = {
+  broadphase: ['grid', 'brute'],
+  narrowphase: ['sat', 'gjk'],
+  worker: ['auto', 'none'],
+  bounds: ['view', 'none'],
+  'draw-mode': ['over', 'replace'],
+  model: ['pressure', 'springs'],
+  pin: ['start', 'end', 'both', 'none'],
+};
+
+interface PropInfo {
+  attr: string;
+  kind: 'number' | 'boolean' | 'string';
+}
+
+/** The attributes an element class declares, from lit's elementProperties. */
+function propsOf(tag: string): PropInfo[] {
+  const ctor = customElements.get(tag) as (CustomElementConstructor & { elementProperties?: Map<string, { attribute?: string | boolean; type?: unknown }> }) | undefined;
+  if (!ctor?.elementProperties) return [];
+  const out: PropInfo[] = [];
+  for (const [name, opts] of ctor.elementProperties) {
+    if (opts.attribute === false) continue;
+    const attr = typeof opts.attribute === 'string' ? opts.attribute : String(name).toLowerCase();
+    out.push({ attr, kind: opts.type === Number ? 'number' : opts.type === Boolean ? 'boolean' : 'string' });
+  }
+  return out;
+}
+
+// ---- the page -----------------------------------------------------------------------------------------------------
+
+const stories = allStories();
+const nav = document.getElementById('stories')!;
+const title = document.getElementById('story-title')!;
+const description = document.getElementById('story-description')!;
+const stage = document.getElementById('stage')!;
+const controls = document.getElementById('controls')!;
+const snippet = document.getElementById('snippet')!;
+const stats = document.getElementById('stats')!;
+const toggles = document.getElementById('toggles')!;
+const copyButton = document.getElementById('copy') as HTMLButtonElement;
+
+let groupEl: HTMLElement | null = null;
+let lastGroup = '';
+for (const s of stories) {
+  if (s.group !== lastGroup) {
+    lastGroup = s.group;
+    groupEl = el('ul');
+    nav.append(el('h3', { text: s.group }), groupEl);
+  }
+  const a = el('a', { href: `#${s.id}`, text: s.title, 'data-story': s.id });
+  groupEl!.append(el('li', {}, a));
+}
+
+interface Current {
+  story: Story;
+  data: Node;
+  scene: SceneEl;
+  featured: HTMLElement | null;
+  featuredData: Node | null;
+}
+let current: Current | null = null;
+
+function refreshSnippet(): void {
+  if (current) snippet.textContent = markup(current.data);
+}
+
+function setAttr(target: HTMLElement, data: Node, attr: string, value: string | true | null): void {
+  if (value === null) {
+    target.removeAttribute(attr);
+    delete data.attrs[attr];
+  } else {
+    target.setAttribute(attr, value === true ? '' : value);
+    data.attrs[attr] = value;
+  }
+  refreshSnippet();
+  syncToggles();
+  writeHash();
+}
+
+function controlFor(target: HTMLElement, data: Node, p: PropInfo): HTMLElement {
+  const id = `c-${data.tag}-${p.attr}`;
+  const label = el('label', { for: id, text: p.attr });
+  let input: HTMLInputElement | HTMLSelectElement;
+  const value = data.attrs[p.attr];
+  if (p.kind === 'boolean') {
+    input = el('input', { id, type: 'checkbox' });
+    input.checked = value !== undefined;
+    input.addEventListener('change', () => setAttr(target, data, p.attr, (input as HTMLInputElement).checked ? true : null));
+  } else if (ENUMS[p.attr]) {
+    input = el('select', { id });
+    input.append(el('option', { value: '', text: '(default)' }));
+    for (const o of ENUMS[p.attr]) input.append(el('option', { value: o, text: o }));
+    input.value = typeof value === 'string' ? value : '';
+    input.addEventListener('change', () => setAttr(target, data, p.attr, input.value === '' ? null : input.value));
+  } else {
+    input = el('input', { id, type: p.kind === 'number' ? 'number' : 'text', step: 'any', placeholder: 'default' });
+    input.value = typeof value === 'string' ? value : '';
+    input.addEventListener('input', () => setAttr(target, data, p.attr, input.value === '' ? null : input.value));
+  }
+  input.dataset.attr = p.attr;
+  return el('div', { class: `control ${p.kind}` }, label, input);
+}
+
+function renderControls(): void {
+  controls.replaceChildren();
+  if (!current) return;
+  const sections: [HTMLElement, Node][] = [[current.scene, current.data]];
+  if (current.featured && current.featuredData) sections.push([current.featured, current.featuredData]);
+  for (const [target, data] of sections) {
+    const box = el('fieldset', {}, el('legend', { text: `<${data.tag}${data.attrs.id ? ` id="${data.attrs.id}"` : ''}>` }));
+    for (const p of propsOf(data.tag)) box.append(controlFor(target, data, p));
+    controls.append(box);
+  }
+}
+
+// Toolbar toggles: attributes of the scene element, shared with the controls panel.
+const TOGGLES: { attr: string; on: string; off: string | null; label: string }[] = [
+  { attr: 'worker', on: 'none', off: null, label: 'main thread (worker="none")' },
+  { attr: 'broadphase', on: 'brute', off: null, label: 'brute-force broad phase' },
+  { attr: 'narrowphase', on: 'gjk', off: null, label: 'GJK + EPA narrow phase' },
+  { attr: 'debug', on: '', off: null, label: 'debug drawing' },
+];
+const toggleInputs = TOGGLES.map((t) => {
+  const input = el('input', { type: 'checkbox', id: `t-${t.attr}`, 'data-toggle': t.attr });
+  input.addEventListener('change', () => {
+    if (!current) return;
+    setAttr(current.scene, current.data, t.attr, input.checked ? (t.on === '' ? true : t.on) : t.off);
+    renderControls();
+  });
+  toggles.append(el('label', { class: 'toggle' }, input, ` ${t.label}`));
+  return { t, input };
+});
+
+function syncToggles(): void {
+  for (const { t, input } of toggleInputs) {
+    const v = current?.data.attrs[t.attr];
+    input.checked = t.on === '' ? v !== undefined : v === t.on;
+  }
+}
+
+function writeHash(): void {
+  if (!current) return;
+  const base = current.story.root.attrs;
+  const params = new URLSearchParams();
+  for (const t of TOGGLES) {
+    const now = current.data.attrs[t.attr];
+    if (now !== base[t.attr]) params.set(t.attr, now === undefined ? '' : now === true ? '1' : now);
+  }
+  const q = params.toString();
+  history.replaceState(null, '', `#${current.story.id}${q ? `?${q}` : ''}`);
+}
+
+function show(id: string, query: URLSearchParams): void {
+  const story = stories.find((s) => s.id === id) ?? stories[0];
+  const data = clone(story.root);
+  for (const t of TOGGLES) {
+    if (!query.has(t.attr)) continue;
+    const v = query.get(t.attr)!;
+    if (v === '') delete data.attrs[t.attr];
+    else data.attrs[t.attr] = t.on === '' ? true : v;
+  }
+  const scene = build(data) as SceneEl;
+  const featuredData = story.featured !== undefined ? (data.children?.[story.featured] ?? null) : null;
+  const featured = story.featured !== undefined ? (scene.children[story.featured] as HTMLElement) : null;
+  current = { story, data, scene, featured, featuredData };
+  stage.replaceChildren(scene);
+  title.textContent = story.title;
+  description.textContent = story.description;
+  for (const a of nav.querySelectorAll('a')) a.classList.toggle('active', a.dataset.story === story.id);
+  document.title = `${story.title} · physics-elements gallery`;
+  renderControls();
+  refreshSnippet();
+  syncToggles();
+  writeHash();
+  resetStats();
+  if (story.onReady) scene.ready?.then(() => current?.scene === scene && story.onReady!(scene));
+}
+
+function fromHash(): void {
+  const raw = decodeURIComponent(location.hash.slice(1));
+  const [id, q = ''] = raw.split('?');
+  if (current && current.story.id === id) return;
+  show(id, new URLSearchParams(q));
+}
+window.addEventListener('hashchange', fromHash);
+
+copyButton.addEventListener('click', async () => {
+  const text = snippet.textContent ?? '';
+  try {
+    await navigator.clipboard.writeText(text);
+    copyButton.textContent = 'Copied';
+  } catch {
+    const range = document.createRange();
+    range.selectNodeContents(snippet);
+    getSelection()?.removeAllRanges();
+    getSelection()?.addRange(range);
+    copyButton.textContent = 'Selected: press Ctrl+C';
+  }
+  setTimeout(() => (copyButton.textContent = 'Copy'), 1500);
+});
+
+// ---- stats overlay --------------------------------------------------------------------------------------------
+
+let frames = 0;
+let windowStart = performance.now();
+let busyStart = busy.ms;
+let stepStart = 0;
+let stepMs = NaN;
+let counts = { bodies: 0, particles: 0 };
+let longStart = 0;
+function resetStats(): void {
+  frames = 0;
+  windowStart = performance.now();
+  busyStart = busy.ms;
+  stepStart = current?.scene.stepCount ?? 0;
+  stepMs = NaN;
+  longStart = longTasks;
+  counts = { bodies: 0, particles: 0 };
+}
+
+const count = () => {
+  frames++;
+  requestAnimationFrame(count);
+};
+requestAnimationFrame(count);
+
+/** Physics ms per step: times 4 extra steps taken through the engine's own call (worker or main), round trip included. */
+async function probeStep(scene: SceneEl): Promise<void> {
+  const client = (scene as unknown as { client?: { api: { step(n: number): Promise<number> } } }).client;
+  if (!client || scene.hasAttribute('paused')) return;
+  const t0 = performance.now();
+  await client.api.step(4);
+  stepMs = (performance.now() - t0) / 4;
+}
+
+setInterval(async () => {
+  const c = current;
+  if (!c) return;
+  const now = performance.now();
+  const dt = now - windowStart;
+  const fps = (frames * 1000) / dt;
+  const mainMs = frames ? (busy.ms - busyStart) / frames : NaN;
+  const steps = c.scene.stepCount - stepStart;
+  const lt = longTasks - longStart;
+  frames = 0;
+  windowStart = now;
+  busyStart = busy.ms;
+  stepStart = c.scene.stepCount;
+  longStart = longTasks;
+  try {
+    const d = await Promise.race([c.scene.diagnostics(), new Promise<null>((r) => setTimeout(() => r(null), 500))]);
+    if (d) counts = { bodies: d.bodyCount, particles: d.particleCount };
+    await probeStep(c.scene);
+  } catch {
+    /* the scene is restarting */
+  }
+  const f = (v: number, digits = 1) => (Number.isFinite(v) ? v.toFixed(digits) : '–');
+  const lines = [
+    `${f(fps, 0)} fps · ${f((steps * 1000) / dt, 0)} steps/s`,
+    `physics ${f(stepMs, 2)} ms/step`,
+    `main thread ${f(mainMs, 2)} ms/frame`,
+    `${counts.bodies} bodies · ${counts.particles} particles`,
+    `${c.scene.mode ?? '…'} · ${c.scene.transport ?? '…'}${lt ? ` · ${lt} long tasks` : ''}`,
+  ];
+  stats.textContent = lines.join('\n');
+}, 1000);
+
+fromHash();

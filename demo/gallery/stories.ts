@@ -1,0 +1,296 @@
+// The gallery's stories as plain data: a tree of elements (tag, attributes, children). Catalogue scenes are turned
+// into the same data, so every story is rendered, edited and shown as markup the same way.
+import { catalogue, SCENE_NAMES } from '../../src/engine/scenes/catalogue.js';
+import type { BodyDescription } from '../../src/engine/scene.js';
+
+export interface Node {
+  tag: string;
+  attrs: Record<string, string | true>;
+  children?: Node[];
+}
+
+export interface Story {
+  id: string;
+  group: 'Elements' | 'Links' | 'Presets' | 'Markup demos' | 'Catalogue scenes';
+  title: string;
+  description: string;
+  /** The scene (or preset) element and its children. */
+  root: Node;
+  /** Index path (into root.children) of the element the controls panel features next to the scene. */
+  featured?: number;
+  /** Runs once the scene is ready (e.g. a throw). */
+  onReady?: (scene: HTMLElement) => void;
+}
+
+const n = (tag: string, attrs: Record<string, string | number | true> = {}, children?: Node[]): Node => ({
+  tag,
+  attrs: Object.fromEntries(Object.entries(attrs).map(([k, v]) => [k, v === true ? true : String(v)])),
+  children,
+});
+
+const floor = (w = 16, h = 9) => n('physics-box', { x: w / 2, y: h - 0.4, width: w, height: 0.8, static: true });
+
+function scene(attrs: Record<string, string | number | true>, children: Node[]): Node {
+  return n('physics-scene', { width: 16, height: 9, gravity: '0 9.81', ...attrs }, children);
+}
+
+// ---- one story per element --------------------------------------------------------------------------------------
+
+const elementStories: Story[] = [
+  {
+    id: 'physics-box',
+    group: 'Elements',
+    title: '<physics-box>',
+    description: 'A rigid rectangle (a frame of four corner particles). Edit its attributes: the body is rebuilt where the markup says.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-box', { x: 8, y: 2, width: 2, height: 1, angle: 25, fill: '#3d7dd8' }), n('physics-box', { x: 6.5, y: 5, width: 1, height: 1 }), n('physics-box', { x: 9.5, y: 4, width: 1.4, height: 0.7, fill: '#f2c14e', stroke: '#a5812a' })]),
+  },
+  {
+    id: 'physics-circle',
+    group: 'Elements',
+    title: '<physics-circle>',
+    description: 'A single particle colliding as a circle. Try restitution between 0 and 1.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-circle', { x: 8, y: 1, radius: 0.8, restitution: 0.6, fill: '#c0392b', stroke: '#7a241b' }), n('physics-circle', { x: 5, y: 3, radius: 0.5 }), n('physics-circle', { x: 11, y: 2, radius: 0.4, restitution: 0.9 })]),
+  },
+  {
+    id: 'physics-polygon',
+    group: 'Elements',
+    title: '<physics-polygon>',
+    description: 'A rigid outline from points in body coordinates; concave outlines collide as convex parts.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-polygon', { x: 8, y: 2, points: '-1,-0.5 1,-0.5 1,0.5 0.4,0.5 0.4,0 -0.4,0 -0.4,0.5 -1,0.5', fill: '#7d5ba6', stroke: '#4e3670' }), n('physics-polygon', { x: 5, y: 3, points: '-0.8,0.6 0,-0.8 0.8,0.6' }), n('physics-polygon', { x: 11, y: 3, angle: 15, points: '0,-0.8 0.76,-0.25 0.47,0.65 -0.47,0.65 -0.76,-0.25' })]),
+  },
+  {
+    id: 'physics-rope',
+    group: 'Elements',
+    title: '<physics-rope>',
+    description: 'Particles and links from (x1, y1) to (x2, y2); `rigid` makes a chain of sticks, `pin` chooses the fixed ends.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-rope', { x1: 3, y1: 1, x2: 13, y2: 1, segments: 30, pin: 'both', slack: 1.2, radius: 0.08 }), n('physics-circle', { x: 8, y: -1, radius: 0.6 })]),
+  },
+  {
+    id: 'physics-cloth',
+    group: 'Elements',
+    title: '<physics-cloth>',
+    description: 'A grid of particles with structural, shear and bend links; `pins` holds the top row, the corners or chosen columns.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-cloth', { x: 4, y: 0.5, columns: 20, rows: 14, spacing: 0.4, pins: 'corners', shear: 0.001 }), n('physics-circle', { x: 8, y: -2, radius: 0.7 })]),
+  },
+  {
+    id: 'physics-softbody',
+    group: 'Elements',
+    title: '<physics-softbody>',
+    description: 'A pressurised ring (or, with model="springs", a mass–spring wheel).',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-softbody', { x: 8, y: 3, radius: 1.4, segments: 24, pressure: 1 }), n('physics-softbody', { x: 4, y: 2, radius: 1, model: 'springs' }), n('physics-box', { x: 11, y: 6.8, width: 3, height: 2, static: true, angle: 10 })]),
+  },
+  {
+    id: 'physics-ragdoll',
+    group: 'Elements',
+    title: '<physics-ragdoll>',
+    description: 'A stick figure with joint limits, placed by its pelvis. Drag a limb.',
+    featured: 1,
+    root: scene({}, [floor(), n('physics-ragdoll', { x: 8, y: 3, height: 2.2 }), n('physics-box', { x: 8, y: 7.2, width: 3, height: 1.2, static: true })]),
+  },
+];
+
+const linkStories: Story[] = [
+  {
+    id: 'physics-joint',
+    group: 'Links',
+    title: '<physics-joint>',
+    description: 'A stick between the particles of two bodies nearest the anchor.',
+    featured: 3,
+    root: scene({}, [floor(), n('physics-box', { id: 'ja', x: 6, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-box', { id: 'jb', x: 8, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-joint', { a: 'ja', b: 'jb', x: 7, y: 3 })]),
+  },
+  {
+    id: 'physics-spring',
+    group: 'Links',
+    title: '<physics-spring>',
+    description: 'A damped Hooke spring between two bodies.',
+    featured: 3,
+    root: scene({}, [floor(), n('physics-box', { id: 'sa', x: 7, y: 2, width: 0.8, height: 0.8, static: true, fill: '#a2a7b0' }), n('physics-circle', { id: 'sb', x: 10, y: 2, radius: 0.5 }), n('physics-spring', { a: 'sa', b: 'sb', stiffness: 40, damping: 0.5, length: 2 })]),
+  },
+  {
+    id: 'physics-pin',
+    group: 'Links',
+    title: '<physics-pin>',
+    description: 'Holds the particle of a body nearest (x, y) at that point.',
+    featured: 2,
+    root: scene({}, [floor(), n('physics-box', { id: 'lamp', x: 9, y: 3, width: 1.2, height: 0.6, fill: '#f2c14e' }), n('physics-pin', { body: 'lamp', x: 8.4, y: 2.7, compliance: 0 })]),
+  },
+];
+
+// ---- the markup demo that used to be demo/index.html ------------------------------------------------------------
+
+const markupStories: Story[] = [
+  {
+    id: 'playground',
+    group: 'Markup demos',
+    title: 'Playground',
+    description: 'The original markup demo: every body element, a pin holding the lamp and a spring between the teal bars.',
+    root: scene({}, [
+      n('physics-box', { id: 'floor', x: 8, y: 8.6, width: 16, height: 0.8, static: true }),
+      n('physics-box', { x: 3, y: 7.75, width: 3, height: 0.9, angle: -12, static: true, fill: '#a2a7b0' }),
+      n('physics-box', { id: 'crate', x: 5, y: 1, width: 1, height: 1, angle: 20 }),
+      n('physics-box', { x: 5.4, y: -0.4, width: 1.4, height: 0.7, fill: '#f2c14e', stroke: '#a5812a' }),
+      n('physics-circle', { x: 7, y: 0.5, radius: 0.5, restitution: 0.5 }),
+      n('physics-circle', { x: 7.8, y: -1, radius: 0.35, fill: '#c0392b', stroke: '#7a241b' }),
+      n('physics-polygon', { x: 9.5, y: 1.5, points: '-0.8,0.6 0,-0.8 0.8,0.6' }),
+      n('physics-polygon', { x: 11.5, y: 1, points: '-1,-0.5 1,-0.5 1,0.5 0.4,0.5 0.4,0 -0.4,0 -0.4,0.5 -1,0.5', fill: '#7d5ba6', stroke: '#4e3670' }),
+      n('physics-softbody', { x: 13.2, y: 4.5, radius: 0.9, segments: 18 }),
+      n('physics-rope', { x1: 1, y1: 0.4, x2: 3.4, y2: 0.4, segments: 16, radius: 0.05 }),
+      n('physics-cloth', { x: 11.6, y: 0.3, columns: 10, rows: 7, spacing: 0.3, pins: 'corners', shear: 0.001 }),
+      n('physics-ragdoll', { x: 2.2, y: 3, height: 1.6 }),
+      n('physics-box', { id: 'lamp', x: 15.2, y: 5.2, width: 0.5, height: 0.5, fill: '#f2c14e' }),
+      n('physics-pin', { body: 'lamp', x: 15.2, y: 4.2, compliance: 0 }),
+      n('physics-box', { id: 'b1', x: 9, y: 4, width: 0.8, height: 0.4, fill: '#3aa0a0' }),
+      n('physics-box', { id: 'b2', x: 10.2, y: 4, width: 0.8, height: 0.4, fill: '#3aa0a0' }),
+      n('physics-spring', { a: 'b1', b: 'b2', stiffness: 60, damping: 1 }),
+    ]),
+  },
+  {
+    id: 'debug-view',
+    group: 'Markup demos',
+    title: 'Debug view',
+    description: '`debug`: axis-aligned boxes (magenta), contacts and normals (red), the broad phase\'s grid.',
+    root: scene({ width: 12, height: 5, debug: true }, [
+      n('physics-box', { x: 6, y: 4.6, width: 12, height: 0.8, static: true }),
+      n('physics-box', { x: 4, y: 1, width: 1, height: 1, angle: 30 }),
+      n('physics-box', { x: 4.3, y: 2.6, width: 1.2, height: 1.2 }),
+      n('physics-circle', { x: 7, y: 1, radius: 0.6 }),
+      n('physics-circle', { x: 7.4, y: 2.5, radius: 0.4 }),
+      n('physics-polygon', { x: 9.5, y: 2, points: '-0.7,0.5 0,-0.7 0.7,0.5' }),
+    ]),
+  },
+  {
+    id: 'sideways',
+    group: 'Markup demos',
+    title: 'Sideways gravity, main thread',
+    description: '`gravity="6 2"`, `worker="none"`: the same engine behind the same interface, without a worker.',
+    root: scene({ width: 12, height: 4, gravity: '6 2', worker: 'none', background: '#20242b' }, [
+      n('physics-box', { x: 11.7, y: 2, width: 0.6, height: 4, static: true, fill: '#596273' }),
+      n('physics-circle', { x: 1, y: 1, radius: 0.4, fill: '#f2c14e' }),
+      n('physics-circle', { x: 2, y: 2, radius: 0.5, fill: '#e0823d' }),
+      n('physics-circle', { x: 3, y: 3, radius: 0.3, fill: '#d45d79' }),
+      n('physics-box', { x: 4, y: 1.5, width: 0.8, height: 0.8, fill: '#3d7dd8' }),
+    ]),
+  },
+];
+
+// ---- catalogue scenes as markup -----------------------------------------------------------------------------------
+
+/** Each catalogue scene's view in its own coordinates (left, top, width, height); markup puts (left, top) at 0, 0. */
+const VIEWS: Record<string, [number, number, number, number]> = {
+  pyramid: [-13, -22, 26, 23],
+  stack: [-8, -13, 16, 14],
+  boxes: [-17, -52, 34, 53],
+  circles: [-17, -100, 34, 101],
+  chain: [-105, -5, 210, 110],
+  cloth: [-12, -2, 24, 20],
+  thrown: [-4, -12, 20, 13],
+  ragdolls: [-10, -21, 22, 22],
+  soft: [-9, -12, 18, 13],
+};
+
+const round = (v: number) => String(Math.round(v * 1e4) / 1e4);
+
+/** One engine body description as an element, moved by (dx, dy). */
+export function bodyToNode(d: BodyDescription, dx: number, dy: number): Node {
+  const a: Record<string, string | number | true> = {};
+  const common = d as unknown as Record<string, unknown>;
+  if (typeof common.id === 'string') a.id = common.id;
+  for (const key of ['mass', 'density', 'friction', 'restitution', 'fill', 'stroke'] as const) if (common[key] !== undefined) a[key] = common[key] as string | number;
+  if (common.static) a.static = true;
+  const at = (p: { x: number; y: number }) => [round(p.x + dx), round(p.y + dy)];
+  switch (d.type) {
+    case 'box': {
+      const o = d as unknown as { x?: number; y?: number; width?: number; height?: number; angle?: number };
+      [a.x, a.y] = at({ x: o.x ?? 0, y: o.y ?? 0 });
+      if (o.width !== undefined) a.width = o.width;
+      if (o.height !== undefined) a.height = o.height;
+      if (o.angle) a.angle = round((o.angle * 180) / Math.PI);
+      return n('physics-box', a);
+    }
+    case 'circle': {
+      const o = d as unknown as { x?: number; y?: number; radius?: number };
+      [a.x, a.y] = at({ x: o.x ?? 0, y: o.y ?? 0 });
+      if (o.radius !== undefined) a.radius = o.radius;
+      return n('physics-circle', a);
+    }
+    case 'rope': {
+      const o = d as unknown as { from: { x: number; y: number }; to: { x: number; y: number }; segments?: number; ropeLike?: boolean; pinStart?: boolean; pinEnd?: boolean; slack?: number };
+      [a.x1, a.y1] = at(o.from);
+      [a.x2, a.y2] = at(o.to);
+      if (o.segments !== undefined) a.segments = o.segments;
+      if (o.slack !== undefined) a.slack = o.slack;
+      if (o.ropeLike === false) a.rigid = true;
+      const start = o.pinStart ?? true;
+      const end = o.pinEnd ?? false;
+      if (!start || end) a.pin = start && end ? 'both' : end ? 'end' : 'none';
+      return n('physics-rope', a);
+    }
+    case 'cloth': {
+      const o = d as unknown as { origin: { x: number; y: number }; columns: number; rows: number; spacing?: number; pins?: unknown };
+      [a.x, a.y] = at(o.origin);
+      a.columns = o.columns;
+      a.rows = o.rows;
+      if (o.spacing !== undefined) a.spacing = o.spacing;
+      if (o.pins !== undefined) a.pins = Array.isArray(o.pins) ? o.pins.join(' ') : String(o.pins);
+      return n('physics-cloth', a);
+    }
+    case 'softbody': {
+      const o = d as unknown as { center: { x: number; y: number }; radius?: number; segments?: number; pressure?: number; model?: string };
+      [a.x, a.y] = at(o.center);
+      for (const key of ['radius', 'segments', 'pressure', 'model'] as const) if (o[key] !== undefined) a[key] = o[key] as string | number;
+      return n('physics-softbody', a);
+    }
+    case 'ragdoll': {
+      const o = d as unknown as { x?: number; y?: number; height?: number };
+      [a.x, a.y] = at({ x: o.x ?? 0, y: o.y ?? 0 });
+      if (o.height !== undefined) a.height = o.height;
+      return n('physics-ragdoll', a);
+    }
+    case 'polygon': {
+      const o = d as unknown as { x?: number; y?: number; angle?: number; points: { x: number; y: number }[] };
+      [a.x, a.y] = at({ x: o.x ?? 0, y: o.y ?? 0 });
+      if (o.angle) a.angle = round((o.angle * 180) / Math.PI);
+      a.points = o.points.map((p) => `${round(p.x)},${round(p.y)}`).join(' ');
+      return n('physics-polygon', a);
+    }
+  }
+  return n('physics-box', a);
+}
+
+const catalogueStories: Story[] = SCENE_NAMES.map((name) => {
+  const entry = catalogue[name];
+  const desc = entry.make();
+  const [left, top, width, height] = VIEWS[name] ?? [-10, -10, 20, 11];
+  const g = desc.world?.gravity ?? { x: 0, y: 10 };
+  const story: Story = {
+    id: `scene-${name}`,
+    group: 'Catalogue scenes',
+    title: entry.title,
+    description: `${entry.description} (catalogue scene "${name}", rendered as markup.)`,
+    root: n('physics-scene', { width, height, gravity: `${g.x} ${g.y}`, bounds: 'none' }, desc.bodies.map((b) => bodyToNode(b, -left, -top))),
+  };
+  if (name === 'thrown') {
+    story.description += ' The gallery throws the box at 300 units/s once the scene is ready.';
+    story.onReady = (s) => (s.querySelector('#bullet') as HTMLElement & { setVelocity?(x: number, y: number): void } | null)?.setVelocity?.(300, 0);
+  }
+  return story;
+});
+
+// ---- presets (only those registered: cloth-sim and ragdoll-sim are being built) ----------------------------------
+
+function presetStories(): Story[] {
+  const out: Story[] = [];
+  if (customElements.get('cloth-sim')) out.push({ id: 'cloth-sim', group: 'Presets', title: '<cloth-sim>', description: 'Preset: a ready-made cloth scene in one tag.', root: n('cloth-sim', {}) });
+  if (customElements.get('ragdoll-sim')) out.push({ id: 'ragdoll-sim', group: 'Presets', title: '<ragdoll-sim>', description: 'Preset: a ready-made ragdoll scene in one tag.', root: n('ragdoll-sim', {}) });
+  return out;
+}
+
+export function allStories(): Story[] {
+  return [...markupStories, ...elementStories, ...linkStories, ...presetStories(), ...catalogueStories];
+}
