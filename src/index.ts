@@ -15,6 +15,8 @@ export { PhysicsRagdollElement } from './elements/physics-ragdoll.js';
 export { PhysicsJointElement } from './elements/physics-joint.js';
 export { PhysicsSpringElement } from './elements/physics-spring.js';
 export { PhysicsPinElement } from './elements/physics-pin.js';
+export { ClothSimElement } from './elements/cloth-sim.js';
+export { RagdollSimElement } from './elements/ragdoll-sim.js';
 
 export { SceneRenderer, type DrawHook, type DrawView, type BodyStyle } from './render/renderer.js';
 export { EngineClient, FrameStore, createEngineWorker, type ClientOptions } from './worker/client.js';

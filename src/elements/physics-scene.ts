@@ -1,8 +1,9 @@
-import { LitElement, css, html } from 'lit';
-import { property } from 'lit/decorators.js';
+import { LitElement, css, html, nothing, type CSSResultGroup, type TemplateResult } from 'lit';
+import { property, state } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { SceneRenderer, type DrawHook } from '../render/renderer.js';
 import { EngineClient } from '../worker/client.js';
+import { track } from '../worker/resources.js';
 import { EVENT, type Diagnostics, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
 import { PhysicsBodyElement } from './body-element.js';
 import { Checker, describeElement, type Problem } from './checks.js';
@@ -77,11 +78,18 @@ const ENGINE_FIELDS: Record<string, string> = { from: 'x1', to: 'x2', origin: 'x
  *
  * @csspart stage - The box that holds the canvas.
  * @csspart canvas - The p5 canvas.
+ * @csspart status - The loading message shown until the engine runs.
+ * @csspart error - The visible list of current problems (bad attributes, a failing engine).
+ * @csspart play-button - The play control, shown when the scene started paused for `prefers-reduced-motion` or was paused with Space.
+ *
+ * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
+ * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable and
+ * Space toggles pause; it gets `role="group"`, `aria-label` and `aria-keyshortcuts="Space"` unless the page sets them.
  *
  * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height).
  */
 export class PhysicsSceneElement extends LitElement implements SceneHost {
-  static override styles = css`
+  static override styles: CSSResultGroup = css`
     :host {
       display: block;
       position: relative;
@@ -95,9 +103,58 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     :host([hidden]) {
       display: none;
     }
+    :host(:focus-visible) {
+      outline: 2px solid #2f6fb5;
+      outline-offset: 2px;
+    }
     .stage {
       position: absolute;
       inset: 0;
+    }
+    .status {
+      position: absolute;
+      inset: 0;
+      display: flex;
+      align-items: center;
+      justify-content: center;
+      font: 14px/1.3 system-ui, sans-serif;
+      color: #5b6270;
+      pointer-events: none;
+    }
+    .error {
+      position: absolute;
+      left: 6px;
+      right: 6px;
+      bottom: 6px;
+      max-height: 45%;
+      overflow: auto;
+      padding: 4px 8px;
+      border: 1px solid #e0a090;
+      border-radius: 4px;
+      background: #fff3efee;
+      color: #8a1c0c;
+      font: 12px/1.35 system-ui, sans-serif;
+      white-space: pre-wrap;
+      overflow-wrap: anywhere;
+    }
+    .play {
+      position: absolute;
+      left: 50%;
+      top: 50%;
+      width: 56px;
+      height: 56px;
+      margin: -28px 0 0 -28px;
+      border: 0;
+      border-radius: 50%;
+      background: #14181ebb;
+      color: #fff;
+      font: 22px/56px system-ui, sans-serif;
+      cursor: pointer;
+      padding: 0 0 0 4px;
+    }
+    .play:focus-visible {
+      outline: 3px solid #fff;
+      outline-offset: -6px;
     }
     ::slotted(*) {
       display: none;
@@ -159,6 +216,27 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   private readonly observer = new MutationObserver(() => this.sync());
   private readyResolve: (() => void) | null = null;
   private _ready: Promise<void> = this.newReady();
+  /** On screen (IntersectionObserver) and the page visible (Page Visibility). */
+  private inView = typeof IntersectionObserver !== 'function';
+  private pageVisible = typeof document === 'undefined' || document.visibilityState !== 'hidden';
+  /** Running state last sent to the engine (null: none sent yet). */
+  private runningSent: boolean | null = null;
+  private io: IntersectionObserver | null = null;
+  private motionChecked = false;
+  private playRequested = false;
+  /** Current problems per source (an element's reported set, or 'failures'), shown in the error box. */
+  private readonly problemLines = new Map<object, string[]>();
+  private failures: string[] = [];
+  /** The loading message is shown. */
+  @state() private loading = true;
+  /** The play control is shown (while paused). */
+  @state() private playControl = false;
+  @state() private errorLines: string[] = [];
+
+  constructor() {
+    super();
+    this.addEventListener('keydown', this.onKeyDown);
+  }
 
   /** Resolves when the engine has loaded the scene (after each start). */
   get ready(): Promise<void> {
@@ -190,10 +268,54 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     return this;
   }
 
+  /** Extra shadow content of a preset (e.g. its generated body elements). */
+  protected renderBodies(): TemplateResult | typeof nothing {
+    return nothing;
+  }
+
+  /** Added to `gravity` when sent to the engine (a preset's wind). */
+  private gravityOffset = { x: 0, y: 0 };
+  private readonly presetReported = new Set<string>();
+
+  /** A preset's uniform extra acceleration (e.g. wind), added to `gravity`. */
+  protected setGravityOffset(x: number, y: number): void {
+    if (x === this.gravityOffset.x && y === this.gravityOffset.y) return;
+    this.gravityOffset = { x, y };
+    if (this.client && this.loaded) this.client.api.setParams({ gravity: this.effectiveGravity(this.config()) }).catch((e) => this.reportFailure(e));
+  }
+
+  private effectiveGravity(config: Config): { x: number; y: number } {
+    return { x: config.gravity.x + this.gravityOffset.x, y: config.gravity.y + this.gravityOffset.y };
+  }
+
+  /** Reports a preset's own attribute problems (the current set: fixed ones leave the error box). */
+  protected reportPresetProblems(problems: Problem[]): void {
+    this.reportProblems(this, problems, this.presetReported);
+  }
+
+  /** Called when the scene starts or stops stepping (pause, scrolled away, hidden page). */
+  protected runningChanged(_running: boolean): void {}
+
+  /** The default `aria-label`. */
+  protected get defaultLabel(): string {
+    return 'Physics simulation';
+  }
+
+  /** True while the engine steps: not paused, on screen and the page visible. */
+  get running(): boolean {
+    return !this.paused && this.inView && this.pageVisible;
+  }
+
+  /** True while the element is on screen and the page is visible (frames are drawn). */
+  get onScreen(): boolean {
+    return this.inView && this.pageVisible;
+  }
+
   // ---- public methods ----------------------------------------------------------------------------------------
 
   /** Runs the simulation (clears `paused`). */
   play(): void {
+    this.playRequested = true;
     this.paused = false;
   }
 
@@ -271,11 +393,24 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
 
   override connectedCallback(): void {
     super.connectedCallback();
+    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
+    if (!this.hasAttribute('role')) this.setAttribute('role', 'group');
+    if (!this.hasAttribute('aria-label') && !this.hasAttribute('aria-labelledby')) this.setAttribute('aria-label', this.defaultLabel);
+    if (!this.hasAttribute('aria-keyshortcuts')) this.setAttribute('aria-keyshortcuts', 'Space');
+    if (!this.motionChecked) {
+      this.motionChecked = true;
+      if (!this.paused && !this.playRequested && typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches) {
+        this.paused = true;
+        this.playControl = true;
+      }
+    }
+    this.watchVisibility(true);
     if (!this.client && !this.starting) void this.start();
   }
 
   override disconnectedCallback(): void {
     super.disconnectedCallback();
+    this.watchVisibility(false);
     // A move (disconnect then connect in the same task) keeps the running engine.
     queueMicrotask(() => {
       if (!this.isConnected) this.stop();
@@ -309,6 +444,12 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
         @pointerup=${this.onPointerUp}
         @pointercancel=${this.onPointerUp}
       ></div>
+      ${this.loading && this.errorLines.length === 0 ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      ${this.playControl && this.paused
+        ? html`<button class="play" part="play-button" type="button" aria-label="Play the simulation" @click=${this.onPlayClick}>▶</button>`
+        : nothing}
+      ${this.errorLines.length > 0 ? html`<div class="error" part="error" role="alert">${this.errorLines.join('\n')}</div>` : nothing}
+      ${this.renderBodies()}
       <slot></slot>`;
   }
 
@@ -325,7 +466,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     const c = this.client;
     if (!c || !this.loaded) return;
     const params: Partial<HostParams> = {};
-    if (changed.has('gravity')) params.gravity = config.gravity;
+    if (changed.has('gravity')) params.gravity = this.effectiveGravity(config);
     if (changed.has('iterations')) params.iterations = config.iterations;
     if (changed.has('substeps')) params.substeps = config.substeps;
     if (changed.has('timestep')) params.timestep = config.timestep;
@@ -333,8 +474,80 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (changed.has('narrowphase')) params.narrowphase = config.narrowphase;
     if (changed.has('debug')) params.debug = this.debug;
     if (Object.keys(params).length > 0) c.api.setParams(params).then((e) => e && this.reportHostError(e), (e) => this.reportFailure(e));
-    if (changed.has('paused')) (this.paused ? c.api.pause() : c.api.play()).catch((e) => this.reportFailure(e));
+    if (changed.has('paused')) this.syncRunning();
   }
+
+  protected override willUpdate(changed: Map<string, unknown>): void {
+    if (changed.has('paused') && !this.paused) this.playControl = false;
+  }
+
+  // ---- embedding: visibility, keyboard ---------------------------------------------------------------------------
+
+  private watching = false;
+
+  private watchVisibility(on: boolean): void {
+    if (on === this.watching) return;
+    this.watching = on;
+    if (on) {
+      if (typeof IntersectionObserver === 'function') {
+        this.inView = false;
+        this.io = new IntersectionObserver((entries) => {
+          const e = entries[entries.length - 1];
+          if (!e) return;
+          this.inView = e.isIntersecting;
+          this.syncRunning();
+        });
+        this.io.observe(this);
+        track('observers', 1);
+      }
+      this.pageVisible = document.visibilityState !== 'hidden';
+      document.addEventListener('visibilitychange', this.onVisibility);
+      track('listeners', 1);
+    } else {
+      if (this.io) {
+        this.io.disconnect();
+        this.io = null;
+        track('observers', -1);
+      }
+      document.removeEventListener('visibilitychange', this.onVisibility);
+      track('listeners', -1);
+    }
+  }
+
+  private readonly onVisibility = (): void => {
+    this.pageVisible = document.visibilityState !== 'hidden';
+    this.syncRunning();
+  };
+
+  /** Tells the engine to step or not (paused, off screen, hidden page) and the renderer to draw or not. */
+  private syncRunning(): void {
+    this.renderer?.setLooping(this.onScreen);
+    const c = this.client;
+    if (!c || !this.loaded) return;
+    const run = this.running;
+    if (run === this.runningSent) return;
+    this.runningSent = run;
+    (run ? c.api.play() : c.api.pause()).catch((e) => this.reportFailure(e));
+    this.runningChanged(run);
+  }
+
+  private readonly onKeyDown = (event: Event): void => {
+    const e = event as KeyboardEvent;
+    if ((e.key !== ' ' && e.code !== 'Space') || e.composedPath()[0] !== this || e.altKey || e.ctrlKey || e.metaKey) return;
+    e.preventDefault();
+    if (e.repeat) return;
+    if (this.paused) this.play();
+    else {
+      this.pause();
+      this.playControl = true;
+    }
+  };
+
+  private readonly onPlayClick = (e: Event): void => {
+    e.stopPropagation();
+    this.play();
+    this.focus();
+  };
 
   private starting = false;
 
@@ -350,6 +563,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       if (gen !== this.generation || !this.isConnected) return;
       const stage = this.renderRoot.querySelector('.stage') as HTMLElement;
       this.renderer = new SceneRenderer(stage, () => this.client);
+      this.renderer.setLooping(this.onScreen);
       this.applyView(this.renderer, this.config());
       this.observer.observe(this.bodyContainer, { childList: true, subtree: true, attributes: true, attributeFilter: ['id'] });
       const client = await EngineClient.start({
@@ -366,9 +580,14 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       this.client = client;
       const scene = this.collect();
       this.loaded = true;
+      this.runningSent = scene.running ?? null;
       const errors = await client.api.load(scene);
       if (gen !== this.generation) return;
+      this.loading = false;
       for (const e of errors) this.reportHostError(e);
+      // Visibility may have changed while the scene loaded.
+      this.syncRunning();
+      this.runningChanged(this.running);
       this.dispatch('physics-ready', { mode: client.mode, transport: client.transport } satisfies PhysicsReadyDetail);
       this.readyResolve?.();
     } catch (error) {
@@ -376,6 +595,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     } finally {
       if (gen === this.generation) {
         this.starting = false;
+        this.loading = false;
         // Never leave callers of ready waiting, also when the start failed.
         this.readyResolve?.();
       }
@@ -388,9 +608,15 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     this.observer.disconnect();
     this.client?.dispose();
     this.client = null;
+    this.runningChanged(false);
     this.renderer?.dispose();
     this.renderer = null;
     this.loaded = false;
+    this.loading = true;
+    this.runningSent = null;
+    this.failures = [];
+    this.problemLines.clear();
+    this.refreshErrors();
     this.drag = null;
     for (const e of this.entries.values()) e.element._scene = null;
     this.entries.clear();
@@ -463,7 +689,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
         bounds: config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null,
       },
       params: {
-        gravity: config.gravity,
+        gravity: this.effectiveGravity(config),
         iterations: config.iterations,
         substeps: config.substeps,
         timestep: config.timestep,
@@ -474,7 +700,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       },
       bodies,
       links,
-      running: !this.paused,
+      running: this.running,
     };
   }
 
@@ -623,20 +849,36 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
 
   private reportProblems(el: Element, problems: Problem[], reported: Set<string>): void {
     const now = new Set<string>();
+    const lines: string[] = [];
     for (const p of problems) {
       const id = `${p.attribute}\u0000${p.value}\u0000${p.message}`;
       now.add(id);
-      if (!reported.has(id)) this.report(el, p.attribute, p.value, p.message);
+      lines.push(problemText(el, p.attribute, p.value, p.message));
+      if (!reported.has(id)) this.report(el, p.attribute, p.value, p.message, false);
     }
     reported.clear();
     for (const id of now) reported.add(id);
+    if (lines.length > 0) this.problemLines.set(reported, lines);
+    else this.problemLines.delete(reported);
+    this.refreshErrors();
   }
 
   /** A console warning naming the element, the attribute and the value, and a `physics-error` event. */
-  private report(el: Element, attribute: string, value: string, message: string): void {
-    console.warn(`${describeElement(el)} ${attribute ? `${attribute}="${value}"` : ''}: ${message}`);
+  private report(el: Element, attribute: string, value: string, message: string, keep = true): void {
+    const text = problemText(el, attribute, value, message);
+    console.warn(text);
     const detail: PhysicsErrorDetail = { element: el, attribute, value, message };
     this.dispatch('physics-error', detail, el.isConnected ? el : this);
+    if (keep) {
+      this.failures = [...this.failures.slice(-4), text];
+      this.refreshErrors();
+    }
+  }
+
+  /** The visible error box: every current markup problem and the latest engine failures. */
+  private refreshErrors(): void {
+    const lines = [...[...this.problemLines.values()].flat(), ...this.failures];
+    if (lines.join('\n') !== this.errorLines.join('\n')) this.errorLines = lines;
   }
 
   private reportHostError(e: HostError): void {
@@ -707,6 +949,10 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       // Not captured.
     }
   };
+}
+
+function problemText(el: Element, attribute: string, value: string, message: string): string {
+  return `${describeElement(el)} ${attribute ? `${attribute}="${value}"` : ''}: ${message}`;
 }
 
 if (!customElements.get('physics-scene')) customElements.define('physics-scene', PhysicsSceneElement);

@@ -88,6 +88,7 @@ export class SceneRenderer {
   private cssHeight = 1;
   private ready = false;
   private removed = false;
+  private looping = true;
 
   constructor(
     private readonly container: HTMLElement,
@@ -114,6 +115,7 @@ export class SceneRenderer {
         this.cssWidth = width;
         this.cssHeight = height;
         this.ready = true;
+        if (!this.looping) s.noLoop();
       };
       s.draw = () => this.draw(s);
     }, container);
@@ -126,6 +128,15 @@ export class SceneRenderer {
 
   get canvas(): HTMLCanvasElement | null {
     return this.container.querySelector('canvas');
+  }
+
+  /** Draws every animation frame (true, default) or not at all (false: no frame callbacks, no CPU). */
+  setLooping(on: boolean): void {
+    if (on === this.looping || this.removed) return;
+    this.looping = on;
+    if (!this.ready) return;
+    if (on) this.instance.loop();
+    else this.instance.noLoop();
   }
 
   /** True once p5 has made the canvas. */

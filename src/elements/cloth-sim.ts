@@ -1,0 +1,182 @@
+import { css, html, nothing, type TemplateResult } from 'lit';
+import { property } from 'lit/decorators.js';
+import { ifDefined } from 'lit/directives/if-defined.js';
+import { Checker, type Problem } from './checks.js';
+import { PhysicsSceneElement } from './physics-scene.js';
+import './physics-cloth.js';
+
+interface ClothSetup {
+  columns: number;
+  rows: number;
+  spacing: number;
+  x: number;
+  y: number;
+  pins: string;
+  compliance: number;
+  wind: number;
+  gusts: number;
+  fill: string | undefined;
+  stroke: string | undefined;
+  problems: Problem[];
+}
+
+/**
+ * A cloth hanging from pins, ready to embed: one tag, no children. Drag it to pull; wind pushes it sideways in gusts.
+ * Everything `<physics-scene>` has (attributes, methods, events, embedding behaviour) works here too; the cloth is
+ * generated inside the shadow root, so the page's markup stays one tag.
+ *
+ * @summary A hanging cloth preset.
+ *
+ * @fires physics-ready - The engine runs and the cloth is loaded (detail: `{mode, transport}`).
+ * @fires physics-error - A bad attribute value or a failing engine (detail: `{element, attribute, value, message}`); the cloth keeps running with the default.
+ *
+ * @csspart stage - The box that holds the canvas.
+ * @csspart canvas - The p5 canvas.
+ * @csspart status - The loading message.
+ * @csspart error - The visible list of current problems.
+ * @csspart play-button - The play control (reduced motion, or paused with Space).
+ */
+export class ClothSimElement extends PhysicsSceneElement {
+  static override styles = [
+    PhysicsSceneElement.styles,
+    css`
+      .bodies {
+        display: none;
+      }
+    `,
+  ];
+
+  /** Particles across (whole number 2..200). Default 24. */
+  @property({ type: Number }) columns = 24;
+  /** Particles down (whole number 2..200). Default 16. */
+  @property({ type: Number }) rows = 16;
+  /** Distance between neighbouring particles in world units; default: the cloth spans about 70% of the view. */
+  @property({ type: Number }) spacing?: number;
+  /** Pinned top-row particles: "top", "corners", "none" or column indices ("0 8 16 23"). Default: five pins spread along the top. */
+  @property() pins?: string;
+  /** 0 < stiffness <= 1: 1 (default) is inextensible, smaller values stretch. */
+  @property({ type: Number }) stiffness = 1;
+  /** Wind: horizontal push in world units / s² (negative blows left). Default 0 (none). */
+  @property({ type: Number }) wind = 0;
+  /** How gusty the wind is, 0 (steady) to 1 (gusts from calm to twice the strength). Default 0.6. */
+  @property({ type: Number }) gusts = 0.6;
+  /** Cloth fill colour (CSS colour or "none"). Default "#9cc3ec". */
+  @property() fill?: string;
+  /** Cloth line colour (CSS colour or "none"). Default "#2f6fb5". */
+  @property() stroke?: string;
+
+  private setup: ClothSetup | null = null;
+  private windTimer: ReturnType<typeof setInterval> | null = null;
+  private windStart = 0;
+
+  constructor() {
+    super();
+    this.width = 16;
+    this.height = 10;
+  }
+
+  protected override get defaultLabel(): string {
+    return 'Cloth simulation: drag the cloth to pull it';
+  }
+
+  protected override get bodyContainer(): ParentNode & Node {
+    return (this.renderRoot?.querySelector('.bodies') as HTMLElement | null) ?? this.renderRoot ?? this;
+  }
+
+  protected override willUpdate(changed: Map<string, unknown>): void {
+    super.willUpdate(changed);
+    this.setup = this.readSetup();
+  }
+
+  protected override updated(changed: Map<string, unknown>): void {
+    super.updated(changed);
+    this.reportPresetProblems(this.setup?.problems ?? []);
+    if (changed.has('wind') || changed.has('gusts')) this.runningChanged(this.running);
+  }
+
+  protected override renderBodies(): TemplateResult | typeof nothing {
+    const s = this.setup ?? this.readSetup();
+    return html`<div class="bodies">
+      <physics-cloth
+        x=${s.x}
+        y=${s.y}
+        columns=${s.columns}
+        rows=${s.rows}
+        spacing=${s.spacing}
+        pins=${s.pins}
+        compliance=${s.compliance}
+        fill=${ifDefined(s.fill)}
+        stroke=${ifDefined(s.stroke)}
+      ></physics-cloth>
+    </div>`;
+  }
+
+  protected override runningChanged(running: boolean): void {
+    const wind = this.setup?.wind ?? 0;
+    const on = running && wind !== 0;
+    if (!on) {
+      if (this.windTimer !== null) clearInterval(this.windTimer);
+      this.windTimer = null;
+      this.setGravityOffset(0, 0);
+      return;
+    }
+    if (this.windTimer === null) {
+      this.windStart = performance.now();
+      this.windTimer = setInterval(() => this.blow(), 120);
+    }
+    this.blow();
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    if (this.windTimer !== null) clearInterval(this.windTimer);
+    this.windTimer = null;
+  }
+
+  /** The wind now: the steady strength scaled by a smooth gust factor in [1 − gusts, 1 + gusts]. */
+  private blow(): void {
+    const s = this.setup;
+    if (!s) return;
+    const t = (performance.now() - this.windStart) / 1000;
+    const n = (Math.sin(t * 1.7) + 0.6 * Math.sin(t * 4.3 + 1.1) + 0.4 * Math.sin(t * 9.1 + 2.3)) / 2;
+    this.setGravityOffset(s.wind * (1 + s.gusts * n), 0);
+  }
+
+  private readSetup(): ClothSetup {
+    const check = new Checker(this);
+    const columns = check.number('columns', this.columns, { integer: true, min: 2, max: 200, fallback: 24 })!;
+    const rows = check.number('rows', this.rows, { integer: true, min: 2, max: 200, fallback: 16 })!;
+    const w = Number.isFinite(this.width) && this.width > 0 ? this.width : 16;
+    const h = Number.isFinite(this.height) && this.height > 0 ? this.height : 10;
+    const auto = Math.min((w * 0.7) / (columns - 1), (h * 0.75) / (rows - 1));
+    const spacing = check.number('spacing', this.spacing, { positive: true, fallback: auto })!;
+    const spread = [...new Set([0, 1, 2, 3, 4].map((k) => Math.round((k * (columns - 1)) / 4)))].join(' ');
+    let pins = spread;
+    const p = (this.pins ?? '').trim();
+    if (p === '') pins = spread;
+    else if (p === 'top' || p === 'corners' || p === 'none') pins = p;
+    else {
+      const list = check.numbers('pins', p);
+      if (list && list.every((c) => Number.isInteger(c) && c >= 0 && c < columns)) pins = list.join(' ');
+      else if (list) check.fail('pins', this.pins, `column indices must be whole numbers from 0 to ${columns - 1}`);
+    }
+    const stiffness = check.number('stiffness', this.stiffness, { positive: true, max: 1, fallback: 1 })!;
+    // XPBD compliance (inverse stiffness): 0 at stiffness 1, about 1e-5 at 0.1.
+    const compliance = ((1 - stiffness) / stiffness) * 1e-6;
+    const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 0 })!;
+    const gusts = check.number('gusts', this.gusts, { min: 0, max: 1, fallback: 0.6 })!;
+    const fill = check.color('fill', this.fill, null) === null && this.fill !== 'none' ? undefined : this.fill;
+    const stroke = check.color('stroke', this.stroke, null) === null && this.stroke !== 'none' ? undefined : this.stroke;
+    const x = (w - spacing * (columns - 1)) / 2;
+    const y = Math.min(h * 0.08, 0.8);
+    return { columns, rows, spacing, x, y, pins, compliance, wind, gusts, fill, stroke, problems: check.problems };
+  }
+}
+
+if (!customElements.get('cloth-sim')) customElements.define('cloth-sim', ClothSimElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'cloth-sim': ClothSimElement;
+  }
+}

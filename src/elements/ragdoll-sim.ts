@@ -1,0 +1,214 @@
+import { css, html, nothing, type TemplateResult } from 'lit';
+import { property } from 'lit/decorators.js';
+import { ifDefined } from 'lit/directives/if-defined.js';
+import { Checker, type Problem } from './checks.js';
+import { PhysicsSceneElement } from './physics-scene.js';
+import type { PhysicsRagdollElement } from './physics-ragdoll.js';
+import './physics-box.js';
+import './physics-circle.js';
+import './physics-ragdoll.js';
+
+interface RagdollSetup {
+  count: number;
+  size: number;
+  obstacles: 'stairs' | 'pegs' | 'none';
+  respawn: boolean;
+  stroke: string | undefined;
+  obstacleFill: string | undefined;
+  problems: Problem[];
+}
+
+/** Seconds a ragdoll must lie still before it is put back at the top (with `respawn`). */
+const REST_SECONDS = 1.5;
+
+/**
+ * Ragdolls tumbling down stairs or through pegs, ready to embed: one tag, no children. Limbs bend within angle limits;
+ * grab a ragdoll to drag it and let go to throw it. With `respawn`, a ragdoll that has come to rest is put back at
+ * the top. Everything `<physics-scene>` has (attributes, methods, events, embedding behaviour) works here too.
+ *
+ * @summary A ragdoll preset.
+ *
+ * @fires physics-ready - The engine runs and the ragdolls are loaded (detail: `{mode, transport}`).
+ * @fires physics-error - A bad attribute value or a failing engine (detail: `{element, attribute, value, message}`); the scene keeps running with the default.
+ *
+ * @csspart stage - The box that holds the canvas.
+ * @csspart canvas - The p5 canvas.
+ * @csspart status - The loading message.
+ * @csspart error - The visible list of current problems.
+ * @csspart play-button - The play control (reduced motion, or paused with Space).
+ */
+export class RagdollSimElement extends PhysicsSceneElement {
+  static override styles = [
+    PhysicsSceneElement.styles,
+    css`
+      .bodies {
+        display: none;
+      }
+    `,
+  ];
+
+  /** Number of ragdolls (whole number 1..12). Default 3. */
+  @property({ type: Number }) count = 3;
+  /** Height of a ragdoll in world units. Default 1.6. */
+  @property({ type: Number }) size = 1.6;
+  /** What they fall over: "stairs" (default), "pegs" or "none". */
+  @property() obstacles = 'stairs';
+  /** Put a ragdoll back at the top once it has lain still for 1.5 s. */
+  @property({ type: Boolean }) respawn = false;
+  /** Ragdoll line colour (CSS colour). Default "#333a44". */
+  @property() stroke?: string;
+  /** Obstacle fill colour (CSS colour). Default "#8a8f98". */
+  @property({ attribute: 'obstacle-fill' }) obstacleFill?: string;
+
+  /** Ragdolls put back at the top so far. */
+  respawned = 0;
+
+  private setup: RagdollSetup | null = null;
+  private watchTimer: ReturnType<typeof setInterval> | null = null;
+  private readonly still = new Map<Element, { x: number; y: number; since: number }>();
+
+  constructor() {
+    super();
+    this.width = 16;
+    this.height = 10;
+    // Off the top step with a push to the right, so they tumble down the stairs.
+    this.addEventListener('physics-ready', () => {
+      for (const doll of this.dolls()) this.push(doll);
+    });
+  }
+
+  private dolls(): PhysicsRagdollElement[] {
+    return Array.from(this.bodyContainer.querySelectorAll('physics-ragdoll'));
+  }
+
+  private push(doll: PhysicsRagdollElement): void {
+    if (this.setup?.obstacles === 'stairs') doll.setVelocity(2.5, 0);
+  }
+
+  protected override get defaultLabel(): string {
+    return 'Ragdoll simulation: drag a ragdoll and let go to throw it';
+  }
+
+  protected override get bodyContainer(): ParentNode & Node {
+    return (this.renderRoot?.querySelector('.bodies') as HTMLElement | null) ?? this.renderRoot ?? this;
+  }
+
+  protected override willUpdate(changed: Map<string, unknown>): void {
+    super.willUpdate(changed);
+    this.setup = this.readSetup();
+  }
+
+  protected override updated(changed: Map<string, unknown>): void {
+    super.updated(changed);
+    this.reportPresetProblems(this.setup?.problems ?? []);
+    if (changed.has('respawn')) this.runningChanged(this.running);
+  }
+
+  /** Where ragdoll k starts (pelvis), above the top step. */
+  private spawnPoint(k: number, s: RagdollSetup): { x: number; y: number } {
+    const w = this.viewW();
+    const x = s.obstacles === 'stairs' ? w * 0.08 + s.size * 0.35 * (k % 3) : w * (0.25 + (0.5 * ((k * 0.618) % 1)));
+    return { x, y: -s.size * (0.4 + 1.3 * k) };
+  }
+
+  private viewW(): number {
+    return Number.isFinite(this.width) && this.width > 0 ? this.width : 16;
+  }
+
+  private viewH(): number {
+    return Number.isFinite(this.height) && this.height > 0 ? this.height : 10;
+  }
+
+  protected override renderBodies(): TemplateResult | typeof nothing {
+    const s = this.setup ?? this.readSetup();
+    const w = this.viewW();
+    const h = this.viewH();
+    const obstacles: TemplateResult[] = [];
+    if (s.obstacles === 'stairs') {
+      // Steps going down from the top left to the bottom right.
+      const n = 6;
+      const stepW = (w * 0.85) / n;
+      const top = h * 0.3;
+      const rise = (h * 0.62) / n;
+      for (let k = 0; k < n; k++) {
+        const stepTop = top + k * rise;
+        const height = h - stepTop;
+        obstacles.push(html`<physics-box static x=${stepW * (k + 0.5)} y=${stepTop + height / 2} width=${stepW} height=${height} fill=${ifDefined(s.obstacleFill)}></physics-box>`);
+      }
+    } else if (s.obstacles === 'pegs') {
+      const cols = 7;
+      const gap = w / cols;
+      for (let row = 0; row < 4; row++) {
+        for (let c = 0; c < cols; c++) {
+          const x = gap * (c + 0.5 + (row % 2 ? 0.5 : 0));
+          if (x > w - gap * 0.3) continue;
+          obstacles.push(html`<physics-circle static x=${x} y=${h * (0.3 + row * 0.16)} radius=${Math.min(0.35, gap * 0.15)} fill=${ifDefined(s.obstacleFill)}></physics-circle>`);
+        }
+      }
+    }
+    const dolls: TemplateResult[] = [];
+    for (let k = 0; k < s.count; k++) {
+      const p = this.spawnPoint(k, s);
+      dolls.push(html`<physics-ragdoll x=${p.x} y=${p.y} height=${s.size} stroke=${ifDefined(s.stroke)}></physics-ragdoll>`);
+    }
+    return html`<div class="bodies">${obstacles}${dolls}</div>`;
+  }
+
+  protected override runningChanged(running: boolean): void {
+    const on = running && (this.setup?.respawn ?? false);
+    if (on && this.watchTimer === null) this.watchTimer = setInterval(() => this.checkRest(), 250);
+    else if (!on && this.watchTimer !== null) {
+      clearInterval(this.watchTimer);
+      this.watchTimer = null;
+      this.still.clear();
+    }
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    if (this.watchTimer !== null) clearInterval(this.watchTimer);
+    this.watchTimer = null;
+  }
+
+  /** Ragdolls that lay still for REST_SECONDS go back to their spawn point. */
+  private checkRest(): void {
+    const s = this.setup;
+    if (!s) return;
+    const now = performance.now();
+    this.dolls().forEach((doll, k) => {
+      const x = doll.x;
+      const y = doll.y;
+      const prev = this.still.get(doll);
+      if (!prev || Math.hypot(x - prev.x, y - prev.y) > s.size * 0.03) {
+        this.still.set(doll, { x, y, since: now });
+        return;
+      }
+      if (now - prev.since < REST_SECONDS * 1000) return;
+      const p = this.spawnPoint(k, s);
+      this.respawned++;
+      // A tiny offset per respawn makes the description differ from the last one sent, so the body is rebuilt.
+      doll.x = p.x + (this.respawned % 2 ? 1e-3 : -1e-3);
+      doll.y = p.y;
+      this.still.delete(doll);
+      void doll.updateComplete.then(() => this.push(doll));
+    });
+  }
+
+  private readSetup(): RagdollSetup {
+    const check = new Checker(this);
+    const count = check.number('count', this.count, { integer: true, min: 1, max: 12, fallback: 3 })!;
+    const size = check.number('size', this.size, { positive: true, max: 100, fallback: 1.6 })!;
+    const obstacles = check.oneOf('obstacles', this.obstacles, ['stairs', 'pegs', 'none'] as const, 'stairs');
+    const stroke = check.color('stroke', this.stroke, null) === null ? undefined : this.stroke;
+    const obstacleFill = check.color('obstacle-fill', this.obstacleFill, null) === null ? undefined : this.obstacleFill;
+    return { count, size, obstacles, respawn: this.respawn, stroke, obstacleFill, problems: check.problems };
+  }
+}
+
+if (!customElements.get('ragdoll-sim')) customElements.define('ragdoll-sim', RagdollSimElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'ragdoll-sim': RagdollSimElement;
+  }
+}
