@@ -275,9 +275,19 @@ const catalogueStories: Story[] = SCENE_NAMES.map((name) => {
     description: `${entry.description} (catalogue scene "${name}", rendered as markup.)`,
     root: n('physics-scene', { width, height, gravity: `${g.x} ${g.y}`, bounds: 'none' }, desc.bodies.map((b) => bodyToNode(b, -left, -top))),
   };
+  type Body = HTMLElement & { setVelocity?(x: number, y: number): void };
   if (name === 'thrown') {
-    story.description += ' The gallery throws the box at 300 units/s once the scene is ready.';
-    story.onReady = (s) => (s.querySelector('#bullet') as HTMLElement & { setVelocity?(x: number, y: number): void } | null)?.setVelocity?.(300, 0);
+    story.description += ' The gallery throws the box at 300 units/s 1 s after the start, and starts over every 3 s.';
+    story.onReady = (s) => {
+      const scene = s as HTMLElement & { reset(): Promise<void> };
+      const THROW = () => (s.querySelector('#bullet') as Body | null)?.setVelocity?.(300, 0);
+      setTimeout(THROW, 1000);
+      const timer = setInterval(() => (s.isConnected ? scene.reset().then(() => setTimeout(THROW, 1000), () => {}) : clearInterval(timer)), 3000);
+    };
+  }
+  if (name === 'cloth') {
+    story.description += ' It starts at rest; the gallery gives it a sideways push so it swings.';
+    story.onReady = (s) => (s.querySelector('#cloth') as Body | null)?.setVelocity?.(4, 0);
   }
   return story;
 });
