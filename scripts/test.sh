@@ -13,3 +13,5 @@ node scripts/engine-in-node.mjs
 node --expose-gc scripts/soak.mjs --steps 30000 --samples 5
 echo "== browser tests"
 npx web-test-runner --static-logging "$@"
+echo "== gallery stories"
+node scripts/check-stories.mjs
