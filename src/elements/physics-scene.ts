@@ -121,6 +121,9 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       color: #5b6270;
       pointer-events: none;
     }
+    .error[hidden] {
+      display: none;
+    }
     .error {
       position: absolute;
       left: 6px;
@@ -217,7 +220,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   private readyResolve: (() => void) | null = null;
   private _ready: Promise<void> = this.newReady();
   /** On screen (IntersectionObserver) and the page visible (Page Visibility). */
-  private inView = typeof IntersectionObserver !== 'function';
+  private inView = true;
   private pageVisible = typeof document === 'undefined' || document.visibilityState !== 'hidden';
   /** Running state last sent to the engine (null: none sent yet). */
   private runningSent: boolean | null = null;
@@ -231,7 +234,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   @state() private loading = true;
   /** The play control is shown (while paused). */
   @state() private playControl = false;
-  @state() private errorLines: string[] = [];
+  /** The error box's lines (written straight into the DOM: problems are found during updates). */
+  private errorLines: string[] = [];
 
   constructor() {
     super();
@@ -444,11 +448,11 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
         @pointerup=${this.onPointerUp}
         @pointercancel=${this.onPointerUp}
       ></div>
-      ${this.loading && this.errorLines.length === 0 ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      ${this.loading ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
       ${this.playControl && this.paused
         ? html`<button class="play" part="play-button" type="button" aria-label="Play the simulation" @click=${this.onPlayClick}>▶</button>`
         : nothing}
-      ${this.errorLines.length > 0 ? html`<div class="error" part="error" role="alert">${this.errorLines.join('\n')}</div>` : nothing}
+      <div class="error" part="error" role="alert" hidden></div>
       ${this.renderBodies()}
       <slot></slot>`;
   }
@@ -477,6 +481,10 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (changed.has('paused')) this.syncRunning();
   }
 
+  protected override firstUpdated(): void {
+    this.showErrors();
+  }
+
   protected override willUpdate(changed: Map<string, unknown>): void {
     if (changed.has('paused') && !this.paused) this.playControl = false;
   }
@@ -490,7 +498,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     this.watching = on;
     if (on) {
       if (typeof IntersectionObserver === 'function') {
-        this.inView = false;
+        // Until the observer's first report (the next frame): assumed on screen.
         this.io = new IntersectionObserver((entries) => {
           const e = entries[entries.length - 1];
           if (!e) return;
@@ -878,7 +886,17 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   /** The visible error box: every current markup problem and the latest engine failures. */
   private refreshErrors(): void {
     const lines = [...[...this.problemLines.values()].flat(), ...this.failures];
-    if (lines.join('\n') !== this.errorLines.join('\n')) this.errorLines = lines;
+    if (lines.join('\n') === this.errorLines.join('\n')) return;
+    this.errorLines = lines;
+    this.showErrors();
+  }
+
+  private showErrors(): void {
+    const box = this.renderRoot?.querySelector<HTMLElement>('.error');
+    if (!box) return;
+    const text = this.errorLines.join('\n');
+    if (box.textContent !== text) box.textContent = text;
+    box.hidden = this.errorLines.length === 0;
   }
 
   private reportHostError(e: HostError): void {

@@ -1,0 +1,169 @@
+// <cloth-sim> and <ragdoll-sim>: one tag each, bodies generated in their shadow root by <physics-scene>'s machinery.
+import { expect } from '@open-wc/testing';
+import { ClothSimElement, RagdollSimElement, type PhysicsClothElement, type PhysicsErrorDetail, type PhysicsRagdollElement, type PhysicsSceneElement } from '../../src/index.js';
+import { colourDistance, frames, rgb, unmount, waitFor } from './helpers.js';
+
+/** Mounts `<tag attrs>` in a 480 × 300 container; waits for `ready` unless told not to. */
+async function mountSim<T extends PhysicsSceneElement>(tag: string, attrs = '', ready = true): Promise<T> {
+  const box = document.createElement('div');
+  box.style.cssText = 'width: 480px; height: 300px; position: relative;';
+  // Test markup only: fixed strings written in the tests.
+  box.innerHTML = `<${tag} ${attrs} style="width: 100%; height: 100%"></${tag}>`;
+  document.body.append(box);
+  const sim = box.firstElementChild as T;
+  if (ready) await sim.ready;
+  return sim;
+}
+
+/** Pixels of the canvas within `tolerance` of a colour. */
+function countColour(scene: PhysicsSceneElement, hex: string, tolerance = 12): number {
+  const canvas = scene.canvas!;
+  const data = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data;
+  const c = rgb(hex);
+  let n = 0;
+  for (let i = 0; i < data.length; i += 4) if (colourDistance([data[i], data[i + 1], data[i + 2]], c) <= tolerance) n++;
+  return n;
+}
+
+function pointer(scene: PhysicsSceneElement, type: string, x: number, y: number): void {
+  const p = scene.worldToClient(x, y);
+  scene.canvas!.dispatchEvent(new PointerEvent(type, { clientX: p.x, clientY: p.y, pointerId: 3, pointerType: 'mouse', isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1, bubbles: true, composed: true, cancelable: true }));
+}
+
+const clothOf = (sim: ClothSimElement) => sim.shadowRoot!.querySelector<PhysicsClothElement>('physics-cloth')!;
+const dollsOf = (sim: RagdollSimElement) => Array.from(sim.shadowRoot!.querySelectorAll<PhysicsRagdollElement>('physics-ragdoll'));
+
+describe('<cloth-sim>', () => {
+  let sim: ClothSimElement | null = null;
+  afterEach(() => unmount(sim));
+
+  it('is one tag: a 24 × 16 cloth in its shadow root, nothing in the page, drawn in its fill colour', async () => {
+    sim = await mountSim<ClothSimElement>('cloth-sim');
+    expect(document.createElement('cloth-sim')).to.be.instanceOf(ClothSimElement);
+    expect(sim.children.length).to.equal(0);
+    const d = await sim.diagnostics();
+    expect(d.particleCount).to.equal(24 * 16);
+    expect(d.bodyCount).to.equal(1);
+    await waitFor(() => sim!.renderedFrames > 2 && countColour(sim!, '#9cc3ec') > 5000, 'the cloth drawn in #9cc3ec');
+    // Five pins spread along the top; the cloth hangs centred in a 16 × 10 view.
+    expect(clothOf(sim).getAttribute('pins')).to.equal('0 6 12 17 23');
+    expect(clothOf(sim).x).to.be.closeTo(8, 0.3);
+  });
+
+  it('columns, rows, pins and colours reach the cloth; changing one rebuilds it', async () => {
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="6" rows="5" pins="corners" fill="#ff0000" stroke="none"');
+    expect((await sim.diagnostics()).particleCount).to.equal(30);
+    await waitFor(() => countColour(sim!, '#ff0000') > 2000, 'a red cloth');
+    sim.columns = 10;
+    await waitFor(async () => (await sim!.diagnostics()).particleCount === 50, '10 × 5 particles');
+    expect(clothOf(sim).getAttribute('columns')).to.equal('10');
+  });
+
+  it('a drag pulls the cloth sideways', async () => {
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" spacing="1" pins="top"');
+    const cloth = clothOf(sim);
+    // Top-left corner at ((16 − 7) / 2, 0.8) = (4.5, 0.8): the bottom-middle particle hangs at about (7.5, 5.8).
+    await frames(5);
+    const x0 = cloth.x;
+    pointer(sim, 'pointerdown', 7.5, 5.8);
+    for (let k = 1; k <= 12; k++) {
+      await frames(1);
+      pointer(sim, 'pointermove', 7.5 + (4 * k) / 12, 5.8);
+    }
+    await waitFor(() => cloth.x > x0 + 0.5, 'the cloth to follow the pointer to the right');
+    pointer(sim, 'pointerup', 11.5, 5.8);
+  });
+
+  it('wind pushes the cloth downwind; with no wind it hangs still', async () => {
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" pins="top" gusts="0"');
+    const cloth = clothOf(sim);
+    await waitFor(() => sim!.stepCount > 20, '20 steps');
+    // No wind: pinned along its top, the cloth hangs straight down, centred at x = 8.
+    expect(cloth.x).to.be.closeTo(8, 0.01);
+    sim.wind = 30;
+    await waitFor(() => cloth.x > 8.5, 'the wind to blow the cloth right');
+    sim.wind = -30;
+    await waitFor(() => cloth.x < 7.5, 'the wind to blow it back left');
+  });
+
+  it('bad attributes: physics-error and a console warning naming them, defaults used, the error box shows them until fixed', async () => {
+    const errors: PhysicsErrorDetail[] = [];
+    const warnings: string[] = [];
+    const warn = console.warn;
+    console.warn = (...args: unknown[]) => warnings.push(args.join(' '));
+    const listener = (e: Event) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail);
+    document.addEventListener('physics-error', listener);
+    try {
+      sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="abc" stiffness="2" pins="0 99"');
+      expect((await sim.diagnostics()).particleCount).to.equal(24 * 16);
+      const mine = errors.filter((e) => e.element === sim);
+      expect(mine.map((e) => `${e.attribute}=${e.value}`).sort()).to.deep.equal(['columns=abc', 'pins=0 99', 'stiffness=2']);
+      expect(warnings.some((w) => w.includes('<cloth-sim> columns="abc"'))).to.equal(true);
+      const box = sim.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
+      expect(box.textContent).to.contain('columns="abc"');
+      expect(box.getBoundingClientRect().height).to.be.greaterThan(10);
+      sim.setAttribute('columns', '12');
+      sim.setAttribute('stiffness', '0.5');
+      sim.setAttribute('pins', 'top');
+      await waitFor(() => sim!.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!.getBoundingClientRect().height === 0, 'the error box to go');
+      expect((await sim.diagnostics()).particleCount).to.equal(12 * 16);
+    } finally {
+      console.warn = warn;
+      document.removeEventListener('physics-error', listener);
+    }
+  });
+});
+
+describe('<ragdoll-sim>', () => {
+  let sim: RagdollSimElement | null = null;
+  afterEach(() => unmount(sim));
+
+  it('count ragdolls tumble down six stairs', async () => {
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="2"');
+    expect(document.createElement('ragdoll-sim')).to.be.instanceOf(RagdollSimElement);
+    const d = await sim.diagnostics();
+    expect(d.bodyCount).to.equal(2 + 6);
+    const dolls = dollsOf(sim);
+    expect(dolls.length).to.equal(2);
+    const start = dolls.map((r) => [r.x, r.y]);
+    // They fall in and are pushed down the stairs (to the right).
+    await waitFor(() => dolls.every((r, k) => r.y > start[k][1] + 2 && r.x > start[k][0] + 1), 'both ragdolls to fall and move down the stairs', 8000);
+  });
+
+  it('obstacles="pegs" and "none"; count changes live', async () => {
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="pegs"');
+    expect(sim.shadowRoot!.querySelectorAll('physics-circle').length).to.be.greaterThan(10);
+    sim.obstacles = 'none';
+    sim.count = 4;
+    await waitFor(async () => (await sim!.diagnostics()).bodyCount === 4, 'four ragdolls and no obstacles');
+  });
+
+  it('respawn puts a ragdoll that lies still back at the top', async () => {
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" respawn');
+    const [doll] = dollsOf(sim);
+    await waitFor(() => doll.y > 8, 'the ragdoll to land on the floor', 6000);
+    await waitFor(() => sim!.respawned >= 1, 'a respawn after lying still', 8000);
+    await waitFor(() => doll.y < 4, 'the ragdoll back near the top');
+  });
+
+  it('bad attributes fall back to defaults and are reported on the element', async () => {
+    const errors: PhysicsErrorDetail[] = [];
+    const warn = console.warn;
+    console.warn = () => {};
+    try {
+      const box = document.createElement('div');
+      box.style.cssText = 'width: 480px; height: 300px;';
+      sim = document.createElement('ragdoll-sim');
+      sim.setAttribute('count', '-2');
+      sim.setAttribute('obstacles', 'lava');
+      sim.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail));
+      box.append(sim);
+      document.body.append(box);
+      await sim.ready;
+      expect(errors.map((e) => `${e.attribute}=${e.value}`).sort()).to.deep.equal(['count=-2', 'obstacles=lava']);
+      expect((await sim.diagnostics()).bodyCount).to.equal(3 + 6);
+    } finally {
+      console.warn = warn;
+    }
+  });
+});
