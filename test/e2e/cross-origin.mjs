@@ -1,0 +1,135 @@
+// End-to-end: the single-file build embedded across origins, as a CMS page would use it from a CDN.
+// A page served from 127.0.0.1 on one port loads dist/physics-elements.bundle.js from localhost on another port
+// (CORS allowed, as a CDN does). <cloth-sim> and <ragdoll-sim> must run their engine in a worker (the worker is a
+// blob: URL, so the other origin does not matter), animate (the canvas changes between frames), follow a mouse drag,
+// and log no console errors. Screenshots go to artifacts/. Run after `npm run build`: node test/e2e/cross-origin.mjs
+import { createServer } from 'node:http';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { dirname, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
+const bundle = readFileSync(resolve(root, 'dist/physics-elements.bundle.js'));
+const artifacts = resolve(root, 'artifacts');
+mkdirSync(artifacts, { recursive: true });
+const started = Date.now();
+
+function listen(host, handler) {
+  const server = createServer(handler);
+  return new Promise((ok) => server.listen(0, host, () => ok(server)));
+}
+
+// The "CDN": localhost, its own port, CORS for any origin (module scripts from another origin need it).
+const cdn = await listen('localhost', (req, res) => {
+  if (req.url === '/physics-elements.bundle.js') {
+    res.writeHead(200, { 'content-type': 'text/javascript', 'access-control-allow-origin': '*' });
+    res.end(bundle);
+  } else {
+    res.writeHead(404);
+    res.end();
+  }
+});
+const cdnUrl = `http://localhost:${cdn.address().port}/physics-elements.bundle.js`;
+
+// The "CMS page": 127.0.0.1, another port, no COOP/COEP headers (so no SharedArrayBuffer: transferred buffers).
+const page = `<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>embed</title>
+<style>body { margin: 20px; font: 14px system-ui; } .embed { width: 560px; height: 350px; margin-bottom: 16px; }</style>
+<script type="module" src="${cdnUrl}"></script></head>
+<body>
+<p>A blog post with two embeds.</p>
+<cloth-sim class="embed" id="cloth" columns="16" rows="10" pins="top" wind="2"></cloth-sim>
+<ragdoll-sim class="embed" id="ragdolls" count="3"></ragdoll-sim>
+</body></html>`;
+const site = await listen('127.0.0.1', (req, res) => {
+  if (req.url === '/' || req.url === '/index.html') {
+    res.writeHead(200, { 'content-type': 'text/html' });
+    res.end(page);
+  } else if (req.url === '/favicon.ico') {
+    res.writeHead(204);
+    res.end();
+  } else {
+    res.writeHead(404);
+    res.end();
+  }
+});
+const siteUrl = `http://127.0.0.1:${site.address().port}/`;
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROME_PATH ?? '/usr/bin/chromium',
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+});
+const failures = [];
+const check = (ok, what) => {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!ok) failures.push(what);
+};
+try {
+  const tab = await browser.newPage({ viewport: { width: 620, height: 820 } });
+  const errors = [];
+  tab.on('console', (m) => (m.type() === 'error' || m.type() === 'warning') && errors.push(`${m.type()}: ${m.text()}`));
+  tab.on('pageerror', (e) => errors.push(`pageerror: ${e}`));
+  tab.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  await tab.goto(siteUrl);
+  const info = await tab.evaluate(async () => {
+    await Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
+    const out = {};
+    for (const id of ['cloth', 'ragdolls']) {
+      const el = document.getElementById(id);
+      await el.ready;
+      out[id] = { mode: el.mode, transport: el.transport, origin: location.origin };
+    }
+    return out;
+  });
+  console.log(JSON.stringify(info));
+  check(info.cloth.mode === 'worker' && info.ragdolls.mode === 'worker', 'both engines run in a worker (blob: URL) on a page of another origin');
+  check(info.cloth.transport === 'transfer', 'no cross-origin isolation: frames come as transferred ArrayBuffers');
+
+  /** Canvas pixels as a data URL, after the scene has taken `steps` more steps. */
+  const canvasAfter = (id, steps) =>
+    tab.evaluate(async ([id, steps]) => {
+      const el = document.getElementById(id);
+      const target = el.stepCount + steps;
+      const until = performance.now() + 10000;
+      while (el.stepCount < target && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
+      const drawn = el.renderedFrames;
+      while (el.renderedFrames < drawn + 2 && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
+      return el.canvas.toDataURL();
+    }, [id, steps]);
+  for (const id of ['cloth', 'ragdolls']) {
+    const a = await canvasAfter(id, 5);
+    const b = await canvasAfter(id, 20);
+    check(a.length > 1000 && a !== b, `<${id === 'cloth' ? 'cloth-sim' : 'ragdoll-sim'}> animates: the canvas changes between frames`);
+  }
+  await tab.screenshot({ path: resolve(artifacts, 'cross-origin-1.png') });
+
+  // Drag the bottom-middle of the cloth 160 px to the right with the mouse.
+  const before = await tab.evaluate(() => {
+    const el = document.getElementById('cloth');
+    const cloth = el.shadowRoot.querySelector('physics-cloth');
+    const spacing = Number(cloth.getAttribute('spacing'));
+    const x = Number(cloth.getAttribute('x')) + spacing * 7.5;
+    const y = Number(cloth.getAttribute('y')) + spacing * 9;
+    return { pose: cloth.x, at: el.worldToClient(x, y) };
+  });
+  await tab.mouse.move(before.at.x, before.at.y);
+  await tab.mouse.down();
+  for (let k = 1; k <= 16; k++) await tab.mouse.move(before.at.x + 10 * k, before.at.y, { steps: 1 });
+  const after = await tab.evaluate(async (x0) => {
+    const cloth = document.getElementById('cloth').shadowRoot.querySelector('physics-cloth');
+    const until = performance.now() + 5000;
+    while (cloth.x < x0 + 0.5 && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
+    return cloth.x;
+  }, before.pose);
+  await tab.screenshot({ path: resolve(artifacts, 'cross-origin-2-drag.png') });
+  await tab.mouse.up();
+  check(after > before.pose + 0.5, `a mouse drag moves the cloth (centre x ${before.pose.toFixed(2)} -> ${after.toFixed(2)})`);
+  check(errors.length === 0, `no console errors or warnings${errors.length ? `:\n  ${errors.join('\n  ')}` : ''}`);
+} finally {
+  await browser.close();
+  cdn.close();
+  site.close();
+}
+console.log(`cross-origin embed: ${failures.length ? `${failures.length} failed` : 'all passed'} in ${((Date.now() - started) / 1000).toFixed(1)} s; screenshots in artifacts/`);
+process.exit(failures.length ? 1 : 0);
