@@ -8,6 +8,10 @@ bash scripts/ensure-chromium.sh
 echo "== typecheck"
 npx tsc --noEmit -p tsconfig.json
 npx tsc --noEmit -p test/tsconfig.json
+echo "== custom-elements.json up to date"
+cp custom-elements.json /tmp/custom-elements.committed.json
+npm run analyze --silent >/dev/null
+cmp -s /tmp/custom-elements.committed.json custom-elements.json || { echo "custom-elements.json was out of date (regenerated now): commit it"; exit 1; }
 echo "== engine in Node"
 node scripts/engine-in-node.mjs
 node --expose-gc scripts/soak.mjs --steps 30000 --samples 5
@@ -15,3 +19,6 @@ echo "== browser tests"
 npx web-test-runner --static-logging "$@"
 echo "== gallery stories"
 node scripts/check-stories.mjs
+echo "== build, and the single-file build embedded across origins"
+npm run build --silent
+node test/e2e/cross-origin.mjs

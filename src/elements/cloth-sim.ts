@@ -69,10 +69,11 @@ export class ClothSimElement extends PhysicsSceneElement {
   private windTimer: ReturnType<typeof setInterval> | null = null;
   private windStart = 0;
 
+  /** World units down the view. Default 10. */
+  override height = 10;
+
   constructor() {
     super();
-    this.width = 16;
-    this.height = 10;
   }
 
   protected override get defaultLabel(): string {

@@ -67,10 +67,11 @@ export class RagdollSimElement extends PhysicsSceneElement {
   private watchTimer: ReturnType<typeof setInterval> | null = null;
   private readonly still = new Map<Element, { x: number; y: number; since: number }>();
 
+  /** World units down the view. Default 10. */
+  override height = 10;
+
   constructor() {
     super();
-    this.width = 16;
-    this.height = 10;
     // Off the top step with a push to the right, so they tumble down the stairs.
     this.addEventListener('physics-ready', () => {
       for (const doll of this.dolls()) this.push(doll);
