@@ -68,11 +68,9 @@ function worker({ inline = false } = {}) {
         if (!resolved) this.error(`cannot resolve worker ${m[2]} from ${id}`);
         let replacement;
         if (inline) {
-          const bundle = await rollup({ input: resolved.id, plugins: [...basePlugins(), terser()] });
-          const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
-          await bundle.close();
-          for (const f of bundle.watchFiles ?? []) this.addWatchFile(f);
-          replacement = `new Worker(URL.createObjectURL(new Blob([${JSON.stringify(output[0].code)}], { type: 'text/javascript' }))`;
+          // The worker's code is the shared engine function (see sharedEngine()).
+          if (!out.startsWith('import { __peWorkerUrl }')) out = `import { __peWorkerUrl } from ${JSON.stringify(ENGINE_FACTORY)};\n` + out;
+          replacement = 'new Worker(__peWorkerUrl()';
         } else {
           const ref = this.emitFile({ type: 'chunk', id: resolved.id, name: 'engine.worker' });
           replacement = `new Worker(import.meta.ROLLUP_FILE_URL_${ref}`;
@@ -81,6 +79,52 @@ function worker({ inline = false } = {}) {
         last = m.index + m[0].length;
       }
       return { code: out + code.slice(last), map: null };
+    },
+  };
+}
+
+/** Modules of the engine that both the worker and the page use. */
+const SHARED_ENGINE = ['src/engine/index.ts', 'src/worker/engine-host.ts', 'src/worker/publishers.ts', 'src/worker/triple-buffer.ts'].map((f) => resolve(root, f));
+const ENGINE_FACTORY = '\0engine-factory';
+
+/**
+ * One copy of the engine in the single-file build. src/worker/engine-bundle.ts (the worker's code and the engine's
+ * exports) is bundled once and wrapped in a function: the page calls it for the headless engine and the main-thread
+ * fallback (every import of a SHARED_ENGINE module resolves to its exports), and the worker is a blob: URL of the same
+ * function's source text. Before, the engine was in the file twice (the worker's string and the page's code).
+ */
+function sharedEngine() {
+  let factory = null;
+  return {
+    name: 'shared-engine',
+    async buildStart() {
+      const bundle = await rollup({ input: resolve(root, 'src/worker/engine-bundle.ts'), plugins: [...basePlugins(), terser()] });
+      const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
+      for (const f of bundle.watchFiles ?? []) this.addWatchFile(f);
+      await bundle.close();
+      const chunk = output[0];
+      // The chunk ends with its export statement; it becomes the function's return value.
+      const m = /export\s*\{([^}]*)\}\s*;?\s*$/.exec(chunk.code);
+      if (!m || /\bimport\.meta\b|^\s*import[\s{*]/m.test(chunk.code)) this.error('engine factory: expected one trailing export statement and no imports');
+      const entries = m[1].split(',').map((spec) => spec.trim()).filter(Boolean).map((spec) => {
+        const [local, exported = local] = spec.split(/\s+as\s+/);
+        return `${JSON.stringify(exported)}:${local}`;
+      });
+      factory = { body: chunk.code.slice(0, m.index), returns: entries.join(','), exports: chunk.exports.filter((n) => n !== 'default') };
+    },
+    resolveId(source, importer) {
+      if (source === ENGINE_FACTORY) return ENGINE_FACTORY;
+      if (!importer || importer === ENGINE_FACTORY || !source.startsWith('.') || !source.endsWith('.js')) return null;
+      return SHARED_ENGINE.includes(resolve(dirname(importer), source.slice(0, -3) + '.ts')) ? ENGINE_FACTORY : null;
+    },
+    load(id) {
+      if (id !== ENGINE_FACTORY) return null;
+      return [
+        `function __peEngine(){${factory.body};return{${factory.returns}}}`,
+        'const __pe = __peEngine();',
+        'export function __peWorkerUrl() { return URL.createObjectURL(new Blob(["(" + __peEngine.toString() + ")()"], { type: "text/javascript" })); }',
+        ...factory.exports.map((n) => `export const ${n} = __pe.${n};`),
+      ].join('\n');
     },
   };
 }
@@ -102,11 +146,11 @@ export default [
   {
     input: 'src/index.ts',
     output: { file: 'dist/physics-elements.bundle.js', format: 'es', inlineDynamicImports: true },
-    plugins: [...basePlugins(), worker({ inline: true }), terser()],
+    plugins: [sharedEngine(), ...basePlugins(), worker({ inline: true }), terser()],
   },
   {
     input: 'src/index.ts',
     output: { file: 'dist/physics-elements.no-p5.js', format: 'es', inlineDynamicImports: true },
-    plugins: [...basePlugins({ external: true }), worker({ inline: true }), terser()],
+    plugins: [sharedEngine(), ...basePlugins({ external: true }), worker({ inline: true }), terser()],
   },
 ];

@@ -1,7 +1,7 @@
 // The engine worker: one EngineHost behind comlink. Frames, topology and events go to the page on a MessagePort of
 // their own (frames as a SharedArrayBuffer triple buffer or as transferred ArrayBuffers); commands come through comlink.
 import * as Comlink from 'comlink';
-import { EngineHost } from './engine-host.js';
+import { EngineHost, runningInWorker } from './engine-host.js';
 import { TransferPublisher, TripleBufferPublisher, type Publisher } from './publishers.js';
 import type { EngineApi, PortMessage, ReturnMessage, Transport } from './protocol.js';
 
@@ -39,4 +39,6 @@ const endpoint = {
 
 export type WorkerEndpoint = typeof endpoint;
 
-Comlink.expose(endpoint);
+// The single-file build also runs this module's code on the page (its engine, for the main-thread fallback): only a
+// worker exposes the endpoint.
+if (runningInWorker()) Comlink.expose(endpoint);

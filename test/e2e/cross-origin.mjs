@@ -41,6 +41,7 @@ const page = `<!doctype html>
 <p>A blog post with two embeds.</p>
 <cloth-sim class="embed" id="cloth" columns="16" rows="10" pins="top" wind="2"></cloth-sim>
 <ragdoll-sim class="embed" id="ragdolls" count="3"></ragdoll-sim>
+<cloth-sim class="embed" id="fallback" worker="none" columns="8" rows="5" style="height: 150px"></cloth-sim>
 </body></html>`;
 const site = await listen('127.0.0.1', (req, res) => {
   if (req.url === '/' || req.url === '/index.html') {
@@ -66,7 +67,7 @@ const check = (ok, what) => {
   if (!ok) failures.push(what);
 };
 try {
-  const tab = await browser.newPage({ viewport: { width: 620, height: 820 } });
+  const tab = await browser.newPage({ viewport: { width: 620, height: 1000 } });
   const errors = [];
   tab.on('console', (m) => (m.type() === 'error' || m.type() === 'warning') && errors.push(`${m.type()}: ${m.text()}`));
   tab.on('pageerror', (e) => errors.push(`pageerror: ${e}`));
@@ -75,7 +76,7 @@ try {
   const info = await tab.evaluate(async () => {
     await Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
     const out = {};
-    for (const id of ['cloth', 'ragdolls']) {
+    for (const id of ['cloth', 'ragdolls', 'fallback']) {
       const el = document.getElementById(id);
       await el.ready;
       out[id] = { mode: el.mode, transport: el.transport, origin: location.origin };
@@ -84,6 +85,7 @@ try {
   });
   console.log(JSON.stringify(info));
   check(info.cloth.mode === 'worker' && info.ragdolls.mode === 'worker', 'both engines run in a worker (blob: URL) on a page of another origin');
+  check(info.fallback.mode === 'main', 'worker="none": the main-thread engine (the same engine code as the worker\'s) runs');
   check(info.cloth.transport === 'transfer', 'no cross-origin isolation: frames come as transferred ArrayBuffers');
 
   /** Canvas pixels as a data URL, after the scene has taken `steps` more steps. */
@@ -97,21 +99,26 @@ try {
       while (el.renderedFrames < drawn + 2 && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
       return el.canvas.toDataURL();
     }, [id, steps]);
-  for (const id of ['cloth', 'ragdolls']) {
+  for (const id of ['cloth', 'ragdolls', 'fallback']) {
     const a = await canvasAfter(id, 5);
     const b = await canvasAfter(id, 20);
-    check(a.length > 1000 && a !== b, `<${id === 'cloth' ? 'cloth-sim' : 'ragdoll-sim'}> animates: the canvas changes between frames`);
+    check(a.length > 1000 && a !== b, `#${id} animates: the canvas changes between frames`);
   }
   await tab.screenshot({ path: resolve(artifacts, 'cross-origin-1.png') });
 
   // Drag the bottom-middle of the cloth 160 px to the right with the mouse.
-  const before = await tab.evaluate(() => {
+  const before = await tab.evaluate(async () => {
     const el = document.getElementById('cloth');
     const cloth = el.shadowRoot.querySelector('physics-cloth');
-    const spacing = Number(cloth.getAttribute('spacing'));
-    const x = Number(cloth.getAttribute('x')) + spacing * 7.5;
-    const y = Number(cloth.getAttribute('y')) + spacing * 9;
-    return { pose: cloth.x, at: el.worldToClient(x, y) };
+    // The live position of the bottom-middle particle (row 9, column 7), read from the draw hook's view.
+    const p = await new Promise((ok) => {
+      el.drawHook = (v) => {
+        const i = v.topology.bodies[0].indices[9 * 16 + 7];
+        ok({ x: v.positions[2 * i], y: v.positions[2 * i + 1] });
+        el.drawHook = null;
+      };
+    });
+    return { pose: cloth.x, at: el.worldToClient(p.x, p.y) };
   });
   await tab.mouse.move(before.at.x, before.at.y);
   await tab.mouse.down();
