@@ -19,7 +19,7 @@ import { KeyTable } from './key-table.js';
  * to μ times the normal correction of this substep (static friction when it all fits, kinetic otherwise).
  */
 export class Contacts extends Table {
-  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'anchor', 'touched', 'allowance'] as const;
+  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'anchor', 'touched', 'allowance', 'solvedNx', 'solvedNy', 'solvedAlpha'] as const;
   v = new Int32Array(16);
   e0 = new Int32Array(16);
   e1 = new Int32Array(16);
@@ -52,6 +52,10 @@ export class Contacts extends Table {
    * created by motion during the step is still undone at once (nothing tunnels).
    */
   allowance = new Float64Array(16);
+  /** Normal and edge fraction of the last correction, reused by the velocity pass (valid while `lambda` > 0). */
+  solvedNx = new Float64Array(16);
+  solvedNy = new Float64Array(16);
+  solvedAlpha = new Float64Array(16);
 
   add(v: number, e0: number, e1: number, radius: number, friction: number, restitution: number, bodyA: number, bodyB: number, nx: number, ny: number, depth: number): void {
     if (this.count === this.v.length) this.reserve(1);
@@ -155,6 +159,9 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       if (w === 0) continue;
       const dl = -sep / w;
       lambda[i] += dl;
+      c.solvedNx[i] = nx;
+      c.solvedNy[i] = ny;
+      c.solvedAlpha[i] = alpha;
       // Static friction holds the vertex at the point of the edge it first touched (its anchor); when that needs
       // more than μ times the normal correction, the contact slips by the excess and the anchor follows.
       const tx = ex * inv;
@@ -195,6 +202,9 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       }
       const dl = (r - d) / w;
       lambda[i] += dl;
+      c.solvedNx[i] = nx;
+      c.solvedNy[i] = ny;
+      c.solvedAlpha[i] = 0;
       const tx = -ny;
       const ty = nx;
       const mx = x[iv] - px[iv] - (x[i0] - px[i0]);
@@ -272,21 +282,30 @@ export function recordApproachSpeeds(c: Contacts, p: ParticleStore): void {
  */
 export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
   const { vx, vy, invMass } = p;
-  const { v, e0, e1, lambda, restitution, normalSpeed } = c;
+  const { v, e0, e1, lambda, restitution, normalSpeed, solvedNx, solvedNy, solvedAlpha } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     if (lambda[i] <= 0) continue;
-    const vn = normalVelocity(c, p, i, scratch);
-    const nx = scratch[0];
-    const ny = scratch[1];
-    const alpha = scratch[2];
+    // The direction and edge fraction of this substep's correction: the positions barely moved since.
+    const nx = solvedNx[i];
+    const ny = solvedNy[i];
+    const alpha = solvedAlpha[i];
     const beta = 1 - alpha;
     const iv = v[i];
     const i0 = e0[i];
     const i1 = e1[i];
     const wv = invMass[iv];
     const w0 = invMass[i0];
-    const w1 = i1 >= 0 ? invMass[i1] : 0;
-    const w = i1 >= 0 ? wv + beta * beta * w0 + alpha * alpha * w1 : wv + w0;
+    let vn: number;
+    let w: number;
+    let w1 = 0;
+    if (i1 >= 0) {
+      w1 = invMass[i1];
+      vn = (vx[iv] - beta * vx[i0] - alpha * vx[i1]) * nx + (vy[iv] - beta * vy[i0] - alpha * vy[i1]) * ny;
+      w = wv + beta * beta * w0 + alpha * alpha * w1;
+    } else {
+      vn = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
+      w = wv + w0;
+    }
     if (w === 0) continue;
     let target = 0;
     if (restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD) {
