@@ -129,7 +129,7 @@ const EDGE_OVERHANG = 0.05;
 
 export function solveContacts(c: Contacts, p: ParticleStore): void {
   const { x, y, px, py, invMass } = p;
-  const { v, e0, e1, radius, friction, lambda, anchor, allowance } = c;
+  const { v, e0, e1, radius, friction, lambda, anchor, allowance, touched, solvedNx, solvedNy, solvedAlpha } = c;
   const n = c.count;
   for (let i = 0; i < n; i++) {
     const iv = v[i];
@@ -151,7 +151,7 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       if (sep >= 0) continue;
       let alpha = (rx * ex + ry * ey) / len2;
       if (alpha < -EDGE_OVERHANG || alpha > 1 + EDGE_OVERHANG) continue;
-      c.touched[i] = 1;
+      touched[i] = 1;
       alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
       const beta = 1 - alpha;
       const w1 = invMass[i1];
@@ -159,9 +159,9 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       if (w === 0) continue;
       const dl = -sep / w;
       lambda[i] += dl;
-      c.solvedNx[i] = nx;
-      c.solvedNy[i] = ny;
-      c.solvedAlpha[i] = alpha;
+      solvedNx[i] = nx;
+      solvedNy[i] = ny;
+      solvedAlpha[i] = alpha;
       // Static friction holds the vertex at the point of the edge it first touched (its anchor); when that needs
       // more than μ times the normal correction, the contact slips by the excess and the anchor follows.
       const tx = ex * inv;
@@ -191,7 +191,7 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       if (d2 >= r * r) continue;
       const w = wv + w0;
       if (w === 0) continue;
-      c.touched[i] = 1;
+      touched[i] = 1;
       const d = Math.sqrt(d2);
       if (d > 1e-12) {
         nx /= d;
@@ -202,9 +202,9 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
       }
       const dl = (r - d) / w;
       lambda[i] += dl;
-      c.solvedNx[i] = nx;
-      c.solvedNy[i] = ny;
-      c.solvedAlpha[i] = 0;
+      solvedNx[i] = nx;
+      solvedNy[i] = ny;
+      solvedAlpha[i] = 0;
       const tx = -ny;
       const ty = nx;
       const mx = x[iv] - px[iv] - (x[i0] - px[i0]);
