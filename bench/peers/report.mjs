@@ -70,10 +70,19 @@ export function report({ options, results, started, finished, node, cpu, load, s
         const [best, t] = timed.reduce((a, b) => (b[1] < a[1] ? b : a));
         const ratio = ours / t;
         cells.push(`${ratio.toFixed(2)}× (${best})`);
+        // Run medians of both: when their ranges overlap, the ranking is within this machine's noise.
+        const range = (e) => {
+          const xs = of(scene, e).map((r) => r.median);
+          return [Math.min(...xs), Math.max(...xs)];
+        };
+        const [o0, o1] = range('ours');
+        const [p0, p1] = range(best);
+        const spread = `runs: ours ${ms(o0)}–${ms(o1)}, ${best} ${ms(p0)}–${ms(p1)}`;
+        const close = o0 <= p1 && p0 <= o1 ? '; the ranges overlap, so this is within noise' : '';
         verdicts.push(
           ratio <= 1
-            ? `- ${scene}: ours ${ms(ours)} ms, faster than every peer (fastest peer ${best}, ${ms(t)} ms).`
-            : `- ${scene}: **not yet the fastest**: ours ${ms(ours)} ms is ${ratio.toFixed(2)}× ${best} (${ms(t)} ms).`,
+            ? `- ${scene}: ours ${ms(ours)} ms, faster than every peer; fastest peer ${best}, ${ms(t)} ms (${spread}${close}).`
+            : `- ${scene}: **not yet the fastest**: ours ${ms(ours)} ms is ${ratio.toFixed(2)}× ${best}, ${ms(t)} ms (${spread}${close}).`,
         );
       } else cells.push('—');
     }
