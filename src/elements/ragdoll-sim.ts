@@ -47,7 +47,7 @@ export class RagdollSimElement extends PhysicsSceneElement {
     `,
   ];
 
-  /** Number of ragdolls (whole number 1..12). Default 3. */
+  /** Number of ragdolls (whole number 1..12). Default 3. The first stand in view; the rest fall in from above. */
   @property({ type: Number }) count = 3;
   /** Height of a ragdoll in world units. Default 1.6. */
   @property({ type: Number }) size = 1.6;
@@ -105,11 +105,20 @@ export class RagdollSimElement extends PhysicsSceneElement {
     if (changed.has('respawn')) this.runningChanged(this.running);
   }
 
-  /** Where ragdoll k starts (pelvis), above the top step. */
+  /**
+   * Where ragdoll k starts (its pelvis): the first ones standing in view (on the top two steps, or in a row above the
+   * pegs), so a paused scene shows them; the rest stacked above the view, falling in.
+   */
   private spawnPoint(k: number, s: RagdollSetup): { x: number; y: number } {
     const w = this.viewW();
-    const x = s.obstacles === 'stairs' ? w * 0.08 + s.size * 0.35 * (k % 3) : w * (0.25 + (0.5 * ((k * 0.618) % 1)));
-    return { x, y: -s.size * (0.4 + 1.3 * k) };
+    const h = this.viewH();
+    if (s.obstacles === 'stairs') {
+      const step = k % 2;
+      const stepW = (w * 0.85) / 6;
+      const stepTop = h * 0.3 + step * ((h * 0.62) / 6);
+      return { x: stepW * (0.45 + step), y: stepTop - s.size * 0.62 - 1.3 * s.size * Math.floor(k / 2) };
+    }
+    return { x: w * (0.12 + 0.76 * ((k * 0.618 + 0.2) % 1)), y: s.size * 0.7 - 1.3 * s.size * Math.floor(k / 4) };
   }
 
   private viewW(): number {
