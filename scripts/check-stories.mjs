@@ -1,7 +1,7 @@
 // Checks the gallery (demo/index.html): every story loads with no console error and a non-blank canvas that changes
 // over time; the controls panel edits the markup snippet; a deep link opens its story. Starts and stops its own dev
 // server on a free port, drives Debian's chromium with playwright-core, keeps a screenshot of every story under
-// artifacts/stories/. Usage: node scripts/check-stories.mjs [--only id,id]
+// artifacts/stories/. Then the engine demo and the report page load without console errors. Usage: node scripts/check-stories.mjs [--only id,id]
 import { mkdirSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { startDevServer } from './dev-server.mjs';
@@ -98,6 +98,24 @@ try {
     if (!edited.snippet.includes('fill="&quot;&gt;&lt;img src=x onerror=alert(1)&gt;"')) failures.push('controls: the snippet does not show the edited, escaped value');
     if (edited.attr !== '"><img src=x onerror=alert(1)>') failures.push('controls: the attribute was not set on the element');
     if (edited.imgs) failures.push('controls: an attribute value became markup');
+  }
+
+  // The other demo pages load without console errors: the engine demo, and the report (its plots drawn from bench/results/).
+  for (const [path, ready] of [
+    ['engine.html', () => document.querySelector('canvas')],
+    ['report.html', () => document.querySelectorAll('svg').length >= 8 && !document.getElementById('closing').textContent.startsWith('Loading')],
+  ]) {
+    errors = [];
+    await page.goto(`${server.url}/demo/${path}`);
+    try {
+      await page.waitForFunction(ready, null, { timeout: 15000 });
+      await page.waitForTimeout(500);
+      await page.screenshot({ path: new URL(`page-${path.replace('.html', '')}.png`, outDir).pathname, fullPage: path === 'report.html' });
+    } catch (e) {
+      failures.push(`${path}: not ready (${e.message.split('\n')[0]})`);
+    }
+    if (errors.length) failures.push(`${path}: console errors: ${errors.join(' | ')}`);
+    console.log(`${errors.length ? 'FAIL' : 'ok  '} demo/${path}`);
   }
 } finally {
   await browser.close();
