@@ -70,7 +70,7 @@ export class ClothSimElement extends PhysicsSceneElement {
   private windStart = 0;
 
   /** World units down the view. Default 10. */
-  override height = 10;
+  @property({ type: Number }) override height = 10;
 
   constructor() {
     super();

@@ -68,7 +68,7 @@ export class RagdollSimElement extends PhysicsSceneElement {
   private readonly still = new Map<Element, { x: number; y: number; since: number }>();
 
   /** World units down the view. Default 10. */
-  override height = 10;
+  @property({ type: Number }) override height = 10;
 
   constructor() {
     super();
