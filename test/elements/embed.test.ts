@@ -178,11 +178,15 @@ describe('embedding', () => {
 /** A component that renders its own <cloth-sim> in its shadow root, as a framework component would. */
 class HostComponent extends HTMLElement {
   sim: ClothSimElement;
+  scene: PhysicsSceneElement;
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
-    root.innerHTML = '<div style="width: 400px; height: 250px"><cloth-sim style="width: 100%; height: 100%"></cloth-sim></div>';
+    root.innerHTML =
+      '<div style="width: 400px; height: 250px"><cloth-sim style="width: 100%; height: 100%"></cloth-sim></div>' +
+      '<physics-scene style="width: 400px; height: 225px"><physics-box x="8" y="2" width="1" height="1"></physics-box></physics-scene>';
     this.sim = root.querySelector('cloth-sim')!;
+    this.scene = root.querySelector('physics-scene')!;
   }
 }
 if (!customElements.get('x-embed-host')) customElements.define('x-embed-host', HostComponent);
@@ -210,6 +214,12 @@ describe('inside other components and frameworks', () => {
       expect(errors.map((e) => [e.element, e.attribute, e.value])).to.deep.equal([[sim, 'rows', 'many']]);
       await expectSteps(sim);
       expect(sim.canvas!.getBoundingClientRect().width).to.equal(400);
+      // A <physics-scene> with light-DOM children in the same shadow root: its box falls, and a child added later joins.
+      await host.scene.ready;
+      const crate = host.scene.querySelector<PhysicsBoxElement>('physics-box')!;
+      await waitFor(() => crate.y > 3, 'the box in the shadow-root scene to fall');
+      host.scene.append(Object.assign(document.createElement('physics-circle'), { radius: 0.5 }));
+      await waitFor(async () => (await host.scene.diagnostics()).bodyCount === 2, 'the added circle');
       const spacer = document.createElement('div');
       spacer.style.height = '3000px';
       document.body.append(spacer);

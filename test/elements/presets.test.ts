@@ -146,6 +146,25 @@ describe('<ragdoll-sim>', () => {
     await waitFor(() => doll.y < 4, 'the ragdoll back near the top');
   });
 
+  it('drag a ragdoll and let go: it is thrown', async () => {
+    // No gravity and no obstacles: the ragdoll stands where it spawned until the pointer takes its pelvis.
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" gravity="0 0"');
+    const [doll] = dollsOf(sim);
+    await frames(3);
+    const x0 = doll.x;
+    const y0 = doll.y;
+    pointer(sim, 'pointerdown', x0, y0);
+    for (let k = 1; k <= 12; k++) {
+      await frames(1);
+      pointer(sim, 'pointermove', x0 + (5 * k) / 12, y0 + (2 * k) / 12);
+    }
+    await waitFor(() => doll.x > x0 + 2, 'the ragdoll to follow the pointer');
+    const atRelease = doll.x;
+    pointer(sim, 'pointerup', x0 + 5, y0 + 2);
+    // Thrown: it flies on to the right after the pointer let go.
+    await waitFor(() => doll.x > Math.max(atRelease, x0 + 5) + 1, 'the ragdoll to fly on after release');
+  });
+
   it('bad attributes fall back to defaults and are reported on the element', async () => {
     const errors: PhysicsErrorDetail[] = [];
     const warn = console.warn;
