@@ -86,6 +86,7 @@ function worker({ inline = false } = {}) {
 /** Modules of the engine that both the worker and the page use. */
 const SHARED_ENGINE = ['src/engine/index.ts', 'src/worker/engine-host.ts', 'src/worker/publishers.ts', 'src/worker/triple-buffer.ts'].map((f) => resolve(root, f));
 const ENGINE_FACTORY = '\0engine-factory';
+const COMLINK_FROM_FACTORY = '\0comlink-from-engine-factory';
 
 /**
  * One copy of the engine in the single-file build. src/worker/engine-bundle.ts (the worker's code and the engine's
@@ -114,10 +115,16 @@ function sharedEngine() {
     },
     resolveId(source, importer) {
       if (source === ENGINE_FACTORY) return ENGINE_FACTORY;
+      if (source === COMLINK_FROM_FACTORY) return COMLINK_FROM_FACTORY;
+      if (source === 'comlink' && importer !== ENGINE_FACTORY) return COMLINK_FROM_FACTORY;
       if (!importer || importer === ENGINE_FACTORY || !source.startsWith('.') || !source.endsWith('.js')) return null;
       return SHARED_ENGINE.includes(resolve(dirname(importer), source.slice(0, -3) + '.ts')) ? ENGINE_FACTORY : null;
     },
-    load(id) {
+    async load(id) {
+      if (id === COMLINK_FROM_FACTORY) {
+        const names = Object.keys(await import('comlink')).filter((n) => n !== 'default');
+        return `import { __comlink } from ${JSON.stringify(ENGINE_FACTORY)};\n${names.map((n) => `export const ${n} = __comlink.${n};`).join('\n')}`;
+      }
       if (id !== ENGINE_FACTORY) return null;
       return [
         `function __peEngine(){${factory.body};return{${factory.returns}}}`,

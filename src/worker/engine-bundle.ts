@@ -6,3 +6,5 @@ export * from '../engine/index.js';
 export { EngineHost } from './engine-host.js';
 export { TripleBufferPublisher, TransferPublisher } from './publishers.js';
 export { TripleBuffer } from './triple-buffer.js';
+// The page's comlink too (one copy in the single-file build).
+export * as __comlink from 'comlink';
