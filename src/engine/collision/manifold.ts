@@ -3,7 +3,7 @@
 // position-based response of seed 4.2 needs (which vertex of which shape penetrates which edge, and where along it).
 import type { Manifold } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, sep } from './scratch.js';
+import { ax, ay, bx, by, load, maxSeparation, pointSeparation, sep } from './scratch.js';
 
 /**
  * The reference face is the polygon whose best separating facet is shallower by this fraction of the depth; A wins
@@ -224,29 +224,12 @@ function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Manifold, margin:
   const r = c.radius;
   const { xs, ys, index, offset, count } = p;
   const reach = r + margin;
-  let best = -Infinity;
-  let bestI = -1;
-  let bnx = 0;
-  let bny = 0;
-  for (let k = 0; k < count; k++) {
-    const i = index[offset + k];
-    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
-    const ex = xs[j] - xs[i];
-    const ey = ys[j] - ys[i];
-    const len2 = ex * ex + ey * ey;
-    if (len2 === 0) continue;
-    const inv = 1 / Math.sqrt(len2);
-    const nx = ey * inv;
-    const ny = -ex * inv;
-    const s = nx * (cx - xs[i]) + ny * (cy - ys[i]);
-    if (s >= reach) return miss(out);
-    if (s > best) {
-      best = s;
-      bestI = k;
-      bnx = nx;
-      bny = ny;
-    }
-  }
+  pointSeparation(p, cx, cy, reach);
+  if (sep.value >= reach) return miss(out);
+  const best = sep.value;
+  const bestI = sep.edge;
+  const bnx = sep.nx;
+  const bny = sep.ny;
   if (bestI < 0) return miss(out); // P has no edge of positive length
   const i1 = index[offset + bestI];
   const i2 = index[offset + (bestI + 1 === count ? 0 : bestI + 1)];

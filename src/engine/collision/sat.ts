@@ -4,7 +4,7 @@
 // contains the other. Shapes that only touch are not a hit.
 import type { Penetration } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, sep } from './scratch.js';
+import { ax, ay, bx, by, load, maxSeparation, pointSeparation, sep } from './scratch.js';
 
 /**
  * Overlap test with MTV. Polygon–polygon, polygon–circle, circle–circle, and segments (as two-sided polygons) with
@@ -66,29 +66,12 @@ function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Penetration): boo
   const cy = c.ys[ci];
   const r = c.radius;
   const { xs, ys, index, offset, count } = p;
-  let best = -Infinity;
-  let bestI = 0;
-  let bnx = 0;
-  let bny = 0;
-  for (let k = 0; k < count; k++) {
-    const i = index[offset + k];
-    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
-    const ex = xs[j] - xs[i];
-    const ey = ys[j] - ys[i];
-    const len2 = ex * ex + ey * ey;
-    if (len2 === 0) continue;
-    const inv = 1 / Math.sqrt(len2);
-    const nx = ey * inv;
-    const ny = -ex * inv;
-    const s = nx * (cx - xs[i]) + ny * (cy - ys[i]);
-    if (s >= r) return miss(out);
-    if (s > best) {
-      best = s;
-      bestI = k;
-      bnx = nx;
-      bny = ny;
-    }
-  }
+  pointSeparation(p, cx, cy, r);
+  if (sep.value >= r) return miss(out);
+  const best = sep.value;
+  const bestI = sep.edge;
+  const bnx = sep.nx;
+  const bny = sep.ny;
   let nx: number;
   let ny: number;
   let depth: number;

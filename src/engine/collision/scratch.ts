@@ -87,3 +87,39 @@ export function maxSeparation(px: Float64Array, py: Float64Array, n: number, qx:
   sep.nx = bnx;
   sep.ny = bny;
 }
+
+/**
+ * The edge of polygon P (or segment) the point (cx, cy) is furthest outside of: into sep.value/edge/nx/ny, as
+ * maxSeparation with Q a single point. Stops at the first separation >= stop; with no edge of positive length
+ * sep.value is −Infinity and sep.edge −1.
+ */
+export function pointSeparation(p: Shape, cx: number, cy: number, stop: number): void {
+  const { xs, ys, index, offset, count } = p;
+  let best = -Infinity;
+  let bestEdge = -1;
+  let bnx = 0;
+  let bny = 0;
+  for (let k = 0; k < count; k++) {
+    const i = index[offset + k];
+    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
+    const ex = xs[j] - xs[i];
+    const ey = ys[j] - ys[i];
+    const len2 = ex * ex + ey * ey;
+    if (len2 === 0) continue;
+    const inv = 1 / Math.sqrt(len2);
+    const nx = ey * inv;
+    const ny = -ex * inv;
+    const s = nx * (cx - xs[i]) + ny * (cy - ys[i]);
+    if (s > best) {
+      best = s;
+      bestEdge = k;
+      bnx = nx;
+      bny = ny;
+      if (s >= stop) break;
+    }
+  }
+  sep.value = best;
+  sep.edge = bestEdge;
+  sep.nx = bnx;
+  sep.ny = bny;
+}
