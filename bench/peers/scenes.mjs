@@ -103,3 +103,24 @@ export function clothLinks(cloth) {
   }
   return out;
 }
+
+/** Calls make(x, y, pinned) for every cloth node, row by row (index r·columns + c); the top row is pinned. */
+export function eachClothNode(cloth, make) {
+  for (let r = 0; r < cloth.rows; r++) {
+    for (let c = 0; c < cloth.columns; c++) {
+      const p = clothNode(cloth, c, r);
+      make(p.x, p.y, r === 0);
+    }
+  }
+}
+
+/** Measurement of the bodies' poses, [x, y, angle] per body (y up, counter-clockwise), read by pose(body, out). */
+export function measurePoses(bodies, pose) {
+  const poses = new Float64Array(bodies.length * 3);
+  const out = [0, 0, 0];
+  bodies.forEach((body, k) => {
+    pose(body, out);
+    poses.set(out, 3 * k);
+  });
+  return { poses };
+}

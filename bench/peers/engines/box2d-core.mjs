@@ -1,7 +1,7 @@
 // @box2d/core (lusito's TypeScript port of Box2D v2.4): y up, metres. Step takes the iteration counts as
 // arguments; we pass Box2D's recommended 8 velocity / 3 position iterations (its testbed's defaults).
 import * as b2 from '@box2d/core';
-import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 const ITERATIONS = { velocityIterations: 8, positionIterations: 3 };
@@ -41,13 +41,8 @@ function build(scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        add(p.x, p.y, new b2.b2CircleShape(nodeRadius), true, r === 0);
-      }
-    }
+    const { columns, nodeRadius } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => add(x, y, new b2.b2CircleShape(nodeRadius), true, pinned));
     for (const [a, b] of clothLinks(scene.cloth)) {
       if (b < columns) continue; // both pinned
       const def = new b2.b2DistanceJointDef();
@@ -57,15 +52,12 @@ function build(scene) {
   }
   return {
     step: () => world.Step(DT, ITERATIONS),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((body, k) => {
+    measure: () =>
+      measurePoses(dynamic, (body, out) => {
         const p = body.GetPosition();
-        poses[3 * k] = p.x;
-        poses[3 * k + 1] = p.y;
-        poses[3 * k + 2] = body.GetAngle();
-      });
-      return { poses };
-    },
+        out[0] = p.x;
+        out[1] = p.y;
+        out[2] = body.GetAngle();
+      }),
   };
 }

@@ -3,7 +3,7 @@
 // and hand the bytes over as wasmBinary. Step takes 8 velocity / 3 position iterations, Box2D's recommended values.
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 const VELOCITY_ITERATIONS = 8;
@@ -73,13 +73,8 @@ function build(B, scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        add(p.x, p.y, circleShape(nodeRadius), true, r === 0);
-      }
-    }
+    const { columns, nodeRadius } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => add(x, y, circleShape(nodeRadius), true, pinned));
     for (const [a, b] of clothLinks(scene.cloth)) {
       if (b < columns) continue; // both pinned
       const def = new B.b2DistanceJointDef();
@@ -89,15 +84,12 @@ function build(B, scene) {
   }
   return {
     step: () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((body, k) => {
+    measure: () =>
+      measurePoses(dynamic, (body, out) => {
         const p = body.GetPosition();
-        poses[3 * k] = p.get_x();
-        poses[3 * k + 1] = p.get_y();
-        poses[3 * k + 2] = body.GetAngle();
-      });
-      return { poses };
-    },
+        out[0] = p.get_x();
+        out[1] = p.get_y();
+        out[2] = body.GetAngle();
+      }),
   };
 }

@@ -2,7 +2,7 @@
 // and y is mirrored. Density 1 kg/m² = 1e-4 per px². frictionAir (default 0.01) is set to 0 like the others'
 // damping. Sleeping is off by default in matter-js.
 import Matter from 'matter-js';
-import { DT, FRICTION, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, FRICTION, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 const PX = 100;
@@ -41,27 +41,19 @@ function build(scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        dynamic.push(Bodies.circle(p.x * PX, -p.y * PX, nodeRadius * PX, { ...common, isStatic: r === 0, collisionFilter: noCollisions }));
-      }
-    }
+    const { columns, nodeRadius } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => dynamic.push(Bodies.circle(x * PX, -y * PX, nodeRadius * PX, { ...common, isStatic: pinned, collisionFilter: noCollisions })));
     for (const [a, b] of clothLinks(scene.cloth)) if (b >= columns) constraints.push(Constraint.create({ bodyA: dynamic[a], bodyB: dynamic[b], stiffness: 1 }));
   }
   Composite.add(engine.world, [...statics, ...dynamic, ...constraints]);
   const deltaMs = DT * 1000;
   return {
     step: () => Engine.update(engine, deltaMs),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((b, k) => {
-        poses[3 * k] = b.position.x / PX;
-        poses[3 * k + 1] = -b.position.y / PX;
-        poses[3 * k + 2] = -b.angle;
-      });
-      return { poses };
-    },
+    measure: () =>
+      measurePoses(dynamic, (b, out) => {
+        out[0] = b.position.x / PX;
+        out[1] = -b.position.y / PX;
+        out[2] = -b.angle;
+      }),
   };
 }

@@ -1,7 +1,7 @@
 // p2-es: y up, metres, masses given explicitly (area × density). Body damping (default 0.1) is set to 0 like the
 // others'; sleeping is off by default (World.NO_SLEEPING); friction through the default contact material.
 import * as p2 from 'p2-es';
-import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 export async function load() {
@@ -41,27 +41,19 @@ function build(scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        add(p.x, p.y, new p2.Circle({ radius: nodeRadius, collisionMask: 0 }), Math.PI * nodeRadius ** 2 * DENSITY, r === 0);
-      }
-    }
+    const { columns, nodeRadius } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => add(x, y, new p2.Circle({ radius: nodeRadius, collisionMask: 0 }), Math.PI * nodeRadius ** 2 * DENSITY, pinned));
     for (const [a, b] of clothLinks(scene.cloth)) {
       if (b >= columns) world.addConstraint(new p2.DistanceConstraint(dynamic[a], dynamic[b], { collideConnected: false }));
     }
   }
   return {
     step: () => world.step(DT),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((body, k) => {
-        poses[3 * k] = body.position[0];
-        poses[3 * k + 1] = body.position[1];
-        poses[3 * k + 2] = body.angle;
-      });
-      return { poses };
-    },
+    measure: () =>
+      measurePoses(dynamic, (body, out) => {
+        out[0] = body.position[0];
+        out[1] = body.position[1];
+        out[2] = body.angle;
+      }),
   };
 }

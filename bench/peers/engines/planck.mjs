@@ -1,6 +1,6 @@
 // planck.js (Box2D v2 in JavaScript): y up, metres. world.step(dt) uses the world's default iterations.
 import * as planck from 'planck';
-import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 export async function load() {
@@ -39,13 +39,8 @@ function build(scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        add(p.x, p.y, planck.Circle(nodeRadius), noCollisions, r === 0 ? 'static' : 'dynamic');
-      }
-    }
+    const { columns, nodeRadius } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => add(x, y, planck.Circle(nodeRadius), noCollisions, pinned ? 'static' : 'dynamic'));
     for (const [a, b] of clothLinks(scene.cloth)) {
       if (b < columns) continue; // both pinned
       const A = dynamic[a];
@@ -55,15 +50,12 @@ function build(scene) {
   }
   return {
     step: () => world.step(DT),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((body, k) => {
+    measure: () =>
+      measurePoses(dynamic, (body, out) => {
         const p = body.getPosition();
-        poses[3 * k] = p.x;
-        poses[3 * k + 1] = p.y;
-        poses[3 * k + 2] = body.getAngle();
-      });
-      return { poses };
-    },
+        out[0] = p.x;
+        out[1] = p.y;
+        out[2] = body.getAngle();
+      }),
   };
 }

@@ -2,7 +2,7 @@
 // @dimforge/rapier2d-simd-compat (SIMD build, newest 0.19). y up, metres, bodies with setCanSleep(false),
 // impulse joints, the world's default integration parameters. Rapier has no rigid distance joint in 2D, so the
 // cloth uses rope joints (a maximum distance: resist stretching only), the nearest it offers.
-import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, clothNode, linkCentre } from '../scenes.mjs';
+import { DT, DENSITY, FRICTION, GRAVITY, clothLinks, eachClothNode, linkCentre, measurePoses } from '../scenes.mjs';
 import { installedVersion } from './version.mjs';
 
 // Membership 1, filter 0: interacts with nothing.
@@ -61,28 +61,20 @@ function build(R, scene) {
     }
   }
   if (scene.cloth) {
-    const { columns, rows, nodeRadius, spacing } = scene.cloth;
-    for (let r = 0; r < rows; r++) {
-      for (let c = 0; c < columns; c++) {
-        const p = clothNode(scene.cloth, c, r);
-        add(p.x, p.y, R.ColliderDesc.ball(nodeRadius), true, r === 0);
-      }
-    }
+    const { columns, nodeRadius, spacing } = scene.cloth;
+    eachClothNode(scene.cloth, (x, y, pinned) => add(x, y, R.ColliderDesc.ball(nodeRadius), true, pinned));
     for (const [a, b] of clothLinks(scene.cloth)) {
       if (b >= columns) world.createImpulseJoint(R.JointData.rope(spacing, { x: 0, y: 0 }, { x: 0, y: 0 }), dynamic[a], dynamic[b], true);
     }
   }
   return {
     step: () => world.step(),
-    measure() {
-      const poses = new Float64Array(dynamic.length * 3);
-      dynamic.forEach((body, k) => {
+    measure: () =>
+      measurePoses(dynamic, (body, out) => {
         const t = body.translation();
-        poses[3 * k] = t.x;
-        poses[3 * k + 1] = t.y;
-        poses[3 * k + 2] = body.rotation();
-      });
-      return { poses };
-    },
+        out[0] = t.x;
+        out[1] = t.y;
+        out[2] = body.rotation();
+      }),
   };
 }

@@ -2,6 +2,7 @@
 // (xs[index[offset + k]], ys[index[offset + k]]), so a shape built over the engine's particle arrays always collides
 // with the particles' current outline. The standalone constructors (polygon, circle, segment) own small arrays.
 import { describeValue, finite, nonNegative } from '../validate.js';
+import { AABB, aabbOf } from './aabb.js';
 
 /** What a shape's vertices mean. A plain object rather than a const enum, so it survives isolatedModules and .d.ts. */
 export const ShapeType = { Polygon: 0, Circle: 1, Segment: 2 } as const;
@@ -327,21 +328,9 @@ export function supportPoint(shape: Shape, dx: number, dy: number, out: PointLik
 
 /** A size for relative tolerances: the largest half-extent of the shape's bounding box, radius included. */
 export function shapeSize(shape: Shape): number {
-  const { xs, ys, index, offset, count } = shape;
-  let minX = Infinity;
-  let minY = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  for (let k = 0; k < count; k++) {
-    const i = index[offset + k];
-    const x = xs[i];
-    const y = ys[i];
-    if (x < minX) minX = x;
-    if (x > maxX) maxX = x;
-    if (y < minY) minY = y;
-    if (y > maxY) maxY = y;
-  }
-  const w = maxX - minX;
-  const h = maxY - minY;
-  return (w > h ? w : h) / 2 + shape.radius;
+  const box = aabbOf(shape, sizeBox);
+  const w = box.maxX - box.minX;
+  const h = box.maxY - box.minY;
+  return (w > h ? w : h) / 2;
 }
+const sizeBox = new AABB();
