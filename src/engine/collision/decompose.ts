@@ -127,45 +127,33 @@ function earClip(p: Prepared): { triangles: number[][]; diagonals: [number, numb
   let k = 0;
   let misses = 0;
   while (left > 3) {
-    if (isEar(k)) {
-      const a = prev[k];
-      const c = next[k];
-      triangles.push([corners[a], corners[k], corners[c]]);
-      diagonals.push([corners[a], corners[c]]);
-      next[a] = c;
-      prev[c] = a;
-      alive[k] = 0;
-      left--;
-      misses = 0;
-      k = c;
-    } else {
+    if (!isEar(k)) {
       k = next[k];
-      if (++misses > left) {
-        // No ear found in a full turn: only rounding can do this. Clip the most convex corner and go on.
-        let bestK = -1;
-        let best = 0;
-        let q = k;
-        for (let s = 0; s < left; s++, q = next[q]) {
-          const t = turn(prev[q], q, next[q]);
-          if (t > best) {
-            best = t;
-            bestK = q;
-          }
+      if (++misses <= left) continue;
+      // No ear found in a full turn: only rounding can do this. Clip the most convex corner and go on.
+      let bestK = -1;
+      let best = 0;
+      let q = k;
+      for (let s = 0; s < left; s++, q = next[q]) {
+        const t = turn(prev[q], q, next[q]);
+        if (t > best) {
+          best = t;
+          bestK = q;
         }
-        if (bestK < 0) throw new RangeError('points: ear clipping found no convex corner (is the polygon degenerate?)');
-        k = bestK;
-        const a = prev[k];
-        const c = next[k];
-        triangles.push([corners[a], corners[k], corners[c]]);
-        diagonals.push([corners[a], corners[c]]);
-        next[a] = c;
-        prev[c] = a;
-        alive[k] = 0;
-        left--;
-        misses = 0;
-        k = c;
       }
+      if (bestK < 0) throw new RangeError('points: ear clipping found no convex corner (is the polygon degenerate?)');
+      k = bestK;
     }
+    const a = prev[k];
+    const c = next[k];
+    triangles.push([corners[a], corners[k], corners[c]]);
+    diagonals.push([corners[a], corners[c]]);
+    next[a] = c;
+    prev[c] = a;
+    alive[k] = 0;
+    left--;
+    misses = 0;
+    k = c;
   }
   const a = k;
   triangles.push([corners[prev[a]], corners[a], corners[next[a]]]);
