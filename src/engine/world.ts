@@ -1,7 +1,7 @@
 import { handleSlot, HandleRegistry, MAX_SLOTS, type Handle, type RegistrySnapshot } from './handles.js';
 import { ParticleFlag, ParticleStore } from './particles.js';
 import type { Column, Table } from './table.js';
-import { DistanceConstraints, solveDistances } from './constraints/distance.js';
+import { breakOverstretched, DistanceConstraints, solveDistances } from './constraints/distance.js';
 import { AngleConstraints, signedAngle, solveAngles } from './constraints/angle.js';
 import { PinConstraints, placeRigidPins, solveSoftPins } from './constraints/pin.js';
 import { AreaConstraints, loopArea, solveAreas } from './constraints/area.js';
@@ -133,6 +133,11 @@ export interface DistanceOptions {
   maxLength?: number;
   /** Inverse stiffness (length per unit force); 0 = rigid. Default 0. */
   compliance?: number;
+  /**
+   * Tearing: the link breaks for good once stretched past maxLength by this fraction (0.5 = half again as long).
+   * Default: unbreakable. Needs a finite maxLength.
+   */
+  breakStrain?: number;
 }
 
 export interface AngleOptions {
@@ -204,8 +209,9 @@ const DEFAULTS = {
  * The headless engine: Verlet particles, constraints relaxed by Gauss–Seidel (XPBD) iterations inside substeps,
  * bodies as groups of particles and constraints. No DOM: runs in Node, a worker or the main thread.
  *
- * A step is a fixed list of phases per substep: accelerate → integrate → place pins → relax constraints and
- * bounds → derive velocities.
+ * A step is detect collisions (broad phase → narrow phase), then a fixed list of phases per substep: accelerate →
+ * integrate → place pins → relax constraints, contacts and bounds → derive velocities → contact velocities; then
+ * break overstretched links → collision events → sleep.
  */
 export class World {
   readonly particles = new ParticleStore();
@@ -217,6 +223,14 @@ export class World {
   readonly grabs = new GrabConstraints();
   /** Begin/end collision events of the last step. */
   readonly events = new CollisionEvents();
+  /** Handles of the distance constraints that broke in the last step (see DistanceOptions.breakStrain). */
+  readonly breaks = { count: 0, handles: new Float64Array(16) };
+  private hasBreakableLinks = false;
+  private readonly recordBreak = (row: number): void => {
+    const b = this.breaks;
+    if (b.count === b.handles.length) b.handles = grown(b.handles, b.count * 2);
+    b.handles[b.count++] = this.constraintIds.handleOf(this.distances.slot[row]);
+  };
   private readonly eventTracker = new EventTracker();
   private readonly sleep = new Sleep();
   /** Bodies or constraints changed: the sleep bookkeeping needs rebuilding. */
@@ -572,7 +586,10 @@ export class World {
     const maxLength = options.maxLength === undefined ? length : nonNegativeOrInfinity('maxLength', options.maxLength);
     if (minLength > maxLength) throw new RangeError(`minLength (${minLength}) must be <= maxLength (${maxLength})`);
     const compliance = nonNegative('compliance', options.compliance ?? 0);
-    const row = this.distances.pushValues({ a: ia, b: ib, minLength, maxLength, compliance });
+    const breakStrain = options.breakStrain === undefined ? 0 : positive('breakStrain', options.breakStrain);
+    if (breakStrain > 0 && !(maxLength > 0 && maxLength < Infinity)) throw new RangeError(`breakStrain needs a finite, positive maxLength, got ${maxLength}`);
+    const row = this.distances.pushValues({ a: ia, b: ib, minLength, maxLength, compliance, breakStrain });
+    if (breakStrain > 0) this.hasBreakableLinks = true;
     return this.registerConstraint(Kind.Distance, this.distances, row);
   }
 
@@ -691,6 +708,11 @@ export class World {
     const p = this.particles;
     const d = Math.sqrt((p.x[t.b[row]] - p.x[t.a[row]]) ** 2 + (p.y[t.b[row]] - p.y[t.a[row]]) ** 2);
     return d > t.maxLength[row] ? d - t.maxLength[row] : d < t.minLength[row] ? t.minLength[row] - d : 0;
+  }
+
+  /** Whether a distance constraint made with breakStrain has broken (it then no longer acts). */
+  isBroken(handle: Handle): boolean {
+    return this.distances.broken[this.constraintRowOf(handle, Kind.Distance, 'distance constraint')] === 1;
   }
 
   /** The largest relative stretch |d − L| / L over all distance constraints with L > 0 (0 when none). */
@@ -1061,6 +1083,7 @@ export class World {
     if (this.settled) {
       // Everything sleeps: nothing moves, nothing to compute.
       this.events.count = 0;
+      this.breaks.count = 0;
       this.time += dt;
       this.stepCount++;
       return;
@@ -1079,6 +1102,8 @@ export class World {
       this.timings.solve = performance.now() - t1;
     }
     this.anchors.store(this.contacts);
+    this.breaks.count = 0;
+    if (this.hasBreakableLinks) breakOverstretched(this.distances, this.particles, this.recordBreak);
     const bodySlots = this.bodyIds.high;
     this.eventTracker.update(this.contacts, this.contacts.touched, this.bodyHandleOf, this.bodyAlive, this.events);
     this.sleep.update(bodySlots, this.bodyIds.alive, this.bodyParticlesOf, this.particles, this.contacts, this.contacts.touched, dt);
@@ -1340,6 +1365,8 @@ export class World {
     this.accumulator = s.accumulator;
     const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs];
     tables.forEach((t, k) => t.restore(s.tables[k].columns, s.tables[k].count));
+    this.hasBreakableLinks = this.distances.breakStrain.some((v) => v > 0);
+    this.breaks.count = 0;
     this.areas.pool = new Int32Array(Math.max(64, s.areaPool.length));
     this.areas.pool.set(s.areaPool);
     this.areas.poolUsed = s.areaPool.length;

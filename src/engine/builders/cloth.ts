@@ -21,8 +21,13 @@ export interface ClothOptions extends BodyOptions {
   bend?: number | null;
   pins?: ClothPins;
   radius?: number;
-  /** Long-range tethers from each particle to the nearest pin (see addTethers). Default true. */
+  /** Long-range tethers from each particle to the nearest pin (see addTethers). Default true, except when tearing. */
   tethers?: boolean;
+  /**
+   * Tearing: a link stretched past its length by this fraction breaks (0.3 = 30% longer). Default: never. Tethers
+   * are then off by default, since they would keep a torn-off piece hanging from its pin.
+   */
+  tear?: number;
 }
 
 /** A rectangular cloth of columns × rows particles, row-major from the top-left corner. */
@@ -37,6 +42,7 @@ export function createCloth(world: World, o: ClothOptions): Built {
   const bend = o.bend == null ? null : nonNegative('bend', o.bend);
   const pinned = pinnedColumns(o.pins ?? 'top', columns);
   const radius = nonNegative('radius', o.radius ?? 0);
+  const breakStrain = o.tear === undefined ? undefined : positive('tear', o.tear);
   return transactional(world, (particles, constraints) => {
     for (let r = 0; r < rows; r++) {
       for (let c = 0; c < columns; c++) {
@@ -44,7 +50,7 @@ export function createCloth(world: World, o: ClothOptions): Built {
       }
     }
     const at = (c: number, r: number) => particles[r * columns + c];
-    const link = (a: number, b: number, compliance: number) => constraints.push(world.addDistance(a, b, { compliance }));
+    const link = (a: number, b: number, compliance: number) => constraints.push(world.addDistance(a, b, { compliance, breakStrain }));
     for (let r = 0; r < rows; r++) {
       for (let c = 0; c < columns; c++) {
         if (c + 1 < columns) link(at(c, r), at(c + 1, r), structural);
@@ -68,7 +74,7 @@ export function createCloth(world: World, o: ClothOptions): Built {
       }
     }
     for (const c of pinned) constraints.push(world.addPin(at(c, 0)));
-    if ((o.tethers ?? true) && structural === 0) {
+    if ((o.tethers ?? breakStrain === undefined) && structural === 0) {
       const rest = (a: number, b: number) => spacing * Math.hypot((a % columns) - (b % columns), Math.floor(a / columns) - Math.floor(b / columns));
       addTethers(world, particles, pinned, rest, constraints);
     }

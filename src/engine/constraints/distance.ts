@@ -9,13 +9,17 @@ import type { ParticleStore } from '../particles.js';
  * iteration counts.
  */
 export class DistanceConstraints extends Table {
-  readonly columns = ['a', 'b', 'minLength', 'maxLength', 'compliance', 'lambda', 'slot'] as const;
+  readonly columns = ['a', 'b', 'minLength', 'maxLength', 'compliance', 'lambda', 'breakStrain', 'broken', 'slot'] as const;
   a = new Int32Array(16);
   b = new Int32Array(16);
   minLength = new Float64Array(16);
   maxLength = new Float64Array(16);
   compliance = new Float64Array(16);
   lambda = new Float64Array(16);
+  /** Stretch (d − maxLength) / maxLength beyond which the link breaks; 0 = unbreakable. */
+  breakStrain = new Float64Array(16);
+  /** 1 once broken: the limits are then open, [0, ∞), and the link no longer acts. */
+  broken = new Uint8Array(16);
   /** Handle slot owning this row (for swap-remove bookkeeping). */
   slot = new Int32Array(16);
 }
@@ -66,5 +70,27 @@ export function solveDistances(c: DistanceConstraints, p: ParticleStore, h2: num
     y[ia] -= wa * s * dy;
     x[ib] += wb * s * dx;
     y[ib] += wb * s * dy;
+  }
+}
+
+/**
+ * Tearing (seed 2.7's cloth, torn by a strain threshold): every breakable link stretched past its breakStrain breaks
+ * for good (until the scene is rebuilt or restored). Calls onBreak(row) for each; run once per step, after the solve.
+ */
+export function breakOverstretched(c: DistanceConstraints, p: ParticleStore, onBreak: (row: number) => void): void {
+  const { a, b, maxLength, breakStrain } = c;
+  const { x, y } = p;
+  for (let i = 0, n = c.count; i < n; i++) {
+    const limit = breakStrain[i];
+    if (limit === 0) continue;
+    const dx = x[b[i]] - x[a[i]];
+    const dy = y[b[i]] - y[a[i]];
+    const reach = maxLength[i] * (1 + limit);
+    if (dx * dx + dy * dy <= reach * reach) continue;
+    c.minLength[i] = 0;
+    c.maxLength[i] = Infinity;
+    c.breakStrain[i] = 0;
+    c.broken[i] = 1;
+    onBreak(i);
   }
 }
