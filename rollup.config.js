@@ -1,8 +1,10 @@
 // Builds (npm run build):
 //  dist/engine/index.js             the headless engine, no dependencies (physics-elements/engine)
 //  dist/lib/index.js                the element library, lit/comlink/p5 left to the consumer's bundler, worker as its own chunk
-//  dist/physics-elements.bundle.js  one self-contained file for <script type="module" src="...">, worker inlined as a blob: URL
+//  dist/physics-elements.bundle.js  one self-contained file for <script type="module" src="...">, worker inlined as a blob: URL;
+//                                   exports the elements, not the headless engine's API (that is dist/engine)
 //  dist/physics-elements.no-p5.js   the same without p5 (size report only; needs an import map for 'p5')
+// Sizes: npm run sizes (scripts/sizes.mjs).
 import { rollup } from 'rollup';
 import nodeResolve from '@rollup/plugin-node-resolve';
 import terser from '@rollup/plugin-terser';
@@ -87,12 +89,21 @@ function worker({ inline = false } = {}) {
 const SHARED_ENGINE = ['src/engine/index.ts', 'src/worker/engine-host.ts', 'src/worker/publishers.ts', 'src/worker/triple-buffer.ts'].map((f) => resolve(root, f));
 const ENGINE_FACTORY = '\0engine-factory';
 const COMLINK_FROM_FACTORY = '\0comlink-from-engine-factory';
+const NO_ENGINE_API = '\0no-engine-api';
+const ENTRY = resolve(root, 'src/index.ts');
+const ENGINE_INDEX = resolve(root, 'src/engine/index.ts');
 
 /**
- * One copy of the engine in the single-file build. src/worker/engine-bundle.ts (the worker's code and the engine's
- * exports) is bundled once and wrapped in a function: the page calls it for the headless engine and the main-thread
+ * One copy of the engine in the single-file build. src/worker/engine-bundle.ts (the worker's code and what the page
+ * takes from it) is bundled once and wrapped in a function: the page calls it for the headless engine and the main-thread
  * fallback (every import of a SHARED_ENGINE module resolves to its exports), and the worker is a blob: URL of the same
  * function's source text. Before, the engine was in the file twice (the worker's string and the page's code).
+ *
+ * The function returns only what src/worker/engine-bundle.ts exports (what page code imports from those modules), so
+ * the rest of the engine is tree-shaken. For that the single-file builds do not re-export the headless engine's API
+ * (src/index.ts's `export * from './engine/index.js'` becomes an empty module here): a page that wants it imports
+ * physics-elements/engine. A page module that imports an engine name the function does not return fails the build
+ * ("... is not exported by \0engine-factory"): add that name to engine-bundle.ts.
  */
 function sharedEngine() {
   let factory = null;
@@ -118,9 +129,12 @@ function sharedEngine() {
       if (source === COMLINK_FROM_FACTORY) return COMLINK_FROM_FACTORY;
       if (source === 'comlink' && importer !== ENGINE_FACTORY) return COMLINK_FROM_FACTORY;
       if (!importer || importer === ENGINE_FACTORY || !source.startsWith('.') || !source.endsWith('.js')) return null;
-      return SHARED_ENGINE.includes(resolve(dirname(importer), source.slice(0, -3) + '.ts')) ? ENGINE_FACTORY : null;
+      const target = resolve(dirname(importer), source.slice(0, -3) + '.ts');
+      if (importer === ENTRY && target === ENGINE_INDEX) return NO_ENGINE_API;
+      return SHARED_ENGINE.includes(target) ? ENGINE_FACTORY : null;
     },
     async load(id) {
+      if (id === NO_ENGINE_API) return 'export {};';
       if (id === COMLINK_FROM_FACTORY) {
         const names = Object.keys(await import('comlink')).filter((n) => n !== 'default');
         return `import { __comlink } from ${JSON.stringify(ENGINE_FACTORY)};\n${names.map((n) => `export const ${n} = __comlink.${n};`).join('\n')}`;

@@ -1,0 +1,88 @@
+// Sizes of the builds in dist/ (run `npm run build` first), raw and `gzip -9`, in KB = 1024 bytes. Prints the README's
+// table (`node scripts/sizes.mjs`), or the numbers as JSON (`--json`).
+//
+// - The single files are measured as they are.
+// - The ESM library is measured twice: as its files (what a page without a bundler fetches with an import map:
+//   dist/lib/index.js, every chunk it imports and the worker chunk), and as an app's bundler ships it for
+//   `import 'physics-elements'` (Rollup + terser, tree-shaken, package.json's sideEffects honoured; lit, comlink and p5
+//   left out). The second is "engine + elements": the engine once (the page holds it for the main-thread fallback),
+//   the elements, the renderer and the worker client; not the worker chunk, which runs the same engine.
+// - lit + comlink as the elements use them, and p5, for comparison.
+import { execFileSync } from 'node:child_process';
+import { existsSync, readFileSync } from 'node:fs';
+import { dirname, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { rollup } from 'rollup';
+import nodeResolve from '@rollup/plugin-node-resolve';
+import terser from '@rollup/plugin-terser';
+
+const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+const dist = resolve(root, 'dist');
+const gzip = (bytes) => execFileSync('gzip', ['-9c'], { input: bytes, maxBuffer: 1 << 28 }).length;
+
+function fileSize(file) {
+  if (!existsSync(file)) throw new Error(`${file} is missing: run npm run build`);
+  const bytes = readFileSync(file);
+  return { file: file.slice(root.length + 1), raw: bytes.length, gzip: gzip(bytes) };
+}
+
+/** A chunk of dist/lib and the chunks it loads: static imports, and worker URLs (new URL('x.js', import.meta.url)). */
+function libFiles(entry) {
+  const seen = new Set();
+  const visit = (file) => {
+    if (seen.has(file)) return;
+    seen.add(file);
+    const code = readFileSync(file, 'utf8');
+    const deps = [
+      ...[...code.matchAll(/(?:\bfrom|\bimport)\s*["'](\.\.?\/[^"']+)["']/g)].map((m) => m[1]),
+      ...[...code.matchAll(/new URL\(\s*["']([^"':]+\.js)["']\s*,\s*import\.meta\.url\s*\)/g)].map((m) => m[1]),
+    ];
+    for (const d of deps) visit(resolve(dirname(file), d));
+  };
+  visit(entry);
+  return [...seen];
+}
+
+/** Bundles `code` (an app's entry module) with Rollup + terser as an app would; `external` stays out. */
+async function bundled(name, code, external = []) {
+  const id = '\0app';
+  const bundle = await rollup({
+    input: id,
+    external,
+    onwarn: () => {},
+    plugins: [{ name: 'app', resolveId: (s) => (s === id ? id : null), load: (i) => (i === id ? code : null) }, nodeResolve({ browser: true }), terser()],
+  });
+  const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
+  await bundle.close();
+  const bytes = Buffer.from(output[0].code);
+  return { file: name, raw: bytes.length, gzip: gzip(bytes) };
+}
+
+const rows = [];
+const add = (name, files) => rows.push({ name, files, raw: files.reduce((s, p) => s + p.raw, 0), gzip: files.reduce((s, p) => s + p.gzip, 0) });
+
+add('single file, with p5 (the CMS embed)', [fileSize(resolve(dist, 'physics-elements.bundle.js'))]);
+add('single file, without p5 (lit and comlink inside; p5 from an import map)', [fileSize(resolve(dist, 'physics-elements.no-p5.js'))]);
+add('ESM library, its files as a page loads them unbundled (lit, comlink, p5 from an import map)', libFiles(resolve(dist, 'lib/index.js')).map(fileSize));
+const lib = JSON.stringify(resolve(dist, 'lib/index.js'));
+add('**engine + elements**: the ESM library in an app\'s bundle (`import \'physics-elements\'`), without lit, comlink and p5', [
+  await bundled('app bundle', `import ${lib};`, [/^lit/, /^@lit/, 'comlink', 'p5']),
+]);
+add('headless engine only', [fileSize(resolve(dist, 'engine/index.js'))]);
+// What the elements import from lit and comlink (src/ imports lit, lit/decorators.js, lit/directives/if-defined.js).
+const deps = 'export * from "lit"; export * from "lit/decorators.js"; export * from "lit/directives/if-defined.js"; export * as Comlink from "comlink";';
+add('lit + comlink (for comparison)', [await bundled('lit + comlink', deps)]);
+const p5 = resolve(root, 'node_modules/p5/lib/p5.esm.min.js');
+if (existsSync(p5)) add('p5 itself (for comparison)', [fileSize(p5)]);
+
+if (process.argv.includes('--json')) {
+  console.log(JSON.stringify(rows, null, 2));
+} else {
+  const kb = (n) => (n / 1024).toFixed(1);
+  const many = (r, key) => (r.files.length > 1 ? ` (${r.files.map((p) => kb(p[key])).join(' + ')})` : '');
+  console.log('| build | file(s) | raw | gzip |\n| --- | --- | ---: | ---: |');
+  for (const r of rows) {
+    const files = r.files.map((p) => (p.file.includes('/') ? '`' + p.file.replace(/^node_modules\//, '').replace(/-[\w-]{8}\.js$/, '-[hash].js') + '`' : p.file)).join(' + ');
+    console.log(`| ${r.name} | ${files} | ${kb(r.raw)} KB${many(r, 'raw')} | **${kb(r.gzip)} KB**${many(r, 'gzip')} |`);
+  }
+}
