@@ -57,25 +57,34 @@ export class Contacts extends Table {
   solvedNy = new Float64Array(16);
   solvedAlpha = new Float64Array(16);
 
-  add(v: number, e0: number, e1: number, radius: number, friction: number, restitution: number, bodyA: number, bodyB: number, nx: number, ny: number, depth: number): void {
+  /**
+   * The next contact's real-valued fields, filled by the caller before add(): radius, friction, restitution, normal
+   * x, y, depth. (Passed in this array because doubles passed to a call that is not inlined are boxed, and the
+   * narrow phase adds thousands of contacts per step.)
+   */
+  readonly next = new Float64Array(6);
+
+  /** Appends a contact of vertex (or particle) v against edge e0–e1 (or particle e0 when e1 < 0), with `next`. */
+  add(v: number, e0: number, e1: number, bodyA: number, bodyB: number): void {
     if (this.count === this.v.length) this.reserve(1);
     const i = this.count++;
+    const f = this.next;
     this.v[i] = v;
     this.e0[i] = e0;
     this.e1[i] = e1;
-    this.radius[i] = radius;
-    this.friction[i] = friction;
-    this.restitution[i] = restitution;
+    this.radius[i] = f[0];
+    this.friction[i] = f[1];
+    this.restitution[i] = f[2];
     this.bodyA[i] = bodyA;
     this.bodyB[i] = bodyB;
     this.lambda[i] = 0;
-    this.nx[i] = nx;
-    this.ny[i] = ny;
-    this.depth[i] = depth;
+    this.nx[i] = f[3];
+    this.ny[i] = f[4];
+    this.depth[i] = f[5];
     this.normalSpeed[i] = 0;
     this.anchor[i] = NaN;
     this.touched[i] = 0;
-    this.allowance[i] = depth > 0 ? depth : 0;
+    this.allowance[i] = f[5] > 0 ? f[5] : 0;
   }
 
   /** Start of a substep: no correction yet, and each old overlap may shrink by up to `maxPush` more. */
@@ -228,50 +237,46 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
 const BOUNCE_THRESHOLD = 0.5;
 
 /**
- * Relative normal velocity of a contact's point: vertex minus the edge point under it (or particle e0).
- * Negative when approaching. (nx, ny) is filled into `normal`.
+ * Records each contact's approach speed at the start of the step (restitution needs the speed before impact): the
+ * relative normal velocity of the contact's point, vertex minus the edge point under it (or particle e0), negative
+ * when approaching. Written in place rather than by a helper returning a number: a non-inlined call returns its
+ * double boxed, and this runs for every contact every step.
  */
-function normalVelocity(c: Contacts, p: ParticleStore, i: number, out: Float64Array): number {
-  const { x, y, vx, vy } = p;
-  const iv = c.v[i];
-  const i0 = c.e0[i];
-  const i1 = c.e1[i];
-  if (i1 >= 0) {
-    const ex = x[i1] - x[i0];
-    const ey = y[i1] - y[i0];
-    const len2 = ex * ex + ey * ey;
-    if (len2 < 1e-24) return 0;
-    const inv = 1 / Math.sqrt(len2);
-    let alpha = ((x[iv] - x[i0]) * ex + (y[iv] - y[i0]) * ey) / len2;
-    alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
-    out[0] = ey * inv;
-    out[1] = -ex * inv;
-    out[2] = alpha;
-    const rvx = vx[iv] - (1 - alpha) * vx[i0] - alpha * vx[i1];
-    const rvy = vy[iv] - (1 - alpha) * vy[i0] - alpha * vy[i1];
-    return rvx * out[0] + rvy * out[1];
-  }
-  let nx = x[iv] - x[i0];
-  let ny = y[iv] - y[i0];
-  const d = Math.sqrt(nx * nx + ny * ny);
-  if (d > 1e-12) {
-    nx /= d;
-    ny /= d;
-  } else {
-    nx = c.nx[i];
-    ny = c.ny[i];
-  }
-  out[0] = nx;
-  out[1] = ny;
-  out[2] = 0;
-  return (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
-}
-
-const scratch = new Float64Array(3);
-
-/** Records each contact's approach speed at the start of the step (restitution needs the speed before impact). */
 export function recordApproachSpeeds(c: Contacts, p: ParticleStore): void {
-  for (let i = 0, n = c.count; i < n; i++) c.normalSpeed[i] = normalVelocity(c, p, i, scratch);
+  const { x, y, vx, vy } = p;
+  const { v, e0, e1, normalSpeed } = c;
+  for (let i = 0, n = c.count; i < n; i++) {
+    const iv = v[i];
+    const i0 = e0[i];
+    const i1 = e1[i];
+    if (i1 >= 0) {
+      const ex = x[i1] - x[i0];
+      const ey = y[i1] - y[i0];
+      const len2 = ex * ex + ey * ey;
+      if (len2 < 1e-24) {
+        normalSpeed[i] = 0;
+        continue;
+      }
+      const inv = 1 / Math.sqrt(len2);
+      let alpha = ((x[iv] - x[i0]) * ex + (y[iv] - y[i0]) * ey) / len2;
+      alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+      const rvx = vx[iv] - (1 - alpha) * vx[i0] - alpha * vx[i1];
+      const rvy = vy[iv] - (1 - alpha) * vy[i0] - alpha * vy[i1];
+      normalSpeed[i] = (rvx * ey - rvy * ex) * inv;
+      continue;
+    }
+    let nx = x[iv] - x[i0];
+    let ny = y[iv] - y[i0];
+    const d = Math.sqrt(nx * nx + ny * ny);
+    if (d > 1e-12) {
+      nx /= d;
+      ny /= d;
+    } else {
+      nx = c.nx[i];
+      ny = c.ny[i];
+    }
+    normalSpeed[i] = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
+  }
 }
 
 /**

@@ -45,33 +45,37 @@ export class NarrowPhase {
         a = b;
         b = t;
       }
-      const margin = motion[a] + motion[b] + slop;
-      const mu = Math.sqrt(c.friction[a] * c.friction[b]);
-      const e = Math.max(c.restitution[a], c.restitution[b]);
+      // The pair's reals go by typed arrays, not arguments: doubles passed to a call that is not inlined are boxed.
+      this.margin[0] = motion[a] + motion[b] + slop;
+      out.next[1] = Math.sqrt(c.friction[a] * c.friction[b]);
+      out.next[2] = Math.max(c.restitution[a], c.restitution[b]);
       const ka = c.kind[a];
       const kb = c.kind[b];
       if (ka === ColliderKind.Polygon && kb === ColliderKind.Polygon) {
         for (let i = c.partStart[a], iEnd = i + c.partCount[a]; i < iEnd; i++) {
           for (let j = c.partStart[b], jEnd = j + c.partCount[b]; j < jEnd; j++) {
-            this.polygons(c, p, i, j, a, b, margin, mu, e, out);
+            this.polygons(c, p, i, j, a, b, out);
           }
         }
       } else if (ka === ColliderKind.Polygon) {
         const particles = c.particles[b];
         for (let q = 0; q < particles.length; q++) {
           const v = particles[q];
-          for (let i = c.partStart[a], iEnd = i + c.partCount[a]; i < iEnd; i++) this.circlePolygon(c, p, i, v, a, b, margin, mu, e, out);
+          for (let i = c.partStart[a], iEnd = i + c.partCount[a]; i < iEnd; i++) this.circlePolygon(c, p, i, v, a, b, out);
         }
       } else {
         const pa = c.particles[a];
         const pb = c.particles[b];
-        for (let q = 0; q < pa.length; q++) for (let r = 0; r < pb.length; r++) this.circles(p, pa[q], pb[r], a, b, margin, mu, e, out);
+        for (let q = 0; q < pa.length; q++) for (let r = 0; r < pb.length; r++) this.circles(p, pa[q], pb[r], a, b, out, false);
       }
     }
   }
 
-  /** The largest over A's edges of the smallest signed distance of B's vertices to that edge; the edge in this.edge. */
-  private maxSeparation(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array): number {
+  /**
+   * The largest over A's edges of the smallest signed distance of B's vertices to that edge, into this.separation[0];
+   * the edge in this.edge. (Not returned: a non-inlined call would box the double on every pair test.)
+   */
+  private maxSeparation(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array): void {
     let best = -Infinity;
     let bestEdge = 0;
     for (let i = 0; i < aCount; i++) {
@@ -94,19 +98,25 @@ export class NarrowPhase {
       }
     }
     this.edge = bestEdge;
-    return best;
+    this.separation[0] = best;
   }
 
+  private readonly separation = new Float64Array(1);
+  /** The current pair's contact margin (see run). */
+  private readonly margin = new Float64Array(1);
   private edgeA = 0;
   private edgeB = 0;
   private flip = false;
 
   /** SAT: the reference edge is the axis of least penetration (or largest gap). False when apart by > margin. */
-  private satReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array, margin: number): boolean {
-    const sepA = this.maxSeparation(vs, aStart, aCount, bStart, bCount, x, y);
+  private satReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array): boolean {
+    const margin = this.margin[0];
+    this.maxSeparation(vs, aStart, aCount, bStart, bCount, x, y);
+    const sepA = this.separation[0];
     if (sepA > margin) return false;
     this.edgeA = this.edge;
-    const sepB = this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
+    this.maxSeparation(vs, bStart, bCount, aStart, aCount, x, y);
+    const sepB = this.separation[0];
     if (sepB > margin) return false;
     this.edgeB = this.edge;
     // Prefer A's edge unless B's is clearly better, so the choice does not flip between steps on near-ties
@@ -116,7 +126,8 @@ export class NarrowPhase {
   }
 
   /** GJK: the normal from the distance (apart) or EPA (overlapping), then the edges best aligned with it. */
-  private gjkReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array, margin: number): boolean {
+  private gjkReference(vs: Int32Array, aStart: number, aCount: number, bStart: number, bCount: number, x: Float64Array, y: Float64Array): boolean {
+    const margin = this.margin[0];
     const va = this.viewA;
     const vb = this.viewB;
     va.xs = vb.xs = x;
@@ -139,7 +150,7 @@ export class NarrowPhase {
       ny = this.penetration.normalY;
     } else {
       // Touching exactly, with no direction to go by: SAT decides.
-      return this.satReference(vs, aStart, aCount, bStart, bCount, x, y, margin);
+      return this.satReference(vs, aStart, aCount, bStart, bCount, x, y);
     }
     const alignA = this.bestAligned(vs, aStart, aCount, x, y, nx, ny);
     this.edgeA = this.edge;
@@ -166,15 +177,18 @@ export class NarrowPhase {
     return best;
   }
 
-  private polygons(c: Colliders, p: ParticleStore, partA: number, partB: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts): void {
+  private polygons(c: Colliders, p: ParticleStore, partA: number, partB: number, bodyA: number, bodyB: number, out: Contacts): void {
     this.tests++;
+    const margin = this.margin[0];
+    const f = out.next;
+    f[0] = 0;
     const vs = c.vertices;
     const { x, y } = p;
     const aStart = c.partVertexStart[partA];
     const aCount = c.partVertexCount[partA];
     const bStart = c.partVertexStart[partB];
     const bCount = c.partVertexCount[partB];
-    const found = this.mode === 'gjk' ? this.gjkReference(vs, aStart, aCount, bStart, bCount, x, y, margin) : this.satReference(vs, aStart, aCount, bStart, bCount, x, y, margin);
+    const found = this.mode === 'gjk' ? this.gjkReference(vs, aStart, aCount, bStart, bCount, x, y) : this.satReference(vs, aStart, aCount, bStart, bCount, x, y);
     if (!found) return;
     const flip = this.flip;
     const edgeA = this.edgeA;
@@ -224,7 +238,12 @@ export class NarrowPhase {
       const along = (x[q] - x[r0]) * tx + (y[q] - y[r0]) * ty;
       if (along >= -tolerance && along <= rlen + tolerance) {
         const sep = (x[q] - x[r0]) * nx + (y[q] - y[r0]) * ny;
-        if (sep <= margin) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+        if (sep <= margin) {
+          f[3] = snx;
+          f[4] = sny;
+          f[5] = -sep;
+          out.add(q, r0, r1, refBody, incBody);
+        }
         continue;
       }
       const corner = along < 0 ? r0 : r1;
@@ -237,7 +256,12 @@ export class NarrowPhase {
       const alpha = ((x[corner] - x[q0]) * qex + (y[corner] - y[q0]) * qey) / qlen2;
       if (alpha < 0 || alpha > 1) continue;
       const sep = ((x[corner] - x[q0]) * qey - (y[corner] - y[q0]) * qex) * qinv;
-      if (sep <= margin) out.add(corner, q0, q1, 0, mu, e, incBody, refBody, -snx, -sny, -sep);
+      if (sep <= margin) {
+        f[3] = -snx;
+        f[4] = -sny;
+        f[5] = -sep;
+        out.add(corner, q0, q1, incBody, refBody);
+      }
     }
     // A body closing faster than about half its size per step could bring its other vertices through the reference
     // edge before its frame catches up: give them speculative contacts too.
@@ -247,14 +271,20 @@ export class NarrowPhase {
         if (q === q0 || q === q1) continue;
         const along = (x[q] - x[r0]) * tx + (y[q] - y[r0]) * ty;
         const sep = (x[q] - x[r0]) * nx + (y[q] - y[r0]) * ny;
-        if (along >= 0 && along <= rlen && sep <= margin) out.add(q, r0, r1, 0, mu, e, refBody, incBody, snx, sny, -sep);
+        if (along >= 0 && along <= rlen && sep <= margin) {
+          f[3] = snx;
+          f[4] = sny;
+          f[5] = -sep;
+          out.add(q, r0, r1, refBody, incBody);
+        }
       }
     }
   }
 
   /** A particle with a radius against a convex part: an edge contact in an edge's region, a corner contact otherwise. */
-  private circlePolygon(c: Colliders, p: ParticleStore, part: number, v: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts): void {
+  private circlePolygon(c: Colliders, p: ParticleStore, part: number, v: number, bodyA: number, bodyB: number, out: Contacts): void {
     this.tests++;
+    const margin = this.margin[0];
     const vs = c.vertices;
     const { x, y, radius } = p;
     const start = c.partVertexStart[part];
@@ -282,18 +312,27 @@ export class NarrowPhase {
     const alpha = ((x[v] - x[i0]) * ex + (y[v] - y[i0]) * ey) / len2;
     if (best <= 0 || (alpha >= 0 && alpha <= 1)) {
       const inv = 1 / Math.sqrt(len2);
-      out.add(v, i0, i1, r, mu, e, bodyA, bodyB, ey * inv, -ex * inv, r - best);
+      const f = out.next;
+      f[0] = r;
+      f[3] = ey * inv;
+      f[4] = -ex * inv;
+      f[5] = r - best;
+      out.add(v, i0, i1, bodyA, bodyB);
       return;
     }
     const corner = alpha < 0 ? i0 : i1;
-    this.circles(p, corner, v, bodyA, bodyB, margin, mu, e, out, r);
+    this.circles(p, corner, v, bodyA, bodyB, out, true);
   }
 
-  /** Two particles kept radius apart (their radii summed unless given). Point–point contact: v = b's, e0 = a's. */
-  private circles(p: ParticleStore, ia: number, ib: number, bodyA: number, bodyB: number, margin: number, mu: number, e: number, out: Contacts, radius = -1): void {
+  /**
+   * Two particles kept their radii summed apart, or b's radius alone when a is a polygon's corner. Point–point
+   * contact: v = b's, e0 = a's.
+   */
+  private circles(p: ParticleStore, ia: number, ib: number, bodyA: number, bodyB: number, out: Contacts, corner: boolean): void {
     this.tests++;
     const { x, y } = p;
-    const r = radius >= 0 ? radius : p.radius[ia] + p.radius[ib];
+    const margin = this.margin[0];
+    const r = corner ? p.radius[ib] : p.radius[ia] + p.radius[ib];
     const dx = x[ib] - x[ia];
     const dy = y[ib] - y[ia];
     const reach = r + margin;
@@ -302,6 +341,11 @@ export class NarrowPhase {
     const d = Math.sqrt(d2);
     const nx = d > 1e-12 ? dx / d : 0;
     const ny = d > 1e-12 ? dy / d : -1;
-    out.add(ib, ia, -1, r, mu, e, bodyA, bodyB, nx, ny, r - d);
+    const f = out.next;
+    f[0] = r;
+    f[3] = nx;
+    f[4] = ny;
+    f[5] = r - d;
+    out.add(ib, ia, -1, bodyA, bodyB);
   }
 }
