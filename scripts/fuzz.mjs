@@ -30,8 +30,10 @@ for (let seed = from; seed < from + scenes; seed++) {
   } catch (error) {
     failures.push({ seed, problem: `threw ${error}` });
   }
+  // Say a failure as soon as it is found: a long run may be stopped before the end.
+  if (failures.length && failures[failures.length - 1].seed === seed) console.log(`seed ${seed}: ${failures[failures.length - 1].problem}`);
   if ((seed - from + 1) % 100 === 0) console.log(`${seed - from + 1} scenes, ${failures.length} failing, ${((performance.now() - t0) / 1000).toFixed(0)} s`);
 }
-for (const f of failures) console.log(`seed ${f.seed}: ${f.problem}`);
+if (failures.length) console.log(`failing seeds: ${failures.map((f) => f.seed).join(' ')}`);
 console.log(`fuzz: ${scenes} scenes × ${steps} steps, ${failures.length} failing`);
 process.exit(failures.length ? 1 : 0);
