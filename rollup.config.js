@@ -9,7 +9,7 @@ import { rollup } from 'rollup';
 import nodeResolve from '@rollup/plugin-node-resolve';
 import terser from '@rollup/plugin-terser';
 import { transform } from 'esbuild';
-import { existsSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -38,6 +38,14 @@ function esbuildTs() {
   };
 }
 
+/**
+ * When p5 2.x is imported, the zod it bundles builds a schema and, to decide whether to compile validators to code,
+ * tries `new Function("")` in a try/catch. Under a Content-Security-Policy without 'unsafe-eval' that try fails
+ * harmlessly but the browser reports a `script-src eval` violation on every page. Those validators only run with p5's
+ * friendly errors, which the renderer turns off: in the file we ship, the try answers "no eval" without trying.
+ */
+const P5_EVAL_PROBE = 'try{return new Function(""),!0}catch(e){return!1}';
+
 /** p5 v2's package entry imports CommonJS dependencies; use its self-contained ESM build (or leave it external). */
 function p5Esm({ external = false } = {}) {
   return {
@@ -45,6 +53,12 @@ function p5Esm({ external = false } = {}) {
     resolveId(source) {
       if (source === 'p5') return external ? { id: 'p5', external: true } : P5_ESM;
       return null;
+    },
+    load(id) {
+      if (id !== P5_ESM) return null;
+      const code = readFileSync(P5_ESM, 'utf8');
+      if (code.split(P5_EVAL_PROBE).length !== 2) this.error(`p5's eval probe (${P5_EVAL_PROBE}) not found once in ${P5_ESM}: update P5_EVAL_PROBE`);
+      return code.replace(P5_EVAL_PROBE, 'return!1');
     },
   };
 }

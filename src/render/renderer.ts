@@ -99,6 +99,11 @@ export class SceneRenderer {
     const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
     const before = hooks ? hooks.length : 0;
     this.instance = new p5((s: p5) => {
+      // p5 2.x shows a loading spinner while setup runs: a fixed-position div over the page and, once per document, a
+      // <style> element in document.head, which a Content-Security-Policy without 'unsafe-inline' refuses (a
+      // violation on every page). The element shows its own loading state: mark p5's spinner as already shown (its
+      // presetup hook then does nothing; postsetup calls remove() and clears the field).
+      (s as unknown as { _loadingIndicator: { remove(): void } | null })._loadingIndicator = { remove() {} };
       s.setup = () => {
         if (this.removed) {
           // Disposed before p5 finished starting: remove() found no canvas to stop then; stop it now.
