@@ -19,6 +19,7 @@ echo "== browser tests"
 npx web-test-runner --static-logging "$@"
 echo "== gallery stories"
 node scripts/check-stories.mjs
-echo "== build, and the single-file build embedded across origins"
+echo "== build, the single-file build embedded across origins, both builds under a strict CSP"
 npm run build --silent
 node test/e2e/cross-origin.mjs
+node test/e2e/csp.mjs

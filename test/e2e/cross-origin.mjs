@@ -3,22 +3,12 @@
 // (CORS allowed, as a CDN does). <cloth-sim> and <ragdoll-sim> must run their engine in a worker (the worker is a
 // blob: URL, so the other origin does not matter), animate (the canvas changes between frames), follow a mouse drag,
 // and log no console errors. Screenshots go to artifacts/. Run after `npm run build`: node test/e2e/cross-origin.mjs
-import { createServer } from 'node:http';
-import { mkdirSync, readFileSync } from 'node:fs';
-import { dirname, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { animates, artifacts, checker, collectProblems, launch, listen, root } from './harness.mjs';
 
-const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 const bundle = readFileSync(resolve(root, 'dist/physics-elements.bundle.js'));
-const artifacts = resolve(root, 'artifacts');
-mkdirSync(artifacts, { recursive: true });
 const started = Date.now();
-
-function listen(host, handler) {
-  const server = createServer(handler);
-  return new Promise((ok) => server.listen(0, host, () => ok(server)));
-}
 
 // The "CDN": localhost, its own port, CORS for any origin (module scripts from another origin need it).
 const cdn = await listen('localhost', (req, res) => {
@@ -57,21 +47,12 @@ const site = await listen('127.0.0.1', (req, res) => {
 });
 const siteUrl = `http://127.0.0.1:${site.address().port}/`;
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROME_PATH ?? '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-});
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const browser = await launch();
+const check = checker();
+const failures = check.failures;
 try {
   const tab = await browser.newPage({ viewport: { width: 620, height: 1000 } });
-  const errors = [];
-  tab.on('console', (m) => (m.type() === 'error' || m.type() === 'warning') && errors.push(`${m.type()}: ${m.text()}`));
-  tab.on('pageerror', (e) => errors.push(`pageerror: ${e}`));
-  tab.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  const errors = collectProblems(tab);
   await tab.goto(siteUrl);
   const info = await tab.evaluate(async () => {
     await Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
@@ -88,22 +69,7 @@ try {
   check(info.fallback.mode === 'main', 'worker="none": the main-thread engine (the same engine code as the worker\'s) runs');
   check(info.cloth.transport === 'transfer', 'no cross-origin isolation: frames come as transferred ArrayBuffers');
 
-  /** Canvas pixels as a data URL, after the scene has taken `steps` more steps. */
-  const canvasAfter = (id, steps) =>
-    tab.evaluate(async ([id, steps]) => {
-      const el = document.getElementById(id);
-      const target = el.stepCount + steps;
-      const until = performance.now() + 10000;
-      while (el.stepCount < target && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
-      const drawn = el.renderedFrames;
-      while (el.renderedFrames < drawn + 2 && performance.now() < until) await new Promise((r) => requestAnimationFrame(r));
-      return el.canvas.toDataURL();
-    }, [id, steps]);
-  for (const id of ['cloth', 'ragdolls', 'fallback']) {
-    const a = await canvasAfter(id, 5);
-    const b = await canvasAfter(id, 20);
-    check(a.length > 1000 && a !== b, `#${id} animates: the canvas changes between frames`);
-  }
+  for (const id of ['cloth', 'ragdolls', 'fallback']) check(await animates(tab, id), `#${id} animates: the canvas changes between frames`);
   await tab.screenshot({ path: resolve(artifacts, 'cross-origin-1.png') });
 
   // Drag the bottom-middle of the cloth 160 px to the right with the mouse.
