@@ -1299,6 +1299,9 @@ export class World {
 
   /** The whole state as plain data (structured-cloneable: a worker can post it). */
   snapshot(): WorldSnapshot {
+    // The sleep bookkeeping (awake count) is derived when the topology is rebuilt; a snapshot taken before that (before
+    // the first step, right after an edit) would restore a stale count and freeze the world. Rebuild it now.
+    if (this.topologyDirty) this.rebuildTopology();
     const tables = [this.particles, this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs];
     return {
       sleep: this.sleep.snapshot(this.bodyIds.high, this.particles.count),
