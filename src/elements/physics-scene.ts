@@ -2,9 +2,9 @@ import { LitElement, css, html, nothing, type CSSResultGroup, type TemplateResul
 import { property, state } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { SceneRenderer, type DrawHook } from '../render/renderer.js';
-import { EngineClient } from '../worker/client.js';
+import { EngineClient, TimeoutError, WorkerDiedError } from '../worker/client.js';
 import { track } from '../worker/resources.js';
-import { EVENT, type Diagnostics, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
+import { EVENT, type Diagnostics, type FramePatch, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
 import { PhysicsBodyElement } from './body-element.js';
 import { Checker, describeElement, type Problem } from './checks.js';
 import { PhysicsLinkElement } from './link-element.js';
@@ -58,7 +58,26 @@ interface Config {
   broadphase: 'grid' | 'brute';
   narrowphase: 'sat' | 'gjk';
   bounds: 'view' | 'none';
+  maxRestarts: number;
 }
+
+// Fault recovery. A snapshot of the whole simulation is taken from the worker about once a second while it steps
+// (and after step(), reset(), restore() and the first load): a structured clone of the engine's tables, which costs
+// well under a millisecond for the scenes an embed runs and a few milliseconds for the largest, so once a second keeps
+// its cost negligible. A snapshot alone would rewind up to a second; the page also holds the newest frame, so after a
+// restart the particles are moved to where they were last drawn (velocities from the two newest frames) on top of
+// the snapshot, and the scene resumes from what the user saw. Bodies, links and parameters come from the markup,
+// which stays the source of truth: what changed after the snapshot is applied again after the restore.
+/** Milliseconds between snapshots while the scene steps. */
+const SNAPSHOT_EVERY = 1000;
+/** How often the keeper looks at the step counter (ms). */
+const KEEPER_TICK = 250;
+/** Restarts count within this window (ms); more than `max-restarts` in it and the scene gives up. */
+const RESTART_WINDOW = 60000;
+/** No new step for this long while running (ms, at least 3 fixed steps) and the worker is probed. */
+const STALL_AFTER = 1500;
+/** A probe unanswered for this long (ms, at most callTimeout) declares the worker dead. */
+const PROBE_TIMEOUT = 1000;
 
 const COLLISION_EVENTS = new Set(['physics-collision', 'physics-collision-end']);
 const ENGINE_FIELDS: Record<string, string> = { from: 'x1', to: 'x2', origin: 'x', center: 'x', structural: 'compliance', jointCompliance: 'joint-compliance' };
@@ -74,7 +93,7 @@ const ENGINE_FIELDS: Record<string, string> = { from: 'x1', to: 'x2', origin: 'x
  * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
  * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth}`, a and b are the body elements). Sent only while a listener is registered on the scene (or `collision-events` is set).
  * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`).
- * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running.
+ * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
  *
  * @csspart stage - The box that holds the canvas.
  * @csspart canvas - The p5 canvas.
@@ -197,6 +216,12 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   @property() worker = 'auto';
   /** Send collision events even with no listener on the scene itself (for listeners on ancestors). */
   @property({ type: Boolean, attribute: 'collision-events' }) collisionEvents = false;
+  /**
+   * Restarts of a dead or hung engine worker allowed within 60 s. Each fires `physics-error` ("restarting it,
+   * attempt k of n") and restores the last snapshot; one more failure within the minute stops the scene with a final
+   * `physics-error` and the error box. Default 3; 0 never restarts.
+   */
+  @property({ type: Number, attribute: 'max-restarts' }) maxRestarts = 3;
   /** How `drawHook` combines with the default drawing: "over" (default) or "replace". */
   @property({ attribute: 'draw-mode' }) drawMode = 'over';
   /**
@@ -206,6 +231,19 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   @property({ attribute: false }) drawHook: DrawHook | null = null;
 
   private client: EngineClient | null = null;
+  /** While a dead worker is replaced (and after giving up): the dead client, whose last frame stays drawn. */
+  private shown: EngineClient | null = null;
+  /** The newest snapshot and the client it came from (its frames may be laid over it). */
+  private saved: { client: EngineClient; snapshot: HostSnapshot; grab: number | null } | null = null;
+  /** performance.now() of each restart within the window. */
+  private restartTimes: number[] = [];
+  private recovering = false;
+  private gaveUp = false;
+  private keeper: ReturnType<typeof setInterval> | null = null;
+  private watchStep = -1;
+  private watchAt = 0;
+  private snapAt = 0;
+  private snapping = false;
   private renderer: SceneRenderer | null = null;
   private generation = 0;
   private loaded = false;
@@ -335,12 +373,13 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (!c) return 0;
     const count = await c.api.step(n);
     await c.frameAt(count);
+    this.keepSnapshot();
     return count;
   }
 
   /** Steps taken, as of the newest frame received. */
   get stepCount(): number {
-    return this.client?.latestStep ?? 0;
+    return (this.shown ?? this.client)?.latestStep ?? 0;
   }
 
   /** Rebuilds the scene from its markup, at time 0. */
@@ -348,6 +387,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     await this.ready;
     await this.client?.api.reset();
     await this.client?.frameAt(0);
+    this.keepSnapshot();
   }
 
   /** Where and how the engine runs, and what it holds. */
@@ -374,6 +414,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   async restore(snapshot: HostSnapshot): Promise<void> {
     await this.ready;
     await this.client?.api.restore(snapshot);
+    this.keepSnapshot();
   }
 
   /** A world point in viewport (client) coordinates, e.g. to place an overlay or synthesise pointer events. */
@@ -529,7 +570,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
 
   /** Tells the engine to step or not (paused, off screen, hidden page) and the renderer to draw or not. */
   private syncRunning(): void {
-    this.renderer?.setLooping(this.onScreen);
+    this.renderer?.setLooping(this.onScreen && !this.gaveUp);
+    this.updateKeeper();
     const c = this.client;
     if (!c || !this.loaded) return;
     const run = this.running;
@@ -570,17 +612,11 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       await this.updateComplete;
       if (gen !== this.generation || !this.isConnected) return;
       const stage = this.renderRoot.querySelector('.stage') as HTMLElement;
-      this.renderer = new SceneRenderer(stage, () => this.client);
+      this.renderer = new SceneRenderer(stage, () => this.shown ?? this.client);
       this.renderer.setLooping(this.onScreen);
       this.applyView(this.renderer, this.config());
       this.observer.observe(this.bodyContainer, { childList: true, subtree: true, attributes: true, attributeFilter: ['id'] });
-      const client = await EngineClient.start({
-        worker: this.worker === 'none' ? 'none' : 'auto',
-        timeout: PhysicsSceneElement.callTimeout,
-        createWorker: PhysicsSceneElement.workerFactory ?? undefined,
-        onEvents: (data, count) => this.dispatchCollisions(data, count),
-        onError: (message) => this.report(this, 'worker', this.worker, message),
-      });
+      const client = await this.newClient();
       if (gen !== this.generation) {
         client.dispose();
         return;
@@ -590,8 +626,9 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       this.loaded = true;
       this.runningSent = scene.running ?? null;
       const errors = await client.api.load(scene);
-      if (gen !== this.generation) return;
+      if (gen !== this.generation || this.client !== client) return;
       this.loading = false;
+      this.keepSnapshot();
       for (const e of errors) this.reportHostError(e);
       // Visibility may have changed while the scene loaded.
       this.syncRunning();
@@ -604,10 +641,189 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       if (gen === this.generation) {
         this.starting = false;
         this.loading = false;
-        // Never leave callers of ready waiting, also when the start failed.
-        this.readyResolve?.();
+        // Never leave callers of ready waiting, also when the start failed (a restart resolves its own).
+        if (!this.recovering) this.readyResolve?.();
       }
     }
+  }
+
+  /** Starts an engine whose worker's death goes to workerDied(). */
+  private async newClient(): Promise<EngineClient> {
+    let made: EngineClient | null = null;
+    made = await EngineClient.start({
+      worker: this.worker === 'none' ? 'none' : 'auto',
+      timeout: PhysicsSceneElement.callTimeout,
+      createWorker: PhysicsSceneElement.workerFactory ?? undefined,
+      onEvents: (data, count) => this.dispatchCollisions(data, count),
+      onError: (message) => this.report(this, 'worker', this.worker, message),
+      onDeath: (reason) => made && this.workerDied(made, reason),
+    });
+    return made;
+  }
+
+  // ---- fault recovery ----------------------------------------------------------------------------------------
+
+  /** The current worker died or hung: report it, then restart and restore, or give up past the cap. */
+  private workerDied(dead: EngineClient, reason: string): void {
+    if (dead !== this.client) return;
+    // What the user sees: the dead worker's last frame (or, when a restart died, the one before it).
+    const source = this.shown ?? dead;
+    const saved = this.saved;
+    const frame = saved && saved.client === source ? source.lastFrame() : null;
+    this.shown = source;
+    if (source !== dead) dead.dispose();
+    this.client = null;
+    this.loaded = false;
+    this.runningSent = null;
+    this.drag = null;
+    this.recovering = true;
+    this.updateKeeper();
+    this.runningChanged(false);
+    const now = performance.now();
+    this.restartTimes = this.restartTimes.filter((t) => now - t < RESTART_WINDOW);
+    const cap = this.config().maxRestarts;
+    if (this.restartTimes.length >= cap) {
+      // The end: the last state stays drawn (once), the error box says why, nothing is retried.
+      this.gaveUp = true;
+      this.recovering = false;
+      this.saved = null;
+      this.renderer?.setLooping(false);
+      this.report(this, 'worker', this.worker, `engine worker died (${reason}); not restarted: ${cap === 0 ? 'max-restarts is 0' : `${cap} restart${cap === 1 ? '' : 's'} within 60 s already`}, the scene is stopped`);
+      this.readyResolve?.();
+      return;
+    }
+    this.restartTimes.push(now);
+    this.report(this, 'worker', this.worker, `engine worker died (${reason}); restarting it (attempt ${this.restartTimes.length} of ${cap})`, false);
+    // Calls made meanwhile wait for the new engine.
+    this._ready = this.newReady();
+    void this.restart(this.generation, saved?.snapshot ?? null, frame, saved?.grab ?? null);
+  }
+
+  /** A new engine loaded from the markup, then the last snapshot (and frame) restored and later markup changes applied. */
+  private async restart(gen: number, snapshot: HostSnapshot | null, frame: FramePatch | null, grab: number | null): Promise<void> {
+    const client = await this.newClient();
+    if (gen !== this.generation) {
+      client.dispose();
+      return;
+    }
+    this.client = client;
+    if (client.died !== null) {
+      this.workerDied(client, client.died);
+      return;
+    }
+    try {
+      const scene = this.collect();
+      await client.api.load({ ...scene, running: false });
+      let step = 0;
+      if (snapshot) {
+        let restored = true;
+        try {
+          step = await client.api.restore(snapshot, frame);
+        } catch (error) {
+          if (client.died !== null) throw error;
+          restored = false;
+          this.report(this, 'worker', this.worker, `engine: the last snapshot could not be restored, the scene restarts from its markup (${error instanceof Error ? error.message : String(error)})`, false);
+          await client.api.load({ ...scene, running: false });
+        }
+        if (restored) await this.reapply(client, scene, snapshot, grab);
+      }
+      // Poses read right after ready are the restored ones.
+      await client.synced(step);
+      if (gen !== this.generation || this.client !== client) return;
+      this.loaded = true;
+      this.shown?.dispose();
+      this.shown = null;
+      this.recovering = false;
+      this.syncRunning();
+      this.keepSnapshot();
+      this.readyResolve?.();
+    } catch (error) {
+      // The new worker died too: workerDied() has taken over (another attempt, or the end).
+      if (gen !== this.generation || this.client !== client || client.died !== null) return;
+      this.reportFailure(error);
+      this.loaded = true;
+      this.shown = null;
+      this.recovering = false;
+      this.syncRunning();
+      this.readyResolve?.();
+    }
+  }
+
+  /** After a restore: the markup as it is now wins over the snapshot's descriptions, and the current parameters. */
+  private async reapply(client: EngineClient, scene: HostScene, snapshot: HostSnapshot, grab: number | null): Promise<void> {
+    const calls: Promise<unknown>[] = [];
+    const report = (e: HostError | null) => e && this.reportHostError(e);
+    const bodies = new Map(snapshot.bodies.map((b) => [b.key, JSON.stringify(b.desc)]));
+    const links = new Map(snapshot.links.map((l) => [l.key, JSON.stringify(l.desc)]));
+    for (const b of scene.bodies) if (bodies.get(b.key) !== JSON.stringify(b.desc)) calls.push(client.api.updateBody(b).then(report));
+    for (const key of bodies.keys()) if (!scene.bodies.some((b) => b.key === key)) calls.push(client.api.removeBody(key));
+    for (const l of scene.links) if (links.get(l.key) !== JSON.stringify(l.desc)) calls.push(client.api.updateLink(l).then(report));
+    for (const key of links.keys()) if (!scene.links.some((l) => l.key === key)) calls.push(client.api.removeLink(key));
+    if (scene.params) calls.push(client.api.setParams(scene.params));
+    // A drag held when the snapshot was taken has no pointer any more.
+    if (grab !== null) calls.push(client.api.release(grab));
+    await Promise.all(calls);
+  }
+
+  /** Keeps a recent snapshot and watches the step counter while the scene steps in a worker. */
+  private updateKeeper(): void {
+    const on = this.running && this.loaded && !this.gaveUp && this.client?.mode === 'worker';
+    if (on === (this.keeper !== null)) return;
+    if (!on) {
+      clearInterval(this.keeper!);
+      this.keeper = null;
+      return;
+    }
+    this.watchStep = this.client!.latestStep;
+    this.watchAt = performance.now();
+    this.keeper = setInterval(this.keep, KEEPER_TICK);
+  }
+
+  private readonly keep = (): void => {
+    const c = this.client;
+    if (!c || !this.loaded) return;
+    const now = performance.now();
+    const step = c.latestStep;
+    if (step !== this.watchStep) {
+      this.watchStep = step;
+      this.watchAt = now;
+      if (now - this.snapAt >= SNAPSHOT_EVERY) this.keepSnapshot();
+      return;
+    }
+    const stall = Math.max(STALL_AFTER, 3000 * this.config().timestep);
+    if (now - this.watchAt < stall) return;
+    // No step for a while although the scene runs: terminated or hung? One probe; no answer declares it dead.
+    this.watchAt = now;
+    const timeout = Math.min(PROBE_TIMEOUT, PhysicsSceneElement.callTimeout);
+    void c.probe(`no new frame for ${Math.round(stall)} ms while running and no answer to a probe within ${timeout} ms`, timeout);
+  };
+
+  /** Asks the worker for a snapshot (one at a time) and keeps it. */
+  private keepSnapshot(): void {
+    const c = this.client;
+    if (!c || c.mode !== 'worker' || !this.loaded || this.snapping) return;
+    this.snapping = true;
+    this.snapAt = performance.now();
+    const grab = this.drag?.grab ?? null;
+    c.api.snapshot().then(
+      (snapshot) => {
+        if (c === this.client) this.saved = { client: c, snapshot, grab };
+      },
+      () => {},
+    ).finally(() => {
+      this.snapping = false;
+    });
+  }
+
+  /**
+   * @internal Test hook: makes the engine worker fail. 'terminate' ends it from outside and tells no one (found by
+   * the stall watch), 'throw' makes its step loop throw, 'hang' blocks it (calls then time out).
+   */
+  async _debugFault(fault: 'terminate' | 'throw' | 'hang'): Promise<void> {
+    const c = this.client;
+    if (!c || c.mode !== 'worker') throw new Error('_debugFault: no engine worker');
+    if (fault === 'terminate') c.debugTerminate();
+    else await c.api.debugFault(fault);
   }
 
   private stop(): void {
@@ -616,6 +832,13 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     this.observer.disconnect();
     this.client?.dispose();
     this.client = null;
+    this.shown?.dispose();
+    this.shown = null;
+    this.saved = null;
+    this.restartTimes = [];
+    this.recovering = false;
+    this.gaveUp = false;
+    this.updateKeeper();
     this.runningChanged(false);
     this.renderer?.dispose();
     this.renderer = null;
@@ -650,10 +873,11 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     const narrowphase = check.oneOf('narrowphase', this.narrowphase, ['sat', 'gjk'] as const, 'sat');
     const bounds = check.oneOf('bounds', this.bounds, ['view', 'none'] as const, 'view');
     check.oneOf('worker', this.worker, ['auto', 'none'] as const, 'auto');
+    const maxRestarts = check.number('max-restarts', this.maxRestarts, { integer: true, min: 0, max: 100, fallback: 3 })!;
     check.oneOf('draw-mode', this.drawMode, ['over', 'replace'] as const, 'over');
     check.color('background', this.background, null);
     this.reportProblems(this, check.problems, this.ownReported);
-    return { width, height, gravity, iterations, substeps, timestep, broadphase, narrowphase, bounds };
+    return { width, height, gravity, iterations, substeps, timestep, broadphase, narrowphase, bounds, maxRestarts };
   }
 
   private applyView(r: SceneRenderer, config: Config): void {
@@ -681,13 +905,22 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     const bodies: KeyedBody[] = [];
     const links: KeyedLink[] = [];
     const children = this.childElements();
+    // A restart keeps the keys of children it knows (the snapshot names them) and forgets removed ones.
+    const present = new Set<Element>(children);
+    for (const [key, e] of [...this.entries]) {
+      if (present.has(e.element)) continue;
+      if (e.kind === 'body') this.renderer?.deleteStyle(key);
+      e.element._scene = null;
+      this.entries.delete(key);
+      this.keys.delete(e.element);
+    }
     for (const el of children) if (el instanceof PhysicsBodyElement) {
-      const key = this.adopt(el, 'body');
+      const key = this.keys.get(el) ?? this.adopt(el, 'body');
       const desc = this.describeBody(this.entries.get(key)!);
       if (desc) bodies.push({ key, desc });
     }
     for (const el of children) if (el instanceof PhysicsLinkElement) {
-      const key = this.adopt(el, 'link');
+      const key = this.keys.get(el) ?? this.adopt(el, 'link');
       const desc = this.describeLink(this.entries.get(key)!);
       if (desc) links.push({ key, desc });
     }
@@ -813,7 +1046,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
   /** @internal */
   poseOf(child: Element): [number, number, number] | null {
     const key = this.keys.get(child);
-    return key === undefined || !this.client ? null : this.client.pose(key);
+    const c = this.shown ?? this.client;
+    return key === undefined || !c ? null : c.pose(key);
   }
 
   /** @internal */
@@ -908,6 +1142,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
 
   private reportFailure(error: unknown): void {
     if (!this.client && !this.starting) return;
+    // A worker that died or stopped answering is reported once, by workerDied(), not once per call it failed.
+    if (error instanceof WorkerDiedError || (error instanceof TimeoutError && this.client?.mode !== 'main')) return;
     this.report(this, '', '', `engine: ${error instanceof Error ? error.message : String(error)}`);
   }
 

@@ -5,7 +5,7 @@ import * as Comlink from 'comlink';
 import { EngineHost } from './engine-host.js';
 import { TripleBuffer } from './triple-buffer.js';
 import { TripleBufferPublisher } from './publishers.js';
-import { F, HEADER, POSE, type EngineApi, type PortMessage, type Topology, type Transport } from './protocol.js';
+import { F, HEADER, POSE, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
 import type { WorkerEndpoint } from './engine.worker.js';
 import { track } from './resources.js';
 
@@ -20,8 +20,15 @@ export interface ClientOptions {
   createWorker?: () => Worker;
   onTopology?: (topology: Topology) => void;
   onEvents?: (data: Float64Array, count: number) => void;
-  /** Problems after start: the worker died, a call timed out, the fallback to the main thread. */
+  /** Problems during start: the fallback to the main thread (and a worker death when there is no onDeath). */
   onError?: (message: string) => void;
+  /**
+   * The worker died after start: an uncaught exception in it (`error`), a message it sent that cannot be read
+   * (`messageerror`), a call it did not answer in time (hung or terminated), or a failed probe(). Called once; by
+   * then every pending call has failed with a WorkerDiedError (the timed-out one with its TimeoutError), the worker
+   * is terminated and the client disposed. The owner starts a new client if it wants one.
+   */
+  onDeath?: (reason: string) => void;
 }
 
 /** The bundler (rollup.config.js) emits this worker as its own chunk, or inlines it as a blob: URL. */
@@ -29,7 +36,15 @@ export function createEngineWorker(): Worker {
   return new Worker(new URL('./engine.worker.js', import.meta.url), { type: 'module' });
 }
 
-export class TimeoutError extends Error {}
+/** A call that got no answer within the timeout; the message names the method. */
+export class TimeoutError extends Error {
+  override name = 'TimeoutError';
+}
+
+/** A call that was pending (or made) when the worker died; the message names the method and the cause. */
+export class WorkerDiedError extends Error {
+  override name = 'WorkerDiedError';
+}
 
 /** The two newest frames, copied out of whatever carried them (no allocation unless the scene grows). */
 export class FrameStore {
@@ -67,7 +82,12 @@ export class EngineClient {
   readonly api: Remote;
   private triple: TripleBuffer | null = null;
   private disposed = false;
-  private readonly pending = new Set<(error: Error) => void>();
+  /** Why the worker died (null while it lives). */
+  private deathReason: string | null = null;
+  /** Pending calls: how to fail each, and its method (for the error message). */
+  private readonly pending = new Map<(error: Error) => void, string>();
+  /** Terminates the worker behind everyone's back (test hook). */
+  private killRaw: (() => void) | null = null;
 
   private constructor(
     /** 'worker' or 'main': where the engine runs. */
@@ -115,11 +135,11 @@ export class EngineClient {
     let failed: ((error: Error) => void) | null = null;
     const onError = (event: ErrorEvent | MessageEvent) => {
       const message = 'message' in event && typeof event.message === 'string' && event.message ? event.message : 'the worker script failed to load';
-      const error = new Error(message);
-      if (failed) failed(error);
+      if (failed) failed(new Error(message));
       if (client) {
-        client.failAll(error);
-        client.options.onError?.(`engine worker error: ${message}`);
+        // Handled here: not also reported as an uncaught error of the page.
+        event.preventDefault();
+        client.die(event.type === 'messageerror' ? 'a message from the worker could not be read' : `uncaught error in the worker: ${message}`);
       }
     };
     worker.addEventListener('error', onError);
@@ -140,6 +160,7 @@ export class EngineClient {
       });
       failed = null;
       client = new EngineClient('worker', info.transport, (method, args) => remote.invoke(method, args), cleanup, options);
+      client.killRaw = () => worker.terminate();
       const c = client;
       channel.port1.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data, channel.port1);
       return client;
@@ -172,7 +193,8 @@ export class EngineClient {
     return client;
   }
 
-  private call(method: keyof EngineApi, args: unknown[], timeout: number): Promise<unknown> {
+  private call(method: keyof EngineApi, args: unknown[], timeout: number, hung?: string): Promise<unknown> {
+    if (this.deathReason !== null) return Promise.reject(new WorkerDiedError(`${method}(): the engine worker died (${this.deathReason})`));
     if (this.disposed) return Promise.reject(new Error(`engine stopped (${method})`));
     return new Promise((resolve, reject) => {
       const fail = (error: Error) => {
@@ -181,8 +203,12 @@ export class EngineClient {
         track('pendingCalls', -1);
         reject(error);
       };
-      const timer = setTimeout(() => fail(new TimeoutError(`${method}() did not answer within ${timeout} ms`)), timeout);
-      this.pending.add(fail);
+      const timer = setTimeout(() => {
+        fail(new TimeoutError(`${method}() did not answer within ${timeout} ms`));
+        // A worker that does not answer is hung or gone: nothing else it was asked will be answered either.
+        if (this.mode === 'worker') this.die(hung ?? `${method}() did not answer within ${timeout} ms`);
+      }, timeout);
+      this.pending.set(fail, method);
       track('pendingCalls', 1);
       this.invoke(method, args).then(
         (value) => {
@@ -200,8 +226,59 @@ export class EngineClient {
     });
   }
 
-  private failAll(error: Error): void {
-    for (const fail of [...this.pending]) fail(error);
+  private failAll(error: (method: string) => Error): void {
+    for (const [fail, method] of [...this.pending]) fail(error(method));
+  }
+
+  /** The worker is dead or hung: pending calls fail naming their method, the worker is terminated, onDeath is told. */
+  private die(reason: string): void {
+    if (this.disposed || this.deathReason !== null) return;
+    this.poll();
+    this.deathReason = reason;
+    this.failAll((method) => new WorkerDiedError(`${method}(): no answer, the engine worker died (${reason})`));
+    this.dispose();
+    if (this.options.onDeath) this.options.onDeath(reason);
+    else this.options.onError?.(`engine worker died: ${reason}`);
+  }
+
+  /** Why the worker died, or null. */
+  get died(): string | null {
+    return this.deathReason;
+  }
+
+  /**
+   * A sign of life from a worker that sends no frames although it should: one cheap call; no answer within
+   * `timeout` ms declares the worker dead (onDeath) with `reason`.
+   */
+  async probe(reason: string, timeout: number): Promise<void> {
+    if (this.mode !== 'worker' || !this.alive) return;
+    await this.call('diagnostics', [], timeout, reason).catch(() => {});
+  }
+
+  /**
+   * The newest frame as a patch for restore() after a restart: positions, and velocities from the two newest frames
+   * when both have the same topology and different steps. Null before any frame.
+   */
+  lastFrame(): FramePatch | null {
+    this.poll();
+    const fs = this.frames;
+    if (fs.received === 0) return null;
+    const f = fs.curr;
+    const n = f[F.particles];
+    const positions = f.slice(HEADER, HEADER + 2 * n);
+    let velocities: Float64Array | null = null;
+    const p = fs.prev;
+    const dt = f[F.time] - p[F.time];
+    if (fs.received > 1 && p[F.topology] === f[F.topology] && p[F.particles] === n && p[F.stepCount] < f[F.stepCount] && dt > 0) {
+      velocities = new Float64Array(2 * n);
+      for (let k = 0; k < 2 * n; k++) velocities[k] = (f[HEADER + k] - p[HEADER + k]) / dt;
+    }
+    return { topology: f[F.topology], stepCount: f[F.stepCount], time: f[F.time], positions, velocities };
+  }
+
+  /** @internal Test hook: terminates the worker from outside and tells no one (as if the browser had killed it). */
+  debugTerminate(): void {
+    this.killRaw?.();
   }
 
   private receive(message: PortMessage, port: MessagePort | null): void {
@@ -265,6 +342,16 @@ export class EngineClient {
     }
   }
 
+  /** Resolves once a frame of step `step` or later has arrived together with its topology (or after `timeout` ms). */
+  async synced(step: number, timeout = 2000): Promise<void> {
+    const until = performance.now() + timeout;
+    await this.frameAt(step, timeout);
+    while (!this.disposed && performance.now() < until && (this.frames.received === 0 || this.topology?.version !== this.frames.curr[F.topology])) {
+      await new Promise((r) => setTimeout(r, 0));
+      this.poll();
+    }
+  }
+
   get alive(): boolean {
     return !this.disposed;
   }
@@ -272,7 +359,7 @@ export class EngineClient {
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
-    this.failAll(new Error('engine stopped'));
+    this.failAll((method) => new Error(`engine stopped (${method})`));
     this.teardown();
     this.triple = null;
   }

@@ -5,7 +5,7 @@ import { World, buildBody, type BodyDescription, type Handle, type WorldOptions 
 import { handleSlot } from '../engine/handles.js';
 import {
   EVENT, F, HEADER, MAX_CONTACTS, frameLength,
-  type Diagnostics, type EngineApi, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody,
+  type DebugFault, type Diagnostics, type EngineApi, type FramePatch, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody,
   type KeyedLink, type LinkDescription, type Topology, type TopologyBody,
 } from './protocol.js';
 import type { Publisher } from './publishers.js';
@@ -85,6 +85,8 @@ export class EngineHost implements EngineApi {
   private eventCount = 0;
   private eventsSent = 0;
   private disposed = false;
+  /** A test fault armed for the next tick of the step loop. */
+  private fault: DebugFault | null = null;
 
   constructor(
     private readonly publisher: Publisher,
@@ -219,6 +221,11 @@ export class EngineHost implements EngineApi {
   private readonly tick = (): void => {
     this.timer = null;
     if (!this.running || this.disposed) return;
+    if (this.fault === 'throw') {
+      // Uncaught on purpose: the loop stops here and the page sees the worker's error event.
+      this.fault = null;
+      throw new Error('debug fault: the step loop threw');
+    }
     const now = performance.now();
     const elapsed = Math.min(0.25, (now - this.lastTick) / 1000);
     this.lastTick = now;
@@ -313,10 +320,11 @@ export class EngineHost implements EngineApi {
       bodies: [...this.bodies.values()].map((r) => ({ key: r.key, desc: r.desc, handle: r.handle ?? -1, pose: [r.edge0, r.dx, r.dy, r.angle0] })),
       links: [...this.links.values()].map((l) => ({ key: l.key, desc: l.desc, handles: l.handles.slice(), pa: l.pa, pb: l.pb })),
       params: { ...this.params, gravity: { ...this.params.gravity } },
+      topology: this.topologyDirty ? -1 : this.topologyVersion,
     };
   }
 
-  restore(s: HostSnapshot): void {
+  restore(s: HostSnapshot, frame?: FramePatch | null): number {
     this.params = { ...s.params, gravity: { ...s.params.gravity } };
     this.world.restore(s.world as Parameters<World['restore']>[0]);
     this.bodies.clear();
@@ -332,7 +340,53 @@ export class EngineHost implements EngineApi {
     for (const l of s.links) {
       this.links.set(l.key, { key: l.key, desc: l.desc, handles: l.handles.slice(), pa: l.pa, pb: l.pb });
     }
+    if (frame) this.overlay(s, frame);
     this.changed();
+    return this.world.stepCount;
+  }
+
+  /**
+   * After a worker restart: the snapshot holds the full state (constraints, contacts, sleep) as of up to a second
+   * ago; the page's newest frame holds where every particle was drawn last. Moving the particles there (velocities
+   * from the two newest frames, else the snapshot's) resumes from what the user saw instead of jumping back. Only
+   * when the frame has the snapshot's topology (same particles in the same slots) and is not older than it.
+   */
+  private overlay(s: HostSnapshot, f: FramePatch): void {
+    const w = this.world;
+    const p = w.particles;
+    const n = p.count;
+    if (s.topology === undefined || s.topology < 0 || f.topology !== s.topology || f.positions.length !== 2 * n) return;
+    if (f.stepCount < w.stepCount || (f.velocities && f.velocities.length !== 2 * n)) return;
+    for (let i = 0; i < n; i++) {
+      if (!p.alive[i] || p.invMass[i] === 0) continue;
+      const x = f.positions[2 * i];
+      const y = f.positions[2 * i + 1];
+      if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+      p.x[i] = p.px[i] = p.qx[i] = p.sx[i] = x;
+      p.y[i] = p.py[i] = p.qy[i] = p.sy[i] = y;
+      if (f.velocities && Number.isFinite(f.velocities[2 * i]) && Number.isFinite(f.velocities[2 * i + 1])) {
+        p.vx[i] = f.velocities[2 * i];
+        p.vy[i] = f.velocities[2 * i + 1];
+      }
+    }
+    w.stepCount = f.stepCount;
+    w.time = f.time;
+    // Bodies asleep in the snapshot may have been moving in the frame.
+    w.wakeAll();
+  }
+
+  /** @internal Test hook: 'throw' arms the step loop to throw on its next tick; 'hang' blocks this thread (20 s at most). */
+  debugFault(fault: DebugFault): void {
+    if (fault === 'throw') this.fault = 'throw';
+    else if (fault === 'hang') {
+      // After this call has answered: the next call gets no answer.
+      setTimeout(() => {
+        const until = performance.now() + 20000;
+        while (performance.now() < until) {
+          // busy: nothing else runs in this worker meanwhile
+        }
+      }, 0);
+    }
   }
 
   stateHash(): string {

@@ -59,6 +59,8 @@ export interface TopologyBody {
   radius?: number;
   /** Soft bodies of the springs model carry a hub particle after the ring. */
   ring?: number;
+  /** Torn cloth: per grid node, bit 1 = the link to the right neighbour broke, bit 2 = the link down broke. */
+  torn?: Uint8Array;
 }
 
 export interface Topology {
@@ -103,7 +105,25 @@ export interface HostSnapshot {
   bodies: { key: number; desc: BodyDescription; handle: number; pose: number[] }[];
   links: { key: number; desc: LinkDescription; handles: number[]; pa: number; pb: number }[];
   params: HostParams;
+  /** The host's topology version when taken (-1: a change not yet published), to match frames against it. */
+  topology?: number;
 }
+
+/**
+ * The newest published frame, laid over a restored snapshot after a worker restart: particle positions (x at 2·i,
+ * y at 2·i+1) and, when the two newest frames allow it, velocities; applied only when the frame's topology is the
+ * snapshot's (same particles in the same slots).
+ */
+export interface FramePatch {
+  topology: number;
+  stepCount: number;
+  time: number;
+  positions: Float64Array;
+  velocities: Float64Array | null;
+}
+
+/** @internal Test faults: 'throw' makes the next tick of the step loop throw, 'hang' blocks the worker (busy wait). */
+export type DebugFault = 'throw' | 'hang';
 
 /** The command interface of the engine host. Every call returns a promise on the client side. */
 export interface EngineApi {
@@ -127,11 +147,14 @@ export interface EngineApi {
   applyImpulse(key: number, ix: number, iy: number): void;
   setVelocity(key: number, vx: number, vy: number): void;
   snapshot(): HostSnapshot;
-  restore(snapshot: HostSnapshot): void;
+  /** Puts a snapshot back; with `frame` (a restart), the newest published positions and velocities on top. Returns the step count. */
+  restore(snapshot: HostSnapshot, frame?: FramePatch | null): number;
   stateHash(): string;
   diagnostics(): Diagnostics;
   /** Bodies (keys) whose shape contains the point. */
   bodiesAt(x: number, y: number): number[];
+  /** @internal Test hook (fault recovery tests): makes the engine fail on purpose. */
+  debugFault(fault: DebugFault): void;
 }
 
 // ---- frame layout --------------------------------------------------------------------------------------------
