@@ -772,6 +772,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (!on) {
       clearInterval(this.keeper!);
       this.keeper = null;
+      // Stopped stepping (paused, off screen, hidden page): the state to keep is now fixed.
+      this.keepSnapshot();
       return;
     }
     this.watchStep = this.client!.latestStep;
