@@ -80,10 +80,27 @@ export class Checker {
   }
 }
 
+/** Characters of a value shown in warnings and the error box; the `physics-error` event carries the whole value. */
+const SHOWN = 120;
+
+/**
+ * A value as shown in a message: control and format characters (bidi overrides, zero-width marks) written as \u
+ * escapes, and long values cut, so a hostile value can neither reorder the message nor cost seconds of text layout.
+ */
+export function displayValue(value: string): string {
+  let v = value.length > SHOWN ? value.slice(0, SHOWN) : value;
+  if (/[\ud800-\udbff]$/.test(v)) v = v.slice(0, -1);
+  v = v.replace(/[\p{Cc}\p{Cf}\u2028\u2029]/gu, (c) => {
+    const code = c.codePointAt(0)!;
+    return code > 0xffff ? `\\u{${code.toString(16)}}` : `\\u${code.toString(16).padStart(4, '0')}`;
+  });
+  return value.length > SHOWN ? `${v}… (${value.length} characters)` : v;
+}
+
 /** `<physics-box id="a">` for messages. */
 export function describeElement(el: Element): string {
   const id = el.getAttribute('id');
-  return `<${el.localName}${id ? ` id="${id}"` : ''}>`;
+  return `<${el.localName}${id ? ` id="${displayValue(id)}"` : ''}>`;
 }
 
 /** Degrees (markup) → radians (engine). */

@@ -6,7 +6,7 @@ import { EngineClient, TimeoutError, WorkerDiedError } from '../worker/client.js
 import { track } from '../worker/resources.js';
 import { EVENT, type Diagnostics, type FramePatch, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
 import { PhysicsBodyElement } from './body-element.js';
-import { Checker, describeElement, type Problem } from './checks.js';
+import { Checker, describeElement, displayValue, type Problem } from './checks.js';
 import { PhysicsLinkElement } from './link-element.js';
 import type { SceneHost } from './scene-host.js';
 
@@ -1208,7 +1208,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
 }
 
 function problemText(el: Element, attribute: string, value: string, message: string): string {
-  return `${describeElement(el)} ${attribute ? `${attribute}="${value}"` : ''}: ${message}`;
+  return `${describeElement(el)} ${attribute ? `${attribute}="${displayValue(value)}"` : ''}: ${message}`;
 }
 
 if (!customElements.get('physics-scene')) customElements.define('physics-scene', PhysicsSceneElement);
