@@ -15,6 +15,7 @@ interface ClothSetup {
   compliance: number;
   wind: number;
   gusts: number;
+  tear: number | undefined;
   fill: string | undefined;
   stroke: string | undefined;
   problems: Problem[];
@@ -60,6 +61,11 @@ export class ClothSimElement extends PhysicsSceneElement {
   @property({ type: Number }) wind = 0;
   /** How gusty the wind is, 0 (steady) to 1 (gusts from calm to twice the strength). Default 0.6. */
   @property({ type: Number }) gusts = 0.6;
+  /**
+   * Tearing: a link stretched past its rest length by this fraction breaks (> 0; 0.3 tears under a firm pull). Off by
+   * default. A torn cloth stays torn until reset() or a change of its attributes rebuilds it.
+   */
+  @property({ type: Number }) tear?: number;
   /** Cloth fill colour (CSS colour or "none"). Default "#9cc3ec". */
   @property() fill?: string;
   /** Cloth line colour (CSS colour or "none"). Default "#2f6fb5". */
@@ -106,6 +112,7 @@ export class ClothSimElement extends PhysicsSceneElement {
         spacing=${s.spacing}
         pins=${s.pins}
         compliance=${s.compliance}
+        tear=${ifDefined(s.tear)}
         fill=${ifDefined(s.fill)}
         stroke=${ifDefined(s.stroke)}
       ></physics-cloth>
@@ -166,11 +173,12 @@ export class ClothSimElement extends PhysicsSceneElement {
     const compliance = ((1 - stiffness) / stiffness) * 1e-6;
     const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 0 })!;
     const gusts = check.number('gusts', this.gusts, { min: 0, max: 1, fallback: 0.6 })!;
+    const tear = check.number('tear', this.tear, { positive: true });
     const fill = check.color('fill', this.fill, null) === null && this.fill !== 'none' ? undefined : this.fill;
     const stroke = check.color('stroke', this.stroke, null) === null && this.stroke !== 'none' ? undefined : this.stroke;
     const x = (w - spacing * (columns - 1)) / 2;
     const y = Math.min(h * 0.08, 0.8);
-    return { columns, rows, spacing, x, y, pins, compliance, wind, gusts, fill, stroke, problems: check.problems };
+    return { columns, rows, spacing, x, y, pins, compliance, wind, gusts, tear, fill, stroke, problems: check.problems };
   }
 }
 

@@ -24,6 +24,8 @@ export class PhysicsClothElement extends PhysicsBodyElement {
   @property({ type: Number }) shear?: number;
   /** Compliance of bend links two particles apart (none when absent). */
   @property({ type: Number }) bend?: number;
+  /** Tearing: a link stretched past its rest length by this fraction breaks for good (> 0, e.g. 0.3); off when absent. */
+  @property({ type: Number }) tear?: number;
   /** Collides with other bodies (its particles as small circles). */
   @property({ type: Boolean }) collide = false;
 
@@ -51,6 +53,8 @@ export class PhysicsClothElement extends PhysicsBodyElement {
     if (shear !== undefined) out.shear = shear;
     const bend = check.number('bend', this.bend, { min: 0 });
     if (bend !== undefined) out.bend = bend;
+    const tear = check.number('tear', this.tear, { positive: true });
+    if (tear !== undefined) out.tear = tear;
     this.material(check, out, null);
     delete out.static;
     return { desc: out as unknown as BodyDescription, problems: check.problems };

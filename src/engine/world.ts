@@ -710,6 +710,20 @@ export class World {
     return d > t.maxLength[row] ? d - t.maxLength[row] : d < t.minLength[row] ? t.minLength[row] - d : 0;
   }
 
+  /** The particle indices (slots in the state arrays) a distance constraint joins. */
+  distanceParticleIndices(handle: Handle): [number, number] {
+    const row = this.constraintRowOf(handle, Kind.Distance, 'distance constraint');
+    return [this.distances.a[row], this.distances.b[row]];
+  }
+
+  /** How many distance constraints have broken (torn) so far. */
+  get brokenLinkCount(): number {
+    const { broken, count } = this.distances;
+    let n = 0;
+    for (let i = 0; i < count; i++) n += broken[i];
+    return n;
+  }
+
   /** Whether a distance constraint made with breakStrain has broken (it then no longer acts). */
   isBroken(handle: Handle): boolean {
     return this.distances.broken[this.constraintRowOf(handle, Kind.Distance, 'distance constraint')] === 1;

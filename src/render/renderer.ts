@@ -349,19 +349,22 @@ export class SceneRenderer {
         ctx.lineWidth = width;
         ctx.stroke();
       } else if (g.kind === 'cloth') {
+        // torn[n]: bit 1 = the link from grid node n to its right neighbour broke, bit 2 = the link down broke.
         if (fill) {
           for (const k of g.bodies) {
             const b = t.bodies[k];
             const idx = b.indices;
             const cols = b.columns ?? 2;
             const rows = b.rows ?? 2;
+            const torn = b.torn;
             for (let r = 0; r + 1 < rows; r++) {
               for (let c = 0; c + 1 < cols; c++) {
-                const a = idx[r * cols + c];
-                ctx.moveTo(X(a), Y(a));
-                ctx.lineTo(X(idx[r * cols + c + 1]), Y(idx[r * cols + c + 1]));
-                ctx.lineTo(X(idx[(r + 1) * cols + c + 1]), Y(idx[(r + 1) * cols + c + 1]));
-                ctx.lineTo(X(idx[(r + 1) * cols + c]), Y(idx[(r + 1) * cols + c]));
+                const n = r * cols + c;
+                if (torn && (torn[n] | (torn[n + cols] & 1) | (torn[n + 1] & 2)) !== 0) continue;
+                ctx.moveTo(X(idx[n]), Y(idx[n]));
+                ctx.lineTo(X(idx[n + 1]), Y(idx[n + 1]));
+                ctx.lineTo(X(idx[n + cols + 1]), Y(idx[n + cols + 1]));
+                ctx.lineTo(X(idx[n + cols]), Y(idx[n + cols]));
                 ctx.closePath();
               }
             }
@@ -376,13 +379,18 @@ export class SceneRenderer {
             const idx = b.indices;
             const cols = b.columns ?? 2;
             const rows = b.rows ?? 2;
-            for (let r = 0; r < rows; r++) {
-              ctx.moveTo(X(idx[r * cols]), Y(idx[r * cols]));
-              for (let c = 1; c < cols; c++) ctx.lineTo(X(idx[r * cols + c]), Y(idx[r * cols + c]));
-            }
-            for (let c = 0; c < cols; c++) {
-              ctx.moveTo(X(idx[c]), Y(idx[c]));
-              for (let r = 1; r < rows; r++) ctx.lineTo(X(idx[r * cols + c]), Y(idx[r * cols + c]));
+            const torn = b.torn;
+            // Rows then columns as polylines, lifting the pen over broken links.
+            for (const [lines, steps, along, bit] of [[rows, cols, 1, 1], [cols, rows, cols, 2]] as const) {
+              for (let l = 0; l < lines; l++) {
+                let n = along === 1 ? l * cols : l;
+                ctx.moveTo(X(idx[n]), Y(idx[n]));
+                for (let q = 1; q < steps; q++, n += along) {
+                  const next = n + along;
+                  if (torn && torn[n] & bit) ctx.moveTo(X(idx[next]), Y(idx[next]));
+                  else ctx.lineTo(X(idx[next]), Y(idx[next]));
+                }
+              }
             }
           }
           ctx.strokeStyle = stroke;

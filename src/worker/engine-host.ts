@@ -248,6 +248,8 @@ export class EngineHost implements EngineApi {
   private stepOnce(): void {
     this.world.step();
     if (this.params.events) this.collectEvents();
+    // A torn cloth is drawn without its broken links: the topology says which.
+    if (this.world.breaks.count > 0) this.topologyDirty = true;
   }
 
   // ---- interaction -------------------------------------------------------------------------------------------
@@ -403,6 +405,7 @@ export class EngineHost implements EngineApi {
       particleCount: this.world.particleCount,
       bodyCount: this.order.length,
       linkCount: [...this.links.values()].filter((l) => l.handles.length > 0).length,
+      brokenLinks: this.world.brokenLinkCount,
       published: this.published,
       skipped: this.skipped,
       buffersAllocated: this.publisher.allocated,
@@ -638,7 +641,7 @@ export class EngineHost implements EngineApi {
       this.order.push(r);
       const d = r.desc;
       const t: TopologyBody = { key: r.key, type: d.type, kind: this.world.bodyKindOf(r.handle), indices: r.indices.slice() };
-      if (d.type === 'cloth') [t.columns, t.rows] = [d.columns, d.rows];
+      if (d.type === 'cloth') [t.columns, t.rows, t.torn] = [d.columns, d.rows, this.tornLinks(r, d.columns)];
       if (d.type === 'circle') t.radius = d.radius;
       if (d.type === 'rope') t.radius = d.radius ?? 0;
       if (d.type === 'ragdoll') t.radius = 0.075 * (d.height ?? 1.8);
@@ -652,6 +655,26 @@ export class EngineHost implements EngineApi {
       links[2 * k + 1] = l.pb;
     });
     this.output.topology({ version: this.topologyVersion, bodies, links });
+  }
+
+  /** A cloth's broken links as bits per grid node (see TopologyBody.torn), or undefined when it is whole. */
+  private tornLinks(r: BodyRecord, columns: number): Uint8Array | undefined {
+    const w = this.world;
+    let torn: Uint8Array | undefined;
+    let gridOf: Map<number, number> | undefined;
+    for (const h of w.bodyConstraintHandles(r.handle!)) {
+      if (w.constraintKindOf(h) !== 'distance' || !w.isBroken(h)) continue;
+      gridOf ??= new Map(Array.from(r.indices, (slot, n) => [slot, n]));
+      torn ??= new Uint8Array(r.indices.length);
+      const [i, j] = w.distanceParticleIndices(h);
+      const a = gridOf.get(i) ?? -1;
+      const b = gridOf.get(j) ?? -1;
+      const lo = Math.min(a, b);
+      if (lo < 0) continue;
+      if (Math.abs(a - b) === 1) torn[lo] |= 1;
+      else if (Math.abs(a - b) === columns) torn[lo] |= 2;
+    }
+    return torn;
   }
 
   private collectEvents(): void {

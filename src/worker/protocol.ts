@@ -82,6 +82,8 @@ export interface Diagnostics {
   particleCount: number;
   bodyCount: number;
   linkCount: number;
+  /** Distance links broken by tearing (a torn cloth's). */
+  brokenLinks: number;
   /** Frames published, and frames skipped because every pooled transfer buffer was in flight. */
   published: number;
   skipped: number;

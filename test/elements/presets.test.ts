@@ -74,6 +74,43 @@ describe('<cloth-sim>', () => {
     pointer(sim, 'pointerup', 11.5, 5.8);
   });
 
+  it('tear: a hard pull tears the cloth, the torn cells are not drawn, it stays torn until reset(); no tear, no tearing', async () => {
+    /** Pulls the bottom-middle particle 7 units down, lets go, and waits for the cloth to settle. */
+    const pullDown = async (s: ClothSimElement) => {
+      pointer(s, 'pointerdown', 7.5, 5.8);
+      for (let k = 1; k <= 24; k++) {
+        await frames(1);
+        pointer(s, 'pointermove', 7.5, 5.8 + (7 * k) / 24);
+      }
+      await frames(10);
+      pointer(s, 'pointerup', 7.5, 12.8);
+      await frames(60);
+    };
+    for (const tear of [null, '0.2']) {
+      sim = await mountSim<ClothSimElement>('cloth-sim', `columns="8" rows="6" spacing="1" pins="top" stroke="none" gusts="0" ${tear ? `tear="${tear}"` : ''}`);
+      await waitFor(() => sim!.stepCount > 30 && countColour(sim!, '#9cc3ec') > 3000, 'the cloth hanging');
+      const whole = countColour(sim, '#9cc3ec');
+      await pullDown(sim);
+      const broken = (await sim.diagnostics()).brokenLinks;
+      if (!tear) {
+        expect(broken).to.equal(0);
+        // Released, the untorn cloth hangs whole again.
+        await waitFor(() => countColour(sim!, '#9cc3ec') > whole * 0.95, 'the cloth whole again');
+        unmount(sim);
+        continue;
+      }
+      expect(broken).to.be.at.least(2);
+      // Torn cells are left undrawn and the torn-off piece falls away: clearly less cloth on the canvas, and it stays so.
+      await waitFor(() => countColour(sim!, '#9cc3ec') < whole * 0.9, 'less cloth drawn');
+      await frames(60);
+      expect((await sim.diagnostics()).brokenLinks).to.be.at.least(broken);
+      expect(countColour(sim, '#9cc3ec')).to.be.below(whole * 0.9);
+      await sim.reset();
+      expect((await sim.diagnostics()).brokenLinks).to.equal(0);
+      await waitFor(() => countColour(sim!, '#9cc3ec') > whole * 0.95, 'the cloth whole after reset()');
+    }
+  });
+
   it('wind pushes the cloth downwind; with no wind it hangs still', async () => {
     sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" pins="top" gusts="0"');
     const cloth = clothOf(sim);
