@@ -4,8 +4,15 @@ import { LitElement, css, nothing } from 'lit';
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import type { BodyStyle } from '../render/renderer.js';
-import { Checker, toDegrees, toRadians, type Problem } from './checks.js';
+import { Checker, numberAttribute, toDegrees, toRadians, type Problem } from './checks.js';
 import type { SceneHost } from './scene-host.js';
+
+/**
+ * x, y and angle read the live pose, so Lit's own check (new getter value vs old) would compare the pose with the old
+ * declared value and miss a change whenever the body sits where it was declared. The setters compare the declared
+ * values themselves and tell Lit the property changed.
+ */
+const DECLARED_CHANGED = { type: Number, converter: numberAttribute, hasChanged: () => true } as const;
 
 export interface Described<T> {
   desc: T | null;
@@ -23,16 +30,16 @@ export abstract class PhysicsBodyElement extends LitElement {
     }
   `;
 
-  /** Total mass; default from `density` × area. */
-  @property({ type: Number }) mass?: number;
-  /** Mass per unit area (default 1) when `mass` is not given. */
-  @property({ type: Number }) density?: number;
+  /** Total mass (> 0); default from `density` × area. */
+  @property({ type: Number, converter: numberAttribute }) mass?: number;
+  /** Mass per unit area (> 0, default 1) when `mass` is not given. */
+  @property({ type: Number, converter: numberAttribute }) density?: number;
   /** Immovable (floors, walls, obstacles). */
   @property({ type: Boolean, attribute: 'static' }) isStatic = false;
   /** Coulomb friction coefficient (>= 0). Default 0.6. */
-  @property({ type: Number }) friction?: number;
+  @property({ type: Number, converter: numberAttribute }) friction?: number;
   /** Bounciness in [0, 1]. Default 0. */
-  @property({ type: Number }) restitution?: number;
+  @property({ type: Number, converter: numberAttribute }) restitution?: number;
   /** Fill colour (any CSS colour, or "none"). */
   @property() fill?: string;
   /** Outline colour (any CSS colour, or "none"). */
@@ -49,45 +56,49 @@ export abstract class PhysicsBodyElement extends LitElement {
    * Horizontal position in world units. Reads the live position while simulated; setting it moves the body.
    * @attr x
    */
-  @property({ type: Number, noAccessor: true })
+  @property({ type: Number, converter: numberAttribute, noAccessor: true })
   get x(): number {
     const pose = this._scene?.poseOf(this);
     return pose ? pose[0] : (this._x ?? 0);
   }
   set x(value: number) {
     const old = this._x;
+    if (Object.is(old, value)) return;
     this._x = value;
-    this.requestUpdate('x', old);
+    this.requestUpdate('x', old, DECLARED_CHANGED);
   }
 
   /**
    * Vertical position in world units (y grows downward). Live while simulated.
    * @attr y
    */
-  @property({ type: Number, noAccessor: true })
+  @property({ type: Number, converter: numberAttribute, noAccessor: true })
   get y(): number {
     const pose = this._scene?.poseOf(this);
     return pose ? pose[1] : (this._y ?? 0);
   }
   set y(value: number) {
     const old = this._y;
+    if (Object.is(old, value)) return;
     this._y = value;
-    this.requestUpdate('y', old);
+    this.requestUpdate('y', old, DECLARED_CHANGED);
   }
 
   /**
-   * Rotation in degrees, clockwise on screen (as SVG's rotate()). Live while simulated.
+   * Rotation in degrees, clockwise on screen (as SVG's rotate()). Live while simulated. Ropes, cloths, soft bodies and
+   * ragdolls are built unrotated (the value is still checked).
    * @attr angle
    */
-  @property({ type: Number, noAccessor: true })
+  @property({ type: Number, converter: numberAttribute, noAccessor: true })
   get angle(): number {
     const pose = this._scene?.poseOf(this);
     return pose ? toDegrees(pose[2]) : (this._angle ?? 0);
   }
   set angle(value: number) {
     const old = this._angle;
+    if (Object.is(old, value)) return;
     this._angle = value;
-    this.requestUpdate('angle', old);
+    this.requestUpdate('angle', old, DECLARED_CHANGED);
   }
 
   /** The declared (markup) position and angle, not the live pose. */
@@ -131,6 +142,12 @@ export abstract class PhysicsBodyElement extends LitElement {
     out.angle = toRadians(check.number('angle', angle, { fallback: 0 })!);
     this.material(check, out, area);
     return out;
+  }
+
+  /** Checks pose attributes this kind of body does not use, so a bad value is reported all the same. */
+  protected unused(check: Checker, ...names: ('x' | 'y' | 'angle')[]): void {
+    const declared = this.declared;
+    for (const name of names) check.number(name, declared[name]);
   }
 
   protected material(check: Checker, out: Record<string, unknown>, area: number | null): void {

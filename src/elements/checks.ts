@@ -18,6 +18,15 @@ export interface NumberRule {
   integer?: boolean;
 }
 
+/**
+ * Lit converter for number attributes: a blank value reads as NaN, which the checks report. Lit's own converter gives
+ * Number("") = 0, a valid number, and no change at all where the property already is 0.
+ */
+export const numberAttribute = {
+  fromAttribute: (value: string | null): number | null => (value === null ? null : value.trim() === '' ? NaN : Number(value)),
+  toAttribute: (value: unknown): unknown => value,
+};
+
 export class Checker {
   readonly problems: Problem[] = [];
 
@@ -33,6 +42,11 @@ export class Checker {
   }
 
   number(attribute: string, value: unknown, rule: NumberRule = {}): number | undefined {
+    // An attribute written empty (or blank) is not a number (numberAttribute reads it as NaN, Lit's own converter as 0).
+    if ((value === 0 || value === '' || value === null || Number.isNaN(value)) && this.element.getAttribute(attribute)?.trim() === '') {
+      this.fail(attribute, value, 'must be a number');
+      return rule.fallback;
+    }
     if (value === undefined || value === null || value === '') return rule.fallback;
     const n = typeof value === 'number' ? value : Number(value);
     let problem = '';

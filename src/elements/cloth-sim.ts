@@ -1,7 +1,7 @@
 import { css, html, nothing, type TemplateResult } from 'lit';
 import { property } from 'lit/decorators.js';
 import { ifDefined } from 'lit/directives/if-defined.js';
-import { Checker, type Problem } from './checks.js';
+import { Checker, numberAttribute, type Problem } from './checks.js';
 import { PhysicsSceneElement } from './physics-scene.js';
 import './physics-cloth.js';
 
@@ -48,24 +48,24 @@ export class ClothSimElement extends PhysicsSceneElement {
   ];
 
   /** Particles across (whole number 2..200). Default 24. */
-  @property({ type: Number }) columns = 24;
+  @property({ type: Number, converter: numberAttribute }) columns = 24;
   /** Particles down (whole number 2..200). Default 16. */
-  @property({ type: Number }) rows = 16;
-  /** Distance between neighbouring particles in world units; default: the cloth spans about 70% of the view. */
-  @property({ type: Number }) spacing?: number;
+  @property({ type: Number, converter: numberAttribute }) rows = 16;
+  /** Distance between neighbouring particles in world units (> 0, at most 100); default: the cloth spans about 70% of the view. */
+  @property({ type: Number, converter: numberAttribute }) spacing?: number;
   /** Pinned top-row particles: "top", "corners", "none" or column indices ("0 8 16 23"). Default: five pins spread along the top. */
   @property() pins?: string;
   /** 0 < stiffness <= 1: 1 (default) is inextensible, smaller values stretch. */
-  @property({ type: Number }) stiffness = 1;
-  /** Wind: horizontal push in world units / s² (negative blows left). Default 0 (none). */
-  @property({ type: Number }) wind = 0;
-  /** How gusty the wind is, 0 (steady) to 1 (gusts from calm to twice the strength). Default 0.6. */
-  @property({ type: Number }) gusts = 0.6;
+  @property({ type: Number, converter: numberAttribute }) stiffness = 1;
+  /** Wind: horizontal push in world units / s² (-1000..1000; negative blows left). Default 0 (none). */
+  @property({ type: Number, converter: numberAttribute }) wind = 0;
+  /** How gusty the wind is, in [0, 1]: 0 is steady, 1 gusts from calm to twice the strength. Default 0.6. */
+  @property({ type: Number, converter: numberAttribute }) gusts = 0.6;
   /**
    * Tearing: a link stretched past its rest length by this fraction breaks (> 0; 0.3 tears under a firm pull). Off by
    * default. A torn cloth stays torn until reset() or a change of its attributes rebuilds it.
    */
-  @property({ type: Number }) tear?: number;
+  @property({ type: Number, converter: numberAttribute }) tear?: number;
   /** Cloth fill colour (CSS colour or "none"). Default "#9cc3ec". */
   @property() fill?: string;
   /** Cloth line colour (CSS colour or "none"). Default "#2f6fb5". */
@@ -76,7 +76,7 @@ export class ClothSimElement extends PhysicsSceneElement {
   private windStart = 0;
 
   /** World units down the view. Default 10. */
-  @property({ type: Number }) override height = 10;
+  @property({ type: Number, converter: numberAttribute }) override height = 10;
 
   constructor() {
     super();
@@ -157,7 +157,7 @@ export class ClothSimElement extends PhysicsSceneElement {
     const w = Number.isFinite(this.width) && this.width > 0 ? this.width : 16;
     const h = Number.isFinite(this.height) && this.height > 0 ? this.height : 10;
     const auto = Math.min((w * 0.7) / (columns - 1), (h * 0.75) / (rows - 1));
-    const spacing = check.number('spacing', this.spacing, { positive: true, fallback: auto })!;
+    const spacing = check.number('spacing', this.spacing, { positive: true, max: 100, fallback: auto })!;
     const spread = [...new Set([0, 1, 2, 3, 4].map((k) => Math.round((k * (columns - 1)) / 4)))].join(' ');
     let pins = spread;
     const p = (this.pins ?? '').trim();

@@ -3,7 +3,7 @@ import { LitElement, css, nothing } from 'lit';
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 import type { SceneHost } from './scene-host.js';
 
 /** Finds the body key of an element id in the scene, or null. */
@@ -17,8 +17,8 @@ export abstract class PhysicsLinkElement extends LitElement {
   `;
 
   /** Anchor point in world units; without one, the link joins the two bodies' nearest particles. */
-  @property({ type: Number }) x?: number;
-  @property({ type: Number }) y?: number;
+  @property({ type: Number, converter: numberAttribute }) x?: number;
+  @property({ type: Number, converter: numberAttribute }) y?: number;
 
   /** Set by the owning scene. @internal */
   _scene: SceneHost | null = null;
@@ -33,7 +33,8 @@ export abstract class PhysicsLinkElement extends LitElement {
       return null;
     }
     const key = resolve(id);
-    if (key === null) check.fail(attribute, id, `no body element with id "${id}" in this scene`);
+    // The message does not repeat the id: the warning shows it (escaped and cut) as the attribute's value.
+    if (key === null) check.fail(attribute, id, 'names no body element of this scene');
     return key;
   }
 

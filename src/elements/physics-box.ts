@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 
 /**
  * A rigid box: four corner particles braced by sticks. `x`, `y` is its centre.
@@ -11,9 +11,9 @@ import { Checker } from './checks.js';
  */
 export class PhysicsBoxElement extends PhysicsBodyElement {
   /** Width in world units (> 0). Default 1. */
-  @property({ type: Number }) width?: number;
+  @property({ type: Number, converter: numberAttribute }) width?: number;
   /** Height in world units (> 0). Default 1. */
-  @property({ type: Number }) height?: number;
+  @property({ type: Number, converter: numberAttribute }) height?: number;
 
   describe(): Described<BodyDescription> {
     const check = new Checker(this);

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 
 /**
  * A ball: one particle colliding as a circle. `x`, `y` is its centre. A ball does not track its own rotation.
@@ -11,7 +11,7 @@ import { Checker } from './checks.js';
  */
 export class PhysicsCircleElement extends PhysicsBodyElement {
   /** Radius in world units (> 0). Default 0.5. */
-  @property({ type: Number }) radius?: number;
+  @property({ type: Number, converter: numberAttribute }) radius?: number;
 
   describe(): Described<BodyDescription> {
     const check = new Checker(this);

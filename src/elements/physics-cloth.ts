@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 
 /**
  * A cloth of `columns` × `rows` particles `spacing` apart, its top-left corner at `x`, `y`, hanging from `pins`.
@@ -10,22 +10,22 @@ import { Checker } from './checks.js';
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
 export class PhysicsClothElement extends PhysicsBodyElement {
-  /** Particles across (whole number >= 2). Default 12. */
-  @property({ type: Number }) columns?: number;
-  /** Particles down (whole number >= 2). Default 10. */
-  @property({ type: Number }) rows?: number;
-  /** Rest distance between neighbours in world units. Default 0.3. */
-  @property({ type: Number }) spacing?: number;
+  /** Particles across (whole number 2..4096). Default 12. */
+  @property({ type: Number, converter: numberAttribute }) columns?: number;
+  /** Particles down (whole number 2..4096). Default 10. */
+  @property({ type: Number, converter: numberAttribute }) rows?: number;
+  /** Rest distance between neighbours in world units (> 0). Default 0.3. */
+  @property({ type: Number, converter: numberAttribute }) spacing?: number;
   /** Pinned top-row particles: "top" (default), "corners", "none" or column indices "0 5 11". */
   @property() pins?: string;
-  /** Compliance of the structural links (0 = inextensible, default). */
-  @property({ type: Number }) compliance?: number;
-  /** Compliance of diagonal shear links (none when absent). */
-  @property({ type: Number }) shear?: number;
-  /** Compliance of bend links two particles apart (none when absent). */
-  @property({ type: Number }) bend?: number;
+  /** Compliance of the structural links (>= 0; 0 = inextensible, default). */
+  @property({ type: Number, converter: numberAttribute }) compliance?: number;
+  /** Compliance of diagonal shear links (>= 0; none when absent). */
+  @property({ type: Number, converter: numberAttribute }) shear?: number;
+  /** Compliance of bend links two particles apart (>= 0; none when absent). */
+  @property({ type: Number, converter: numberAttribute }) bend?: number;
   /** Tearing: a link stretched past its rest length by this fraction breaks for good (> 0, e.g. 0.3); off when absent. */
-  @property({ type: Number }) tear?: number;
+  @property({ type: Number, converter: numberAttribute }) tear?: number;
   /** Collides with other bodies (its particles as small circles). */
   @property({ type: Boolean }) collide = false;
 
@@ -55,6 +55,7 @@ export class PhysicsClothElement extends PhysicsBodyElement {
     if (bend !== undefined) out.bend = bend;
     const tear = check.number('tear', this.tear, { positive: true });
     if (tear !== undefined) out.tear = tear;
+    this.unused(check, 'angle');
     this.material(check, out, null);
     delete out.static;
     return { desc: out as unknown as BodyDescription, problems: check.problems };

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -16,10 +16,10 @@ export class PhysicsJointElement extends PhysicsLinkElement {
   @property() a?: string;
   /** Id of the second body element. */
   @property() b?: string;
-  /** Rest length; default the distance when the joint is made. */
-  @property({ type: Number }) length?: number;
-  /** Inverse stiffness (0 = rigid, default). */
-  @property({ type: Number }) compliance?: number;
+  /** Rest length (>= 0); default the distance when the joint is made. */
+  @property({ type: Number, converter: numberAttribute }) length?: number;
+  /** Inverse stiffness (>= 0; 0 = rigid, default). */
+  @property({ type: Number, converter: numberAttribute }) compliance?: number;
 
   describe(resolve: Resolve): Described<LinkDescription> {
     const check = new Checker(this);

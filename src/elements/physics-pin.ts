@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -14,10 +14,10 @@ import { PhysicsLinkElement, type Resolve } from './link-element.js';
 export class PhysicsPinElement extends PhysicsLinkElement {
   /** Id of the body element to pin. */
   @property() body?: string;
-  /** Index of the particle within the body (default: the one nearest to x, y). */
-  @property({ type: Number }) particle?: number;
-  /** 0 (default) holds exactly; > 0 pulls like a zero-length spring. */
-  @property({ type: Number }) compliance?: number;
+  /** Index of the particle within the body (whole number >= 0, less than the body's particle count; default: the one nearest to x, y). */
+  @property({ type: Number, converter: numberAttribute }) particle?: number;
+  /** Compliance (>= 0): 0 (default) holds exactly; more pulls like a zero-length spring. */
+  @property({ type: Number, converter: numberAttribute }) compliance?: number;
 
   describe(resolve: Resolve): Described<LinkDescription> {
     const check = new Checker(this);

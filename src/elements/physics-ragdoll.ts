@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 
 /**
  * A stick-figure ragdoll whose pelvis is at `x`, `y`: bones as sticks, joints with angle limits.
@@ -10,10 +10,10 @@ import { Checker } from './checks.js';
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
 export class PhysicsRagdollElement extends PhysicsBodyElement {
-  /** Height from feet to the top of the head, in world units. Default 1.8. */
-  @property({ type: Number }) height?: number;
-  /** Compliance of the joint limits (0 = hard stops, default). */
-  @property({ type: Number, attribute: 'joint-compliance' }) jointCompliance?: number;
+  /** Height from feet to the top of the head, in world units (> 0). Default 1.8. */
+  @property({ type: Number, converter: numberAttribute }) height?: number;
+  /** Compliance of the joint limits (>= 0; 0 = hard stops, default). */
+  @property({ type: Number, converter: numberAttribute, attribute: 'joint-compliance' }) jointCompliance?: number;
 
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
@@ -26,6 +26,7 @@ export class PhysicsRagdollElement extends PhysicsBodyElement {
     };
     const jc = check.number('joint-compliance', this.jointCompliance, { min: 0 });
     if (jc !== undefined) out.jointCompliance = jc;
+    this.unused(check, 'angle');
     this.material(check, out, null);
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 
 /**
  * A deformable ring centred at `x`, `y`: a pressurised loop (default) or a mass–spring wheel.
@@ -11,15 +11,15 @@ import { Checker } from './checks.js';
  */
 export class PhysicsSoftbodyElement extends PhysicsBodyElement {
   /** Radius in world units (> 0). Default 1. */
-  @property({ type: Number }) radius?: number;
-  /** Particles on the ring (whole number >= 3). Default 16. */
-  @property({ type: Number }) segments?: number;
-  /** Rest area as a multiple of the drawn area (pressure model). Default 1. */
-  @property({ type: Number }) pressure?: number;
+  @property({ type: Number, converter: numberAttribute }) radius?: number;
+  /** Particles on the ring (whole number 3..4096). Default 16. */
+  @property({ type: Number, converter: numberAttribute }) segments?: number;
+  /** Rest area as a multiple of the drawn area (pressure model, > 0). Default 1. */
+  @property({ type: Number, converter: numberAttribute }) pressure?: number;
   /** "pressure" (default) or "springs". */
   @property() model?: string;
-  /** Compliance of the ring's links. Default 0.0001. */
-  @property({ type: Number }) compliance?: number;
+  /** Compliance of the ring's links (>= 0). Default 0.0001. */
+  @property({ type: Number, converter: numberAttribute }) compliance?: number;
 
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
@@ -32,6 +32,7 @@ export class PhysicsSoftbodyElement extends PhysicsBodyElement {
     const out: Record<string, unknown> = { type: 'softbody', center, radius, segments, pressure, model };
     const compliance = check.number('compliance', this.compliance, { min: 0 });
     if (compliance !== undefined) out.compliance = compliance;
+    this.unused(check, 'angle');
     this.material(check, out, Math.PI * radius * radius);
     if (check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
     return { desc: out as unknown as BodyDescription, problems: check.problems };

@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker } from './checks.js';
+import { Checker, numberAttribute } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -17,11 +17,11 @@ export class PhysicsSpringElement extends PhysicsLinkElement {
   /** Id of the second body element. */
   @property() b?: string;
   /** Hooke constant (force per unit length, >= 0). Default 50. */
-  @property({ type: Number }) stiffness?: number;
+  @property({ type: Number, converter: numberAttribute }) stiffness?: number;
   /** Damping (force per unit relative speed, >= 0). Default 1. */
-  @property({ type: Number }) damping?: number;
-  /** Rest length; default the distance when the spring is made. */
-  @property({ type: Number }) length?: number;
+  @property({ type: Number, converter: numberAttribute }) damping?: number;
+  /** Rest length (>= 0); default the distance when the spring is made. */
+  @property({ type: Number, converter: numberAttribute }) length?: number;
 
   describe(resolve: Resolve): Described<LinkDescription> {
     const check = new Checker(this);

@@ -1,7 +1,7 @@
 import { css, html, nothing, type TemplateResult } from 'lit';
 import { property } from 'lit/decorators.js';
 import { ifDefined } from 'lit/directives/if-defined.js';
-import { Checker, type Problem } from './checks.js';
+import { Checker, numberAttribute, type Problem } from './checks.js';
 import { PhysicsSceneElement } from './physics-scene.js';
 import type { PhysicsRagdollElement } from './physics-ragdoll.js';
 import './physics-box.js';
@@ -48,9 +48,9 @@ export class RagdollSimElement extends PhysicsSceneElement {
   ];
 
   /** Number of ragdolls (whole number 1..12). Default 3. The first stand in view; the rest fall in from above. */
-  @property({ type: Number }) count = 3;
-  /** Height of a ragdoll in world units. Default 1.6. */
-  @property({ type: Number }) size = 1.6;
+  @property({ type: Number, converter: numberAttribute }) count = 3;
+  /** Height of a ragdoll in world units (> 0, at most 100). Default 1.6. */
+  @property({ type: Number, converter: numberAttribute }) size = 1.6;
   /** What they fall over: "stairs" (default), "pegs" or "none". */
   @property() obstacles = 'stairs';
   /** Put a ragdoll back at the top once it has lain still for 1.5 s. */
@@ -68,7 +68,7 @@ export class RagdollSimElement extends PhysicsSceneElement {
   private readonly still = new Map<Element, { x: number; y: number; since: number }>();
 
   /** World units down the view. Default 10. */
-  @property({ type: Number }) override height = 10;
+  @property({ type: Number, converter: numberAttribute }) override height = 10;
 
   constructor() {
     super();
