@@ -19,6 +19,8 @@ echo "== browser tests"
 npx web-test-runner --static-logging "$@"
 echo "== gallery stories"
 node scripts/check-stories.mjs
+echo "== browser soak: 1 minute of markup changes (long form: node scripts/browser-soak.mjs --minutes 15)"
+node scripts/browser-soak.mjs --minutes 1
 echo "== build, the single-file build embedded across origins, both builds under a strict CSP"
 npm run build --silent
 node test/e2e/cross-origin.mjs
