@@ -36,6 +36,8 @@ if (!(minutes > 0) || !Number.isFinite(seed)) {
 /** Heap growth allowed between the first sample after warm-up and the last: both limits must be exceeded to fail. */
 const HEAP_TOLERANCE_MB = 3;
 const HEAP_TOLERANCE_FRACTION = 0.2;
+/** Window/document listeners in flight at a sample (see the check). */
+const LISTENER_SLACK = 5;
 const totalMs = minutes * 60_000;
 /** Warm-up: a quarter of the run, at most 2 minutes (JIT, p5 and lit caches, first workers). */
 const warmupMs = Math.min(totalMs / 4, 120_000);
@@ -292,9 +294,16 @@ try {
   );
   console.log(`${last.ops} markup mutations, ${last.reconnects} reconnects, ${last.workersMade} workers made in ${((Date.now() - t0) / 60000).toFixed(1)} min\n`);
   check(growth <= allowed, `heap growth after warm-up ${growth.toFixed(2)} MB <= ${allowed.toFixed(2)} MB (max of ${HEAP_TOLERANCE_MB} MB and ${HEAP_TOLERANCE_FRACTION * 100}% of ${warm.heapMB.toFixed(2)} MB)`);
-  for (const key of ['workers', 'browserWorkers', 'listeners', 'cdpListeners', 'bodies']) {
+  for (const key of ['workers', 'browserWorkers', 'bodies']) {
     const values = after.map((s) => s[key]);
     check(Math.max(...values) <= warm[key], `${key} do not grow after warm-up: ${values.join(', ')}`);
+  }
+  // Window/document listeners: a few come and go with what is in flight when a sample is taken (seen: 71-75 in a
+  // 10-minute run, back to 71 at the end); a leak grows with the mutations, so the last sample may exceed the first
+  // after warm-up by at most LISTENER_SLACK.
+  for (const key of ['listeners', 'cdpListeners']) {
+    const values = after.map((s) => s[key]);
+    check(last[key] <= warm[key] + LISTENER_SLACK, `${key} (window + document) do not grow after warm-up: ${values.join(', ')} (last <= first + ${LISTENER_SLACK})`);
   }
   // Page-wide DOM nodes and listeners (Performance.getMetrics) include nodes no longer in the document but not freed.
   // Known: each disconnect/connect of a scene leaves one canvas node (with p5's listeners on it) behind, so these grow
