@@ -15,7 +15,7 @@
 // page-wide JSEventListeners of CDP Performance.getMetrics) and DOM nodes. Fails (exit 1) when, between the first
 // sample after warm-up and the last, the heap grows by more than HEAP_TOLERANCE_MB and HEAP_TOLERANCE_FRACTION of the
 // first, or a count of workers, window/document listeners, elements or bodies grows; also on page errors. Page-wide
-// DOM nodes and listeners are printed, and checked with --strict (see the known issue below).
+// DOM nodes and listeners too, with a little slack (none with --strict).
 //
 // Usage: node scripts/browser-soak.mjs [--minutes N] [--seed S] [--strict]   (CI: --minutes 1; long form: --minutes 15)
 import { chromium } from 'playwright-core';
@@ -305,16 +305,14 @@ try {
     const values = after.map((s) => s[key]);
     check(last[key] <= warm[key] + LISTENER_SLACK, `${key} (window + document) do not grow after warm-up: ${values.join(', ')} (last <= first + ${LISTENER_SLACK})`);
   }
-  // Page-wide DOM nodes and listeners (Performance.getMetrics) include nodes no longer in the document but not freed.
-  // Known: each disconnect/connect of a scene leaves one canvas node (with p5's listeners on it) behind, so these grow
-  // with the number of reconnects. Reported, and a failure only with --strict until that is fixed.
-  for (const key of ['nodes', 'jsEventListeners']) {
+  // Page-wide DOM nodes and listeners (Performance.getMetrics) include nodes no longer in the document but not freed:
+  // that is how p5 keeping every sketch alive showed (one canvas and about 15 listeners per reconnect, see
+  // pinColorDecorators in src/render/renderer.ts). A little slack for what is in flight; --strict allows none.
+  for (const [key, slack] of [['nodes', 3], ['jsEventListeners', 10]]) {
     const values = after.map((s) => s[key]);
-    const grew = Math.max(...values) > warm[key];
-    if (strict) check(!grew, `page-wide ${key} do not grow after warm-up: ${values.join(', ')}`);
-    else if (grew) console.log(`WARN page-wide ${key} grow after warm-up (${values.join(', ')}; ${last.reconnects - warm.reconnects} reconnects): detached nodes kept alive`);
+    const allowed = strict ? 0 : slack;
+    check(last[key] <= warm[key] + allowed, `page-wide ${key} do not grow after warm-up: ${values.join(', ')} (last <= first + ${allowed})`);
   }
-  check(warm.workers === 3 && last.workers === 3, `one live worker per scene (3) at each sample: ${samples.map((s) => s.workers).join(', ')}`);
   check(last.workersMade > 3 && last.reconnects > 0, `scenes were disconnected and connected again (${last.reconnects} reconnects, ${last.workersMade} workers made)`);
   const nodes = after.map((s) => s.elements);
   check(Math.max(...nodes) <= warm.elements, `elements (page and shadow roots) do not grow: ${nodes.join(', ')}`);

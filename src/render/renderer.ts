@@ -61,6 +61,27 @@ function shapeKind(b: TopologyBody): Group['kind'] {
   return 'shape';
 }
 
+let firstColorMethods: Map<string, unknown> | null = null;
+
+/**
+ * p5 2.x's colour addon wraps p5.Color.prototype's set…/_get… methods again in every sketch's presetup, each wrapper
+ * holding its sketch and the wrapper before it, so every sketch ever made (canvas and listeners included) stays
+ * reachable: one canvas per reconnect. Keep the methods as the first sketch left them and put them back after each
+ * later sketch's presetup, so the chain never grows (we never change p5's colour mode, so any sketch's wrappers
+ * behave alike). At most the first sketch stays reachable.
+ */
+function pinColorDecorators(): void {
+  const proto = (p5 as unknown as { Color?: { prototype: Record<string, unknown> } }).Color?.prototype;
+  if (!proto) return;
+  if (!firstColorMethods) {
+    // Plain methods only: reading an accessor on the prototype itself would throw.
+    firstColorMethods = new Map();
+    for (const [k, d] of Object.entries(Object.getOwnPropertyDescriptors(proto))) if (typeof d.value === 'function' && k !== 'constructor') firstColorMethods.set(k, d.value);
+    return;
+  }
+  for (const [k, v] of firstColorMethods) if (proto[k] !== v) proto[k] = v;
+}
+
 export class SceneRenderer {
   /** World units shown across and down (the viewBox, origin at the top-left). */
   viewWidth = 16;
@@ -111,6 +132,7 @@ export class SceneRenderer {
           void s.remove();
           return;
         }
+        pinColorDecorators();
         const { width, height } = this.boxSize();
         s.pixelDensity(Math.max(1, Math.min(3, window.devicePixelRatio || 1)));
         const renderer = s.createCanvas(width, height);
