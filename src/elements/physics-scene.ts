@@ -1,6 +1,6 @@
 import { LitElement, css, html, nothing, type CSSResultGroup, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
-import type { BodyDescription } from '../engine/index.js';
+import type { BodyDescription, Bounds } from '../engine/index.js';
 import { SceneRenderer, type DrawHook } from '../render/renderer.js';
 import { EngineClient, TimeoutError, WorkerDiedError } from '../worker/client.js';
 import { track } from '../worker/resources.js';
@@ -518,6 +518,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (changed.has('broadphase')) params.broadphase = config.broadphase;
     if (changed.has('narrowphase')) params.narrowphase = config.narrowphase;
     if (changed.has('debug')) params.debug = this.debug;
+    if (changed.has('width') || changed.has('height') || changed.has('bounds')) params.bounds = this.viewBounds(config);
     if (Object.keys(params).length > 0) c.api.setParams(params).then((e) => e && this.reportHostError(e), (e) => this.reportFailure(e));
     if (changed.has('paused')) this.syncRunning();
   }
@@ -929,7 +930,7 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     return {
       world: {
         // Walls at the sides and a floor at the bottom; open at the top, so bodies may start above the view.
-        bounds: config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null,
+        bounds: this.viewBounds(config),
       },
       params: {
         gravity: this.effectiveGravity(config),
@@ -945,6 +946,11 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
       links,
       running: this.running,
     };
+  }
+
+  /** Walls at the sides and a floor at the bottom; open at the top, so bodies may start above the view. */
+  private viewBounds(config: { bounds: 'view' | 'none'; width: number; height: number }): Bounds | null {
+    return config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null;
   }
 
   private adopt(el: PhysicsBodyElement | PhysicsLinkElement, kind: 'body' | 'link'): number {

@@ -45,6 +45,7 @@ const DEFAULT_PARAMS: HostParams = {
   narrowphase: 'sat',
   debug: false,
   events: false,
+  bounds: null,
 };
 
 /** "radius must be > 0, got -1" → "radius". */
@@ -450,6 +451,14 @@ export class EngineHost implements EngineApi {
     set('gravity', () => {
       w.setGravity(params.gravity!.x, params.gravity!.y);
       this.params.gravity = { x: params.gravity!.x, y: params.gravity!.y };
+    });
+    set('bounds', () => {
+      const b = params.bounds;
+      if (b && ![b.minX, b.minY, b.maxX, b.maxY].every(Number.isFinite)) throw new RangeError(`bounds must be finite numbers, got ${JSON.stringify(b)}`);
+      w.bounds = b ? { minX: b.minX, minY: b.minY, maxX: b.maxX, maxY: b.maxY } : null;
+      this.params.bounds = w.bounds && { ...w.bounds };
+      // A rebuild (reset) makes its world from the scene's options: keep the new walls there too.
+      this.worldOptions = { ...this.worldOptions, bounds: w.bounds && { ...w.bounds } };
     });
     set('timestep', () => {
       w.timestep = params.timestep!;

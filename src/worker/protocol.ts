@@ -1,6 +1,6 @@
 // What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
 // and in the worker), and the layout of one published state frame (a Float64Array).
-import type { BodyDescription, BodyKind, BodyType, WorldOptions } from '../engine/index.js';
+import type { BodyDescription, BodyKind, BodyType, Bounds, WorldOptions } from '../engine/index.js';
 
 /** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
 export interface KeyedBody {
@@ -35,6 +35,8 @@ export interface HostParams {
   debug: boolean;
   /** Send collision events (only while someone listens). */
   events: boolean;
+  /** Walls and floor (the view's, or none): they follow the scene's width and height. */
+  bounds: Bounds | null;
 }
 
 export interface HostScene {
