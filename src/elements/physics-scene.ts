@@ -2,7 +2,7 @@ import { LitElement, css, html, nothing, type CSSResultGroup, type TemplateResul
 import { property, state } from 'lit/decorators.js';
 import type { BodyDescription, Bounds } from '../engine/index.js';
 import { SceneRenderer, type DrawHook } from '../render/renderer.js';
-import { EngineClient, TimeoutError, WorkerDiedError } from '../worker/client.js';
+import { EngineClient, EngineStoppedError, TimeoutError, WorkerDiedError } from '../worker/client.js';
 import { track } from '../worker/resources.js';
 import { EVENT, type Diagnostics, type FramePatch, type HostError, type HostParams, type HostScene, type HostSnapshot, type KeyedBody, type KeyedLink, type LinkDescription, type Transport } from '../worker/protocol.js';
 import { PhysicsBodyElement } from './body-element.js';
@@ -1152,6 +1152,8 @@ export class PhysicsSceneElement extends LitElement implements SceneHost {
     if (!this.client && !this.starting) return;
     // A worker that died or stopped answering is reported once, by workerDied(), not once per call it failed.
     if (error instanceof WorkerDiedError || (error instanceof TimeoutError && this.client?.mode !== 'main')) return;
+    // Calls still pending when the scene stopped its own engine (a restart for a new worker attribute, a disconnect).
+    if (error instanceof EngineStoppedError) return;
     this.report(this, '', '', `engine: ${error instanceof Error ? error.message : String(error)}`);
   }
 

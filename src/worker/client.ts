@@ -46,6 +46,11 @@ export class WorkerDiedError extends Error {
   override name = 'WorkerDiedError';
 }
 
+/** A call on an engine its owner has stopped (disposed), or still pending when it did. */
+export class EngineStoppedError extends Error {
+  override name = 'EngineStoppedError';
+}
+
 /** The two newest frames, copied out of whatever carried them (no allocation unless the scene grows). */
 export class FrameStore {
   prev = new Float64Array(HEADER);
@@ -195,7 +200,7 @@ export class EngineClient {
 
   private call(method: keyof EngineApi, args: unknown[], timeout: number, hung?: string): Promise<unknown> {
     if (this.deathReason !== null) return Promise.reject(new WorkerDiedError(`${method}(): the engine worker died (${this.deathReason})`));
-    if (this.disposed) return Promise.reject(new Error(`engine stopped (${method})`));
+    if (this.disposed) return Promise.reject(new EngineStoppedError(`engine stopped (${method})`));
     return new Promise((resolve, reject) => {
       const fail = (error: Error) => {
         clearTimeout(timer);
@@ -359,7 +364,7 @@ export class EngineClient {
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
-    this.failAll((method) => new Error(`engine stopped (${method})`));
+    this.failAll((method) => new EngineStoppedError(`engine stopped (${method})`));
     this.teardown();
     this.triple = null;
   }
