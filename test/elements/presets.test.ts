@@ -198,8 +198,9 @@ describe('<ragdoll-sim>', () => {
     await waitFor(() => doll.x > x0 + 2, 'the ragdoll to follow the pointer');
     const atRelease = doll.x;
     pointer(sim, 'pointerup', x0 + 5, y0 + 2);
-    // Thrown: it flies on to the right after the pointer let go.
-    await waitFor(() => doll.x > Math.max(atRelease, x0 + 5) + 1, 'the ragdoll to fly on after release');
+    // Thrown: it keeps the speed it had and flies on to the right after the pointer let go (no gravity, no walls
+    // in its way for a while). Measured from where it was at release: on a loaded machine it may still lag the pointer.
+    await waitFor(() => doll.x > atRelease + 1.5, 'the ragdoll to fly on after release', 8000);
   });
 
   it('bad attributes fall back to defaults and are reported on the element', async () => {
