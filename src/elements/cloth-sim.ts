@@ -1,8 +1,8 @@
-import { css, html, nothing, type TemplateResult } from 'lit';
+import { html, nothing, type TemplateResult } from 'lit';
 import { property } from 'lit/decorators.js';
 import { ifDefined } from 'lit/directives/if-defined.js';
 import { Checker, numberAttribute, type Problem } from './checks.js';
-import { PhysicsSceneElement } from './physics-scene.js';
+import { PresetSceneElement } from './preset-scene.js';
 import './physics-cloth.js';
 
 interface ClothSetup {
@@ -37,16 +37,7 @@ interface ClothSetup {
  * @csspart error - The visible list of current problems.
  * @csspart play-button - The play control (reduced motion, or paused with Space).
  */
-export class ClothSimElement extends PhysicsSceneElement {
-  static override styles = [
-    PhysicsSceneElement.styles,
-    css`
-      .bodies {
-        display: none;
-      }
-    `,
-  ];
-
+export class ClothSimElement extends PresetSceneElement<ClothSetup> {
   /** Particles across (whole number 2..200). Default 24. */
   @property({ type: Number, converter: numberAttribute }) columns = 24;
   /** Particles down (whole number 2..200). Default 16. */
@@ -71,12 +62,8 @@ export class ClothSimElement extends PhysicsSceneElement {
   /** Cloth line colour (CSS colour or "none"). Default "#2f6fb5". */
   @property() stroke?: string;
 
-  private setup: ClothSetup | null = null;
   private windTimer: ReturnType<typeof setInterval> | null = null;
   private windStart = 0;
-
-  /** World units down the view. Default 10. */
-  @property({ type: Number, converter: numberAttribute }) override height = 10;
 
   constructor() {
     super();
@@ -86,18 +73,8 @@ export class ClothSimElement extends PhysicsSceneElement {
     return 'Cloth simulation: drag the cloth to pull it';
   }
 
-  protected override get bodyContainer(): ParentNode & Node {
-    return (this.renderRoot?.querySelector('.bodies') as HTMLElement | null) ?? this.renderRoot ?? this;
-  }
-
-  protected override willUpdate(changed: Map<string, unknown>): void {
-    super.willUpdate(changed);
-    this.setup = this.readSetup();
-  }
-
   protected override updated(changed: Map<string, unknown>): void {
     super.updated(changed);
-    this.reportPresetProblems(this.setup?.problems ?? []);
     if (changed.has('wind') || changed.has('gusts')) this.runningChanged(this.running);
   }
 
@@ -150,7 +127,7 @@ export class ClothSimElement extends PhysicsSceneElement {
     this.setGravityOffset(s.wind * (1 + s.gusts * n), 0);
   }
 
-  private readSetup(): ClothSetup {
+  protected override readSetup(): ClothSetup {
     const check = new Checker(this);
     const columns = check.number('columns', this.columns, { integer: true, min: 2, max: 200, fallback: 24 })!;
     const rows = check.number('rows', this.rows, { integer: true, min: 2, max: 200, fallback: 16 })!;

@@ -1,8 +1,8 @@
-import { css, html, nothing, type TemplateResult } from 'lit';
+import { html, nothing, type TemplateResult } from 'lit';
 import { property } from 'lit/decorators.js';
 import { ifDefined } from 'lit/directives/if-defined.js';
 import { Checker, numberAttribute, type Problem } from './checks.js';
-import { PhysicsSceneElement } from './physics-scene.js';
+import { PresetSceneElement } from './preset-scene.js';
 import type { PhysicsRagdollElement } from './physics-ragdoll.js';
 import './physics-box.js';
 import './physics-circle.js';
@@ -37,16 +37,7 @@ const REST_SECONDS = 1.5;
  * @csspart error - The visible list of current problems.
  * @csspart play-button - The play control (reduced motion, or paused with Space).
  */
-export class RagdollSimElement extends PhysicsSceneElement {
-  static override styles = [
-    PhysicsSceneElement.styles,
-    css`
-      .bodies {
-        display: none;
-      }
-    `,
-  ];
-
+export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   /** Number of ragdolls (whole number 1..12). Default 3. The first stand in view; the rest fall in from above. */
   @property({ type: Number, converter: numberAttribute }) count = 3;
   /** Height of a ragdoll in world units (> 0, at most 100). Default 1.6. */
@@ -63,12 +54,8 @@ export class RagdollSimElement extends PhysicsSceneElement {
   /** Ragdolls put back at the top so far. */
   respawned = 0;
 
-  private setup: RagdollSetup | null = null;
   private watchTimer: ReturnType<typeof setInterval> | null = null;
   private readonly still = new Map<Element, { x: number; y: number; since: number }>();
-
-  /** World units down the view. Default 10. */
-  @property({ type: Number, converter: numberAttribute }) override height = 10;
 
   constructor() {
     super();
@@ -90,18 +77,8 @@ export class RagdollSimElement extends PhysicsSceneElement {
     return 'Ragdoll simulation: drag a ragdoll and let go to throw it';
   }
 
-  protected override get bodyContainer(): ParentNode & Node {
-    return (this.renderRoot?.querySelector('.bodies') as HTMLElement | null) ?? this.renderRoot ?? this;
-  }
-
-  protected override willUpdate(changed: Map<string, unknown>): void {
-    super.willUpdate(changed);
-    this.setup = this.readSetup();
-  }
-
   protected override updated(changed: Map<string, unknown>): void {
     super.updated(changed);
-    this.reportPresetProblems(this.setup?.problems ?? []);
     if (changed.has('respawn')) this.runningChanged(this.running);
   }
 
@@ -204,7 +181,7 @@ export class RagdollSimElement extends PhysicsSceneElement {
     });
   }
 
-  private readSetup(): RagdollSetup {
+  protected override readSetup(): RagdollSetup {
     const check = new Checker(this);
     const count = check.number('count', this.count, { integer: true, min: 1, max: 12, fallback: 3 })!;
     const size = check.number('size', this.size, { positive: true, max: 100, fallback: 1.6 })!;
