@@ -229,7 +229,7 @@ describe('fault recovery', () => {
     expect(errors[0].message).to.match(/engine worker died \(stateHash\(\) did not answer within 800 ms\); restarting it \(attempt 1 of 3\)/);
     // The hung worker is terminated (it does not spin on), and the new one answers, still paused where it was.
     await s.ready;
-    expect(workers.live.size).to.equal(1);
+    await waitFor(() => workers.live.size === 1, 'one live worker (the new one)', 4000);
     expect(await s.stateHash()).to.match(/\S/);
     const y = box.y;
     expect(y).to.be.above(2);

@@ -32,7 +32,8 @@ describe('<physics-scene> pointer drag', () => {
     expect(crate.y).to.be.closeTo(5, 0.3);
     // … and, thrown, flies on with the speed the drag gave it (no gravity, no friction in the air).
     await waitFor(() => crate.x > 8.5, 'the crate to fly on past where the pointer let go (x = 7)');
-    expect(crate.y).to.be.closeTo(5, 0.5);
+    // Straight on: no gravity pulls it down (a drag held off its centre may have set it spinning a little).
+    expect(crate.y).to.be.closeTo(5, 0.75);
   });
 
   it('a press on empty space moves nothing; a drag pulls a cloth particle', async () => {
