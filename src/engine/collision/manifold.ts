@@ -3,7 +3,7 @@
 // position-based response of seed 4.2 needs (which vertex of which shape penetrates which edge, and where along it).
 import type { Manifold } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, pointSeparation, sep } from './scratch.js';
+import { ax, ay, bx, by, load, maxSeparation, near, nearestFeature, sep } from './scratch.js';
 
 /**
  * The reference face is the polygon whose best separating facet is shallower by this fraction of the depth; A wins
@@ -222,39 +222,9 @@ function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Manifold, margin:
   const cx = c.xs[ci];
   const cy = c.ys[ci];
   const r = c.radius;
-  const { xs, ys, index, offset, count } = p;
-  const reach = r + margin;
-  pointSeparation(p, cx, cy, reach);
-  if (sep.value >= reach) return miss(out);
-  const best = sep.value;
-  const bestI = sep.edge;
-  const bnx = sep.nx;
-  const bny = sep.ny;
-  if (bestI < 0) return miss(out); // P has no edge of positive length
-  const i1 = index[offset + bestI];
-  const i2 = index[offset + (bestI + 1 === count ? 0 : bestI + 1)];
-  const x1 = xs[i1];
-  const y1 = ys[i1];
-  const ex = xs[i2] - x1;
-  const ey = ys[i2] - y1;
-  let alpha = ((cx - x1) * ex + (cy - y1) * ey) / (ex * ex + ey * ey);
-  let nx = bnx;
-  let ny = bny;
-  let depth = r - best;
-  if (best > 0 && (alpha <= 0 || alpha >= 1)) {
-    // Vertex region: the normal runs from the nearest vertex to the centre.
-    alpha = alpha <= 0 ? 0 : 1;
-    const vx = x1 + alpha * ex;
-    const vy = y1 + alpha * ey;
-    const dx = cx - vx;
-    const dy = cy - vy;
-    const d = Math.sqrt(dx * dx + dy * dy);
-    if (d >= reach) return miss(out);
-    nx = dx / d;
-    ny = dy / d;
-    depth = r - d;
-  } else if (alpha < 0) alpha = 0;
-  else if (alpha > 1) alpha = 1;
+  if (!nearestFeature(p, cx, cy, r + margin)) return miss(out);
+  const { nx, ny, alpha } = near;
+  const depth = r - near.distance;
   out.count = 1;
   out.normalX = flip ? -nx : nx;
   out.normalY = flip ? -ny : ny;
@@ -263,7 +233,7 @@ function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Manifold, margin:
   out.pointY[0] = cy - (r - 0.5 * depth) * ny;
   out.incident[0] = flip ? 0 : 1;
   out.vertex[0] = 0;
-  out.edge[0] = bestI;
+  out.edge[0] = near.edge;
   out.alpha[0] = alpha;
   return true;
 }

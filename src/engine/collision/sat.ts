@@ -4,7 +4,7 @@
 // contains the other. Shapes that only touch are not a hit.
 import type { Penetration } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, pointSeparation, sep } from './scratch.js';
+import { ax, ay, bx, by, load, maxSeparation, near, nearestFeature, sep } from './scratch.js';
 
 /**
  * Overlap test with MTV. Polygon–polygon, polygon–circle, circle–circle, and segments (as two-sided polygons) with
@@ -65,64 +65,24 @@ function polygonCircle(p: Shape, c: Shape, flip: boolean, out: Penetration): boo
   const cx = c.xs[ci];
   const cy = c.ys[ci];
   const r = c.radius;
-  const { xs, ys, index, offset, count } = p;
-  pointSeparation(p, cx, cy, r);
-  if (sep.value >= r) return miss(out);
-  const best = sep.value;
-  const bestI = sep.edge;
-  const bnx = sep.nx;
-  const bny = sep.ny;
   let nx: number;
   let ny: number;
   let depth: number;
-  if (best === -Infinity) {
+  if (nearestFeature(p, cx, cy, r)) {
+    nx = near.nx;
+    ny = near.ny;
+    depth = r - near.distance;
+  } else if (near.edge < 0) {
     // Every edge has zero length: P is a point.
-    const v = index[offset];
-    const dx = cx - xs[v];
-    const dy = cy - ys[v];
+    const v = p.index[p.offset];
+    const dx = cx - p.xs[v];
+    const dy = cy - p.ys[v];
     const d = Math.sqrt(dx * dx + dy * dy);
     if (d >= r) return miss(out);
     nx = d > 0 ? dx / d : 1;
     ny = d > 0 ? dy / d : 0;
     depth = r - d;
-  } else if (best <= 0) {
-    // Centre inside P: push out through the nearest edge.
-    nx = bnx;
-    ny = bny;
-    depth = r - best;
-  } else {
-    const i1 = index[offset + bestI];
-    const i2 = index[offset + (bestI + 1 === count ? 0 : bestI + 1)];
-    const x1 = xs[i1];
-    const y1 = ys[i1];
-    const x2 = xs[i2];
-    const y2 = ys[i2];
-    const ex = x2 - x1;
-    const ey = y2 - y1;
-    let vx = NaN;
-    let vy = 0;
-    if ((cx - x1) * ex + (cy - y1) * ey <= 0) {
-      vx = x1;
-      vy = y1;
-    } else if ((cx - x2) * ex + (cy - y2) * ey >= 0) {
-      vx = x2;
-      vy = y2;
-    }
-    if (vx === vx) {
-      // Vertex region: the axis through the nearest vertex.
-      const dx = cx - vx;
-      const dy = cy - vy;
-      const d = Math.sqrt(dx * dx + dy * dy);
-      if (d >= r) return miss(out);
-      nx = dx / d;
-      ny = dy / d;
-      depth = r - d;
-    } else {
-      nx = bnx;
-      ny = bny;
-      depth = r - best;
-    }
-  }
+  } else return miss(out);
   // (nx, ny) points from P to C; C's deepest point is centre − r·n.
   out.hit = true;
   out.depth = depth;

@@ -123,3 +123,40 @@ export function pointSeparation(p: Shape, cx: number, cy: number, stop: number):
   sep.nx = bnx;
   sep.ny = bny;
 }
+
+/** Result registers of nearestFeature. */
+export const near = { nx: 0, ny: 0, distance: 0, edge: -1, alpha: 0 };
+
+/**
+ * Where a circle's centre (cx, cy) meets polygon P (or segment): into `near`, the unit normal from P towards the centre,
+ * the centre's signed distance from P along it (negative inside: then the nearest edge's normal), the edge and where
+ * along it (alpha in [0, 1]; 0 or 1 in a vertex region, where the normal runs from that vertex). False when the centre
+ * is `reach` or more away, or P has no edge of positive length (near.edge is then −1).
+ */
+export function nearestFeature(p: Shape, cx: number, cy: number, reach: number): boolean {
+  pointSeparation(p, cx, cy, reach);
+  near.edge = sep.edge;
+  if (sep.edge < 0 || sep.value >= reach) return false;
+  const { xs, ys, index, offset, count } = p;
+  const i1 = index[offset + sep.edge];
+  const i2 = index[offset + (sep.edge + 1 === count ? 0 : sep.edge + 1)];
+  const x1 = xs[i1];
+  const y1 = ys[i1];
+  const ex = xs[i2] - x1;
+  const ey = ys[i2] - y1;
+  const alpha = ((cx - x1) * ex + (cy - y1) * ey) / (ex * ex + ey * ey);
+  near.nx = sep.nx;
+  near.ny = sep.ny;
+  near.distance = sep.value;
+  near.alpha = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+  if (sep.value > 0 && (alpha <= 0 || alpha >= 1)) {
+    const dx = cx - (x1 + near.alpha * ex);
+    const dy = cy - (y1 + near.alpha * ey);
+    const d = Math.sqrt(dx * dx + dy * dy);
+    if (d >= reach) return false;
+    near.nx = dx / d;
+    near.ny = dy / d;
+    near.distance = d;
+  }
+  return true;
+}
