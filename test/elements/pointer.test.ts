@@ -31,7 +31,8 @@ describe('<physics-scene> pointer drag', () => {
     expect(atRelease).to.be.greaterThan(4.5);
     expect(crate.y).to.be.closeTo(5, 0.3);
     // … and, thrown, flies on with the speed the drag gave it (no gravity, no friction in the air).
-    await waitFor(() => crate.x > 8.5, 'the crate to fly on past where the pointer let go (x = 7)');
+    // Measured from where it was at release: on a loaded machine it may still lag the pointer (x = 7) then.
+    await waitFor(() => crate.x > atRelease + 1.5, 'the crate to fly on after release', 8000);
     // Straight on: no gravity pulls it down (a drag held off its centre may have set it spinning a little).
     expect(crate.y).to.be.closeTo(5, 0.75);
   });
