@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every test: installs what it needs (npm packages, Debian's chromium), type-checks, checks that the engine runs in
-# plain Node, then runs all test files in chromium with @web/test-runner. Exits non-zero on any failure.
+# Every test: installs what it needs (npm packages, Debian's chromium), type-checks, runs the engine's tests in Node
+# (mocha), then the element, worker and drawing tests in chromium with @web/test-runner. Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
@@ -12,7 +12,9 @@ echo "== custom-elements.json up to date"
 cp custom-elements.json /tmp/custom-elements.committed.json
 npm run analyze --silent >/dev/null
 cmp -s /tmp/custom-elements.committed.json custom-elements.json || { echo "custom-elements.json was out of date (regenerated now): commit it"; exit 1; }
-echo "== engine in Node"
+echo "== engine tests in Node"
+npx mocha
+echo "== engine in Node: allocation per step, soak"
 node scripts/engine-in-node.mjs
 node --expose-gc scripts/soak.mjs --steps 30000 --samples 5
 echo "== browser tests"

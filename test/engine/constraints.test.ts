@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, createRope, createCloth, createRagdoll, createBox, createSoftBody, RAGDOLL_JOINTS } from '../../src/engine/index.js';
 import { allFinite, distance, totalEnergy } from './helpers.js';
 

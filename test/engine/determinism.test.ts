@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, createCloth, createRagdoll, createRope, createSoftBody, createBox } from '../../src/engine/index.js';
 
 function busyWorld(): World {

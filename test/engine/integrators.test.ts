@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, INTEGRATORS } from '../../src/engine/index.js';
 import { totalEnergy } from './helpers.js';
 

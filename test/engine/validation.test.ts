@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, createCloth, createRope, createPolygon } from '../../src/engine/index.js';
 import { allFinite } from './helpers.js';
 

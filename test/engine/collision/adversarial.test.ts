@@ -2,7 +2,7 @@
 // SAT, boolean GJK and GJK + EPA agree with each other within a documented tolerance:
 //   TOLERANCE = 1e-9 · (shape size + largest coordinate magnitude)
 // Pairs whose overlap or gap is within that tolerance may be called either way (touching, to rounding).
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import {
   ShapeType, sat, gjkIntersect, gjkEpa, gjkDistance, polygonManifold, raycast, pointInShape,
   Penetration, ClosestPoints, Manifold, RayHit, type Shape,

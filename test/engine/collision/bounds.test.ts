@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import fc from 'fast-check';
 import {
   AABB, BoundingCircle, KDOP8, OBB, Penetration, ShapeType, aabbArea, aabbContains, aabbOf, aabbOverlap, boundingCircle,

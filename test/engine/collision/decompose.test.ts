@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { Penetration, assertConvex, decompose, decomposeToShapes, polygon, sat, triangulate } from '../../../src/engine/collision/index.js';
 import { Failures, insideSimple, rng, shoelace2, throwsNaming } from './helpers.js';
 

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import {
   ClosestPoints, Manifold, Penetration, ShapeType, circle, gjkDistance, gjkEpa, gjkIntersect, polygon, polygonManifold,
   polygonView, sat, segment, type Shape,

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { ClosestPoints, ShapeType, gjkDistance, polygon, sat, Penetration } from '../../../src/engine/collision/index.js';
 import {
   Failures, KINDS, boundaryDistance, bruteSignedDistance, describeShape, make, randomPair, rng, sizeOf, solidDistance,

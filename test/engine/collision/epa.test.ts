@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import {
   Penetration, Simplex, ShapeType, epa, gjkEpa, gjkIntersect, polygon, sat, supportPoint,
 } from '../../../src/engine/collision/index.js';

@@ -1,5 +1,5 @@
 // Random shapes from a fixed seed, and brute-force oracles that share no code with the algorithms under test.
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { ShapeType, ShapeView, supportPoint, type Shape } from '../../../src/engine/collision/index.js';
 
 /** mulberry32: a small, fast, seedable generator (uniform in [0, 1)). */

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { Manifold, Penetration, ShapeType, polygon, polygonManifold, sat, type Shape } from '../../../src/engine/collision/index.js';
 import { Failures, KINDS, boundaryDistance, describeShape, make, overlapAlong, pts, randomPair, rng, sizeOf } from './helpers.js';
 

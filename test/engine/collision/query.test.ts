@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { RayHit, ShapeType, pointInShape, polygon, raycast, circle, segment } from '../../../src/engine/collision/index.js';
 import { Failures, KINDS, boundaryDistance, pts, randomShape, rng, solidDistance } from './helpers.js';
 

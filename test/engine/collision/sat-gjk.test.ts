@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { ClosestPoints, Penetration, gjkDistance, gjkIntersect, sat } from '../../../src/engine/collision/index.js';
 import {
   Failures, KINDS, boundaryDistance, bruteSignedDistance, describeShape, randomPair, rng, sizeOf, translated,

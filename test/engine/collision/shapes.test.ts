@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import fc from 'fast-check';
 import { World } from '../../../src/engine/index.js';
 import { handleSlot } from '../../../src/engine/handles.js';

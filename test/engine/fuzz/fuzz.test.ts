@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { fuzzScene, violation } from './generator.js';
 
 // The short batch CI runs; `node scripts/fuzz.mjs --scenes 100000` runs the long form. A seed that ever fails is

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { BruteForceBroadPhase, GridBroadPhase, PairList } from '../../../src/engine/pipeline/broadphase.js';
 import { Colliders } from '../../../src/engine/pipeline/colliders.js';
 import { random } from './scene-helpers.js';

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { deepestPenetration, scene } from './scene-helpers.js';
 
 function escaped(world: import('../../../src/engine/index.js').World, handles: number[]): number {

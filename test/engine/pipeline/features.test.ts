@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, createBox, createCircle, createCloth, createPolygon, createSoftBody, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
 import { scene } from './scene-helpers.js';
 

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { World, createBox, createCircle } from '../../../src/engine/index.js';
 import { scene } from './scene-helpers.js';
 

@@ -1,4 +1,4 @@
-import { expect } from '@open-wc/testing';
+import { expect } from 'chai';
 import { deepestPenetration, scene } from './scene-helpers.js';
 
 // Sleeping is off in these tests: a stack that fell asleep would pass without being stable.
