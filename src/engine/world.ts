@@ -1130,14 +1130,17 @@ export class World {
   /**
    * Real time has passed: take as many fixed steps as fit (at most maxCatchUpSteps; an older backlog is dropped
    * so a stalled tab does not spiral) and leave the remainder's fraction in `alpha` for interpolated rendering.
-   * In variableStep mode, take one step of the elapsed time instead. Returns the steps taken.
+   * In variableStep mode, take one step of the elapsed time instead. `afterStep` runs after each step taken (read
+   * that step's collision events and breaks there: the next step overwrites them). Returns the steps taken.
    */
-  advance(elapsed: number): number {
+  advance(elapsed: number, afterStep?: () => void): number {
     nonNegative('elapsed', elapsed);
+    if (afterStep !== undefined && typeof afterStep !== 'function') throw new TypeError(`afterStep must be a function, got ${String(afterStep)}`);
     if (this.variableStep) {
       if (elapsed === 0) return 0;
       this.step(Math.min(elapsed, this._timestep * this._maxCatchUpSteps));
       this.alpha = 1;
+      afterStep?.();
       return 1;
     }
     this.accumulator += elapsed;
@@ -1146,6 +1149,7 @@ export class World {
       this.step();
       this.accumulator -= this._timestep;
       taken++;
+      afterStep?.();
     }
     if (this.accumulator >= this._timestep) this.accumulator %= this._timestep;
     this.alpha = this.accumulator / this._timestep;

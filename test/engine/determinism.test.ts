@@ -71,4 +71,20 @@ describe('determinism', () => {
     expect(variable.advance(0.023)).to.equal(1);
     expect(variable.time).to.be.closeTo(0.023, 1e-12);
   });
+
+  it('advance() calls afterStep after each step it takes, with that step\'s state', () => {
+    const world = new World({ timestep: 0.01, maxCatchUpSteps: 5 });
+    const seen: number[] = [];
+    expect(world.advance(0.035, () => seen.push(world.stepCount))).to.equal(3);
+    expect(seen).to.deep.equal([1, 2, 3]);
+    expect(world.advance(0.004, () => seen.push(-1))).to.equal(0); // no step, no call
+    expect(world.advance(1, () => seen.push(world.stepCount))).to.equal(5);
+    expect(seen).to.deep.equal([1, 2, 3, 4, 5, 6, 7, 8]);
+    const variable = new World({ variableStep: true, timestep: 0.01 });
+    let calls = 0;
+    variable.advance(0.02, () => calls++);
+    variable.advance(0, () => calls++);
+    expect(calls).to.equal(1);
+    expect(() => world.advance(0.01, 'x' as unknown as () => void)).to.throw(TypeError, /afterStep/);
+  });
 });
