@@ -1,0 +1,292 @@
+// Contact manifolds for rigid bodies, in world coordinates: convex polygon vs polygon (reference face by the
+// separating axis, incident edge clipped to its side planes, as Box2D's b2CollidePolygons), polygon vs circle and
+// circle vs circle. Each point is a pair of points, one on each outline, with pA − pB = depth · n (n from A to B;
+// depth < 0 for a speculative point within `margin`), and, for B, the edge it lies on and where along it (a
+// particle-built outline turns that into the two particles it moves).
+//
+// Polygons here are strictly convex and counter-clockwise with unit outward normals given (a rigid shape merges
+// collinear vertices once, when it is built); everything runs on caller-owned arrays and allocates nothing.
+
+/** Up to two contact points of one pair of convex shapes. */
+export class ContactManifold {
+  count = 0;
+  /** Unit normal from A to B. */
+  nx = 0;
+  ny = 0;
+  pAx = new Float64Array(2);
+  pAy = new Float64Array(2);
+  pBx = new Float64Array(2);
+  pBy = new Float64Array(2);
+  depth = new Float64Array(2);
+  /** B's edge (vertex k to k + 1) the point lies on and the fraction along it; edge −1 for a circle. */
+  edgeB = new Int32Array(2);
+  alphaB = new Float64Array(2);
+}
+
+/** A convex polygon as views into vertex and normal arrays: vertices [start, start + count). */
+export interface PolygonRef {
+  x: Float64Array;
+  y: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+  start: number;
+  count: number;
+}
+
+/** The reference face is B's only when its separation beats A's by this much (so it does not flicker on ties). */
+const REFERENCE_TOLERANCE = 5e-4;
+
+/** Result scratch of maxSeparation (a double returned from a call that is not inlined is boxed). */
+const found = new Float64Array(2);
+
+/** The largest over P's edges of the smallest signed distance of Q's vertices to it, into found[0]; the edge into found[1]. */
+function maxSeparation(P: PolygonRef, Q: PolygonRef): void {
+  let best = -Infinity;
+  let bestEdge = 0;
+  const { x: px, y: py, nx: pnx, ny: pny } = P;
+  const { x: qx, y: qy } = Q;
+  const qs = Q.start;
+  const qn = Q.count;
+  for (let i = 0; i < P.count; i++) {
+    const k = P.start + i;
+    const nx = pnx[k];
+    const ny = pny[k];
+    const vx = px[k];
+    const vy = py[k];
+    let min = Infinity;
+    for (let j = qs; j < qs + qn; j++) {
+      const d = (qx[j] - vx) * nx + (qy[j] - vy) * ny;
+      if (d < min) min = d;
+    }
+    if (min > best) {
+      best = min;
+      bestEdge = i;
+    }
+  }
+  found[0] = best;
+  found[1] = bestEdge;
+}
+
+/**
+ * Polygon A against polygon B. Returns false when they are more than `margin` apart (or no point survives clipping).
+ */
+export function collidePolygons(A: PolygonRef, B: PolygonRef, margin: number, out: ContactManifold): boolean {
+  out.count = 0;
+  maxSeparation(A, B);
+  const sepA = found[0];
+  if (sepA > margin) return false;
+  const edgeA = found[1];
+  maxSeparation(B, A);
+  const sepB = found[0];
+  if (sepB > margin) return false;
+  const edgeB = found[1];
+  if (sepB > sepA + REFERENCE_TOLERANCE) return clip(B, edgeB, A, true, margin, out);
+  return clip(A, edgeA, B, false, margin, out);
+}
+
+/**
+ * Clips the incident edge of I against reference edge e of R (R = B when `flip`), keeping points within `margin`
+ * of the reference face.
+ */
+function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, margin: number, out: ContactManifold): boolean {
+  const r0 = R.start + e;
+  const r1 = R.start + (e + 1 === R.count ? 0 : e + 1);
+  const nx = R.nx[r0];
+  const ny = R.ny[r0];
+  const v1x = R.x[r0];
+  const v1y = R.y[r0];
+  const v2x = R.x[r1];
+  const v2y = R.y[r1];
+  // Incident edge: the one whose normal is most anti-parallel to the reference normal.
+  let inc = 0;
+  let most = Infinity;
+  for (let k = 0; k < I.count; k++) {
+    const dot = I.nx[I.start + k] * nx + I.ny[I.start + k] * ny;
+    if (dot < most) {
+      most = dot;
+      inc = k;
+    }
+  }
+  const i0 = I.start + inc;
+  const i1 = I.start + (inc + 1 === I.count ? 0 : inc + 1);
+  let w1x = I.x[i0];
+  let w1y = I.y[i0];
+  let w2x = I.x[i1];
+  let w2y = I.y[i1];
+  // Side planes of the reference edge, along its tangent t (from v1 to v2): keep t·(w − v1) ≥ 0 and t·(w − v2) ≤ 0.
+  const tx = -ny;
+  const ty = nx;
+  // With counter-clockwise order and outward normal n = (ty, −tx) of tangent t: t = (−ny, nx).
+  const lo = v1x * tx + v1y * ty;
+  const hi = v2x * tx + v2y * ty;
+  let s1 = w1x * tx + w1y * ty;
+  let s2 = w2x * tx + w2y * ty;
+  // The incident edge runs against the reference tangent; clip each end into [lo, hi].
+  if (s1 > hi) {
+    if (s2 > hi) return false;
+    const f = (s1 - hi) / (s1 - s2);
+    w1x += f * (w2x - w1x);
+    w1y += f * (w2y - w1y);
+    s1 = hi;
+  } else if (s1 < lo) {
+    if (s2 < lo) return false;
+    const f = (lo - s1) / (s2 - s1);
+    w1x += f * (w2x - w1x);
+    w1y += f * (w2y - w1y);
+    s1 = lo;
+  }
+  if (s2 > hi) {
+    const f = (s2 - hi) / (s2 - s1);
+    w2x += f * (w1x - w2x);
+    w2y += f * (w1y - w2y);
+  } else if (s2 < lo) {
+    const f = (lo - s2) / (s1 - s2);
+    w2x += f * (w1x - w2x);
+    w2y += f * (w1y - w2y);
+  }
+  out.nx = flip ? -nx : nx;
+  out.ny = flip ? -ny : ny;
+  // The incident edge's direction for the fraction along it (B's edge when B is incident).
+  const ex = I.x[i1] - I.x[i0];
+  const ey = I.y[i1] - I.y[i0];
+  const elen2 = ex * ex + ey * ey;
+  const rex = v2x - v1x;
+  const rey = v2y - v1y;
+  const rlen2 = rex * rex + rey * rey;
+  for (let k = 0; k < 2; k++) {
+    const wx = k === 0 ? w1x : w2x;
+    const wy = k === 0 ? w1y : w2y;
+    const sep = (wx - v1x) * nx + (wy - v1y) * ny;
+    if (sep > margin) continue;
+    const j = out.count++;
+    // Q: the incident point projected onto the reference face.
+    const qx = wx - sep * nx;
+    const qy = wy - sep * ny;
+    out.depth[j] = -sep;
+    if (flip) {
+      // B is the reference: A's point is the incident one.
+      out.pAx[j] = wx;
+      out.pAy[j] = wy;
+      out.pBx[j] = qx;
+      out.pBy[j] = qy;
+      out.edgeB[j] = e;
+      out.alphaB[j] = clamp01(((qx - v1x) * rex + (qy - v1y) * rey) / rlen2);
+    } else {
+      out.pAx[j] = qx;
+      out.pAy[j] = qy;
+      out.pBx[j] = wx;
+      out.pBy[j] = wy;
+      out.edgeB[j] = inc;
+      out.alphaB[j] = clamp01(((wx - I.x[i0]) * ex + (wy - I.y[i0]) * ey) / elen2);
+    }
+  }
+  return out.count > 0;
+}
+
+function clamp01(a: number): number {
+  return a < 0 ? 0 : a > 1 ? 1 : a;
+}
+
+/**
+ * Polygon P against a circle (centre cx, cy, radius r). With `circleIsA` the circle is side A (the normal and the
+ * points are swapped accordingly); otherwise P is A. For the polygon side as B, edgeB/alphaB say where on it.
+ */
+export function collidePolygonCircle(P: PolygonRef, cx: number, cy: number, r: number, circleIsA: boolean, margin: number, out: ContactManifold): boolean {
+  out.count = 0;
+  // The edge the centre is farthest outside of (or least inside).
+  let best = -Infinity;
+  let edge = 0;
+  for (let i = 0; i < P.count; i++) {
+    const k = P.start + i;
+    const s = (cx - P.x[k]) * P.nx[k] + (cy - P.y[k]) * P.ny[k];
+    if (s > best) {
+      best = s;
+      edge = i;
+    }
+  }
+  if (best - r > margin) return false;
+  const k0 = P.start + edge;
+  const k1 = P.start + (edge + 1 === P.count ? 0 : edge + 1);
+  const v1x = P.x[k0];
+  const v1y = P.y[k0];
+  const ex = P.x[k1] - v1x;
+  const ey = P.y[k1] - v1y;
+  const len2 = ex * ex + ey * ey;
+  const along = ((cx - v1x) * ex + (cy - v1y) * ey) / len2;
+  let nx: number;
+  let ny: number;
+  let px: number;
+  let py: number;
+  let depth: number;
+  let alpha: number;
+  if (best <= 0 || (along >= 0 && along <= 1)) {
+    // Face region (or the centre is inside): push along the face normal.
+    nx = P.nx[k0];
+    ny = P.ny[k0];
+    px = cx - best * nx;
+    py = cy - best * ny;
+    depth = r - best;
+    alpha = clamp01(along);
+  } else {
+    // Vertex region: the nearer end of the edge.
+    const atEnd = along > 1;
+    px = atEnd ? P.x[k1] : v1x;
+    py = atEnd ? P.y[k1] : v1y;
+    const dx = cx - px;
+    const dy = cy - py;
+    const d = Math.sqrt(dx * dx + dy * dy);
+    if (d - r > margin) return false;
+    nx = dx / d;
+    ny = dy / d;
+    depth = r - d;
+    alpha = atEnd ? 1 : 0;
+  }
+  const sx = cx - r * nx;
+  const sy = cy - r * ny;
+  out.count = 1;
+  out.depth[0] = depth;
+  if (circleIsA) {
+    out.nx = -nx;
+    out.ny = -ny;
+    out.pAx[0] = sx;
+    out.pAy[0] = sy;
+    out.pBx[0] = px;
+    out.pBy[0] = py;
+    out.edgeB[0] = edge;
+    out.alphaB[0] = alpha;
+  } else {
+    out.nx = nx;
+    out.ny = ny;
+    out.pAx[0] = px;
+    out.pAy[0] = py;
+    out.pBx[0] = sx;
+    out.pBy[0] = sy;
+    out.edgeB[0] = -1;
+    out.alphaB[0] = 0;
+  }
+  return true;
+}
+
+/** Circle A (centre, radius) against circle B. Coincident centres push along −y (up on a y-down canvas). */
+export function collideCircles(ax: number, ay: number, ra: number, bx: number, by: number, rb: number, margin: number, out: ContactManifold): boolean {
+  out.count = 0;
+  const dx = bx - ax;
+  const dy = by - ay;
+  const reach = ra + rb + margin;
+  const d2 = dx * dx + dy * dy;
+  if (d2 > reach * reach) return false;
+  const d = Math.sqrt(d2);
+  const nx = d > 1e-12 ? dx / d : 0;
+  const ny = d > 1e-12 ? dy / d : -1;
+  out.count = 1;
+  out.nx = nx;
+  out.ny = ny;
+  out.depth[0] = ra + rb - d;
+  out.pAx[0] = ax + ra * nx;
+  out.pAy[0] = ay + ra * ny;
+  out.pBx[0] = bx - rb * nx;
+  out.pBy[0] = by - rb * ny;
+  out.edgeB[0] = -1;
+  out.alphaB[0] = 0;
+  return true;
+}
