@@ -9,6 +9,7 @@
 import { core, coreDistance, intersect, supportAB, supportAX, supportAY, supportBX, supportBY } from './gjk.js';
 import { Simplex, type Penetration } from './results.js';
 import { shapeSize, type Shape } from './shape.js';
+import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, mid, onFace } from './scratch.js';
 
 /** Convergence: the support along the closest edge's normal is within this fraction of the shapes' size of it. */
 const EPA_TOLERANCE = 1e-10;
@@ -153,7 +154,47 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
   out.pointX = 0.5 * (qax + qbx);
   out.pointY = 0.5 * (qay + qby);
   out.hit = depth > 0;
+  if (out.hit) parallelFaces(a, b, out);
   return out.hit;
+}
+
+/**
+ * Faces of A and B that meet parallel (a box resting on a box): the polytope's edge may end anywhere on them, and
+ * where depends on which vertex each list starts from. Then the contact point is taken, as sat takes it, from the
+ * middle of where the two faces overlap.
+ */
+function parallelFaces(a: Shape, b: Shape, out: Penetration): void {
+  const nx = out.normalX;
+  const ny = out.normalY;
+  load(a, b);
+  const na = a.count;
+  const nb = b.count;
+  let va = 0;
+  let vb = 0;
+  let hiA = -Infinity;
+  let loB = Infinity;
+  for (let k = 0; k < na; k++) {
+    const d = nx * ax[k] + ny * ay[k];
+    if (d > hiA) {
+      hiA = d;
+      va = k;
+    }
+  }
+  for (let k = 0; k < nb; k++) {
+    const d = nx * bx[k] + ny * by[k];
+    if (d < loB) {
+      loB = d;
+      vb = k;
+    }
+  }
+  if (!onFace(ax, ay, na, va, nx, ny) || !onFace(bx, by, nb, vb, -nx, -ny)) return;
+  faceEnds(ax, ay, na, va, va, nx, ny);
+  const a0 = face.first;
+  const a1 = face.last;
+  faceEnds(bx, by, nb, vb, vb, -nx, -ny);
+  faceMidpoint(a0, a1, face.first, face.last, nx, ny);
+  out.pointX = 0.5 * (mid.ax + mid.bx);
+  out.pointY = 0.5 * (mid.ay + mid.by);
 }
 
 /**

@@ -1,15 +1,11 @@
-// Contact manifold: up to two contact points for a polygon pair by clipping the incident edge against the side
-// planes of the reference edge (Box2D's b2CollidePolygons), and for every point the vertex–edge feature the
+// Contact manifold: up to two contact points for a polygon pair by clipping the incident face against the side
+// planes of the reference face (Box2D's b2CollidePolygons), and for every point the vertex–edge feature the
 // position-based response of seed 4.2 needs (which vertex of which shape penetrates which edge, and where along it).
+// A face is a run of collinear edges (180° corners are allowed, and shapes that are views over particles cannot
+// have them merged away): the faces are clipped whole, and each point names the sub-edge it lies on.
 import type { Manifold } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, near, nearestFeature, sep } from './scratch.js';
-
-/**
- * The reference face is the polygon whose best separating facet is shallower by this fraction of the depth; A wins
- * ties. The bias keeps the reference face from flickering between two nearly parallel faces from step to step.
- */
-const REFERENCE_BIAS = 0.98;
+import { ax, ay, bx, by, face, faceEnds, load, maxSeparation, near, nearestFeature, sep } from './scratch.js';
 
 /**
  * Contact manifold of two shapes (polygons, segments as two-sided polygons, circles), written into `out`.
@@ -44,18 +40,21 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
   const edgeB = sep.edge;
   const nbx = sep.nx;
   const nby = sep.ny;
-  // Reference polygon: A unless B's face is shallower by the bias.
-  const flip = sepA === -Infinity || sepB > sepA + (1 - REFERENCE_BIAS) * Math.abs(sepA);
+  // Reference face: the one of least penetration (A's on a tie), so the deepest point is the penetration depth. Near
+  // a tie between two nearly parallel faces either choice gives the same points (the ends of where the faces overlap)
+  // and the same vertex–edge features, so the contacts do not jump when the choice changes from one step to the next.
+  const flip = sepA === -Infinity || sepB > sepA;
   if (flip ? clip(out, margin, bx, by, nb, edgeB, nbx, nby, ax, ay, na, true) : clip(out, margin, ax, ay, na, edgeA, nax, nay, bx, by, nb, false)) {
     return true;
   }
-  // Deep overlaps: the incident edge may miss the biased face's side planes; try the other face.
+  // Speculative contacts of shapes apart (or a rounding miss): the incident face may miss the side planes; try the
+  // other polygon's face.
   if (sepA !== -Infinity && sepB !== -Infinity) {
     if (flip ? clip(out, margin, ax, ay, na, edgeA, nax, nay, bx, by, nb, false) : clip(out, margin, bx, by, nb, edgeB, nbx, nby, ax, ay, na, true)) {
       return true;
     }
   }
-  // Neither face's side planes hold a point of the other's incident edge: one point, the deepest vertex of the
+  // Neither face's side planes hold a point of the other's incident face: one point, the deepest vertex of the
   // incident polygon under the shallower face, α clamped to the edge.
   const useB = sepB > sepA;
   deepest(out, useB ? bx : ax, useB ? by : ay, useB ? nb : na, useB ? edgeB : edgeA, useB ? nbx : nax, useB ? nby : nay, useB ? ax : bx, useB ? ay : by, useB ? na : nb, useB);
@@ -63,51 +62,56 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
 }
 
 /**
- * Clips the incident edge of polygon I against reference edge e of polygon R (outward unit normal n, towards I).
- * `flip` when R is B. Writes the points with separation <= margin; returns whether there is one.
+ * Clips the incident face of polygon I against the reference face through edge e of polygon R (outward unit normal
+ * n, towards I). `flip` when R is B. Writes the points with separation <= margin; returns whether there is one.
  */
 function clip(
   out: Manifold, margin: number,
   rx: Float64Array, ry: Float64Array, rn: number, e: number, nx: number, ny: number,
   ix: Float64Array, iy: Float64Array, inn: number, flip: boolean,
 ): boolean {
-  // Incident edge: the edge of I whose normal is most anti-parallel to n.
+  // Reference face: edge e and the collinear edges next to it, r0..r1.
+  faceEnds(rx, ry, rn, e, e + 1 === rn ? 0 : e + 1, nx, ny);
+  const r0 = face.first;
+  const r1 = face.last;
+  // Incident face: the edge of I whose normal is most anti-parallel to n (exact ties to the larger normal, as in
+  // maxSeparation, not to the first in the list), and the collinear edges next to it, v0..v1.
   let i1 = 0;
   let minDot = Infinity;
+  let inx = 0;
+  let iny = 0;
   for (let k = 0; k < inn; k++) {
     const k2 = k + 1 === inn ? 0 : k + 1;
     const ex = ix[k2] - ix[k];
     const ey = iy[k2] - iy[k];
     const len2 = ex * ex + ey * ey;
     if (len2 === 0) continue;
-    const d = (ey * nx - ex * ny) / Math.sqrt(len2);
-    if (d < minDot) {
+    const inv = 1 / Math.sqrt(len2);
+    const cx = ey * inv;
+    const cy = -ex * inv;
+    const d = cx * nx + cy * ny;
+    if (d < minDot || (d === minDot && (cx > inx || (cx === inx && cy > iny)))) {
       minDot = d;
       i1 = k;
+      inx = cx;
+      iny = cy;
     }
   }
-  const i2 = i1 + 1 === inn ? 0 : i1 + 1;
-  const e2 = e + 1 === rn ? 0 : e + 1;
-  const r1x = rx[e];
-  const r1y = ry[e];
-  const r2x = rx[e2];
-  const r2y = ry[e2];
-  // Unit tangent of the reference edge (CCW: normal (ty, −tx)).
+  faceEnds(ix, iy, inn, i1, i1 + 1 === inn ? 0 : i1 + 1, inx, iny);
+  const v0 = face.first;
+  const v1 = face.last;
+  // Unit tangent of the reference face (CCW: normal (ty, −tx)); the face spans lo..hi along it.
   const tx = -ny;
   const ty = nx;
-  const lo = tx * r1x + ty * r1y;
-  const hi = tx * r2x + ty * r2y;
+  const lo = tx * rx[r0] + ty * ry[r0];
+  const hi = tx * rx[r1] + ty * ry[r1];
 
-  // The incident edge as two points, each remembering its feature: −1 = still vertex i1 / i2 of I, otherwise the
-  // reference vertex (e or e2) whose side plane clipped it.
-  const v1x = ix[i1];
-  const v1y = iy[i1];
-  const v2x = ix[i2];
-  const v2y = iy[i2];
-  let p0x = v1x;
-  let p0y = v1y;
-  let p1x = v2x;
-  let p1y = v2y;
+  // The incident face as two points, each remembering its feature: −1 = still vertex v0 / v1 of I, otherwise the
+  // reference vertex (r0 or r1) whose side plane clipped it.
+  let p0x = ix[v0];
+  let p0y = iy[v0];
+  let p1x = ix[v1];
+  let p1y = iy[v1];
   let f0 = -1;
   let f1 = -1;
   // Side plane t·p >= lo.
@@ -118,12 +122,12 @@ function clip(
     const s = d0 / (d0 - d1);
     p0x += s * (p1x - p0x);
     p0y += s * (p1y - p0y);
-    f0 = e;
+    f0 = r0;
   } else if (d1 < 0) {
     const s = d0 / (d0 - d1);
     p1x = p0x + s * (p1x - p0x);
     p1y = p0y + s * (p1y - p0y);
-    f1 = e;
+    f1 = r0;
   }
   // Side plane t·p <= hi.
   d0 = hi - (tx * p0x + ty * p0y);
@@ -133,23 +137,17 @@ function clip(
     const s = d0 / (d0 - d1);
     p0x += s * (p1x - p0x);
     p0y += s * (p1y - p0y);
-    f0 = e2;
+    f0 = r1;
   } else if (d1 < 0) {
     const s = d0 / (d0 - d1);
     p1x = p0x + s * (p1x - p0x);
     p1y = p0y + s * (p1y - p0y);
-    f1 = e2;
+    f1 = r1;
   }
 
   const refOwner = flip ? 1 : 0;
   const incOwner = flip ? 0 : 1;
-  const c = nx * r1x + ny * r1y;
-  const elx = r2x - r1x;
-  const ely = r2y - r1y;
-  const invRef = 1 / (elx * elx + ely * ely);
-  const ilx = v2x - v1x;
-  const ily = v2y - v1y;
-  const invInc = 1 / (ilx * ilx + ily * ily);
+  const c = nx * rx[e] + ny * ry[e];
   let count = 0;
   for (let k = 0; k < 2; k++) {
     const qx = k === 0 ? p0x : p1x;
@@ -158,21 +156,25 @@ function clip(
     const s = nx * qx + ny * qy - c; // separation of the point from the reference face
     if (s > margin) continue;
     const depth = -s;
+    const tq = tx * qx + ty * qy;
+    let edge: number;
     let alpha: number;
     if (f < 0) {
-      // A vertex of I below the reference edge; α is its projection onto that edge.
+      // A vertex of I below the reference face: α is its projection onto the sub-edge of the face it lies over.
+      edge = subEdge(rx, ry, rn, r0, r1, tx, ty, tq, 1);
       out.incident[count] = incOwner;
-      out.vertex[count] = k === 0 ? i1 : i2;
-      out.edge[count] = e;
-      alpha = ((qx - r1x) * elx + (qy - r1y) * ely) * invRef;
+      out.vertex[count] = k === 0 ? v0 : v1;
+      alpha = project(rx, ry, rn, edge, qx, qy);
     } else {
-      // A reference vertex inside I: it meets the incident edge at the clipped point, along the normal.
+      // A reference vertex inside I: it meets the incident face at the clipped point, along the normal; α places
+      // that point on the sub-edge of the incident face it lies on (which runs along −t).
+      edge = subEdge(ix, iy, inn, v0, v1, tx, ty, tq, -1);
       out.incident[count] = refOwner;
       out.vertex[count] = f;
-      out.edge[count] = i1;
-      alpha = ((qx - v1x) * ilx + (qy - v1y) * ily) * invInc;
+      alpha = project(ix, iy, inn, edge, qx, qy);
     }
-    out.alpha[count] = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+    out.edge[count] = edge;
+    out.alpha[count] = alpha;
     out.depth[count] = depth;
     out.pointX[count] = qx + 0.5 * depth * nx;
     out.pointY[count] = qy + 0.5 * depth * ny;
@@ -182,6 +184,30 @@ function clip(
   out.normalX = flip ? -nx : nx;
   out.normalY = flip ? -ny : ny;
   return count > 0;
+}
+
+/**
+ * The edge of the face first..last of polygon P (n vertices) over which the point at tq along (tx, ty) lies; the
+ * face runs along `sign`·t. A point exactly over a corner between two sub-edges goes to the earlier one.
+ */
+function subEdge(px: Float64Array, py: Float64Array, n: number, first: number, last: number, tx: number, ty: number, tq: number, sign: number): number {
+  let j = first;
+  for (;;) {
+    const next = j + 1 === n ? 0 : j + 1;
+    if (next === last || sign * (tx * px[next] + ty * py[next]) >= sign * tq) return j;
+    j = next;
+  }
+}
+
+/** Where (x, y) projects onto edge e of polygon P (n vertices), as a fraction of the edge clamped to [0, 1]. */
+function project(px: Float64Array, py: Float64Array, n: number, e: number, x: number, y: number): number {
+  const e2 = e + 1 === n ? 0 : e + 1;
+  const ex = px[e2] - px[e];
+  const ey = py[e2] - py[e];
+  const len2 = ex * ex + ey * ey;
+  if (len2 === 0) return 0;
+  const alpha = ((x - px[e]) * ex + (y - py[e]) * ey) / len2;
+  return alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
 }
 
 /** One contact: the vertex of I deepest below reference edge e of R. */
@@ -199,10 +225,6 @@ function deepest(
       v = k;
     }
   }
-  const e2 = e + 1 === rn ? 0 : e + 1;
-  const elx = rx[e2] - rx[e];
-  const ely = ry[e2] - ry[e];
-  const alpha = ((ix[v] - rx[e]) * elx + (iy[v] - ry[e]) * ely) / (elx * elx + ely * ely);
   const depth = nx * rx[e] + ny * ry[e] - min;
   out.count = 1;
   out.normalX = flip ? -nx : nx;
@@ -210,7 +232,7 @@ function deepest(
   out.incident[0] = flip ? 0 : 1;
   out.vertex[0] = v;
   out.edge[0] = e;
-  out.alpha[0] = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+  out.alpha[0] = project(rx, ry, rn, e, ix[v], iy[v]);
   out.depth[0] = depth;
   out.pointX[0] = ix[v] + 0.5 * depth * nx;
   out.pointY[0] = iy[v] + 0.5 * depth * ny;

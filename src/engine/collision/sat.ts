@@ -4,7 +4,7 @@
 // contains the other. Shapes that only touch are not a hit.
 import type { Penetration } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
-import { ax, ay, bx, by, load, maxSeparation, near, nearestFeature, sep } from './scratch.js';
+import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, maxSeparation, mid, near, nearestFeature, onFace, sep } from './scratch.js';
 
 /**
  * Overlap test with MTV. Polygon–polygon, polygon–circle, circle–circle, and segments (as two-sided polygons) with
@@ -29,6 +29,7 @@ function polygonPolygon(a: Shape, b: Shape, out: Penetration): boolean {
   maxSeparation(ax, ay, n, bx, by, m, 0);
   const sepA = sep.value;
   if (sepA >= 0) return miss(out);
+  const edgeA = sep.edge;
   const nax = sep.nx;
   const nay = sep.ny;
   const vb = sep.vertex;
@@ -36,25 +37,48 @@ function polygonPolygon(a: Shape, b: Shape, out: Penetration): boolean {
   const sepB = sep.value;
   if (sepB >= 0) return miss(out);
   if (sepA === -Infinity && sepB === -Infinity) return miss(out); // two points: no area to overlap
+  out.hit = true;
   if (sepA >= sepB) {
     // Facet of A: B's deepest vertex sits depth below it.
     const depth = -sepA;
-    out.hit = true;
     out.normalX = nax;
     out.normalY = nay;
     out.depth = depth;
-    out.pointX = bx[vb] + 0.5 * depth * nax;
-    out.pointY = by[vb] + 0.5 * depth * nay;
+    if (onFace(bx, by, m, vb, -nax, -nay)) {
+      // B meets A's face with a face of its own: the middle of where the two faces overlap.
+      faceEnds(ax, ay, n, edgeA, edgeA + 1 === n ? 0 : edgeA + 1, nax, nay);
+      const a0 = face.first;
+      const a1 = face.last;
+      faceEnds(bx, by, m, vb, vb, -nax, -nay);
+      faceMidpoint(a0, a1, face.first, face.last, nax, nay);
+      out.pointX = 0.5 * (mid.ax + mid.bx);
+      out.pointY = 0.5 * (mid.ay + mid.by);
+    } else {
+      out.pointX = bx[vb] + 0.5 * depth * nax;
+      out.pointY = by[vb] + 0.5 * depth * nay;
+    }
   } else {
     // Facet of B (normal m points from B to A): A's deepest vertex sits depth below it.
     const depth = -sepB;
     const va = sep.vertex;
-    out.hit = true;
-    out.normalX = -sep.nx;
-    out.normalY = -sep.ny;
+    const edgeB = sep.edge;
+    const nx = -sep.nx;
+    const ny = -sep.ny;
+    out.normalX = nx;
+    out.normalY = ny;
     out.depth = depth;
-    out.pointX = ax[va] + 0.5 * depth * sep.nx;
-    out.pointY = ay[va] + 0.5 * depth * sep.ny;
+    if (onFace(ax, ay, n, va, nx, ny)) {
+      faceEnds(bx, by, m, edgeB, edgeB + 1 === m ? 0 : edgeB + 1, -nx, -ny);
+      const b0 = face.first;
+      const b1 = face.last;
+      faceEnds(ax, ay, n, va, va, nx, ny);
+      faceMidpoint(face.first, face.last, b0, b1, nx, ny);
+      out.pointX = 0.5 * (mid.ax + mid.bx);
+      out.pointY = 0.5 * (mid.ay + mid.by);
+    } else {
+      out.pointX = ax[va] - 0.5 * depth * nx;
+      out.pointY = ay[va] - 0.5 * depth * ny;
+    }
   }
   return true;
 }

@@ -37,6 +37,85 @@ export function load(a: Shape, b: Shape): void {
   }
 }
 
+/**
+ * A vertex is on a face's line when it is this close to it, relative to its distance along the face: a run of
+ * collinear edges (180° corners, straight up to rounding) then acts as one face. Far from the origin the rounding of
+ * the coordinates themselves is allowed for as well (FACE_ROUNDING times their magnitude).
+ */
+export const FACE_TOLERANCE = 1e-10;
+const FACE_ROUNDING = 16 * Number.EPSILON;
+
+/** (dx, dy) from a face's vertex to vertex (x, y) runs along the face line of unit normal (nx, ny), within tolerance. */
+function onFaceLine(dx: number, dy: number, x: number, y: number, nx: number, ny: number): boolean {
+  const d = nx * dx + ny * dy;
+  const tol = FACE_TOLERANCE * (Math.abs(dx) + Math.abs(dy)) + FACE_ROUNDING * (Math.abs(x) + Math.abs(y));
+  return d <= tol && d >= -tol;
+}
+
+/** Result registers of faceEnds: the first and last vertex of a face, counter-clockwise. */
+export const face = { first: 0, last: 0 };
+
+/**
+ * The face of polygon P (n vertices, counter-clockwise; a segment has 2) through vertices first..last (an edge, or a
+ * single vertex with first === last) whose outward normal is (nx, ny), grown over the neighbouring vertices on its
+ * line (measured from vertex `first`): the whole collinear run, into face.first/last. At most all n vertices.
+ */
+export function faceEnds(px: Float64Array, py: Float64Array, n: number, first: number, last: number, nx: number, ny: number): void {
+  const x0 = px[first];
+  const y0 = py[first];
+  let size = last >= first ? last - first + 1 : last + n - first + 1;
+  while (size < n) {
+    const k = first === 0 ? n - 1 : first - 1;
+    if (!onFaceLine(px[k] - x0, py[k] - y0, px[k], py[k], nx, ny)) break;
+    first = k;
+    size++;
+  }
+  while (size < n) {
+    const k = last + 1 === n ? 0 : last + 1;
+    if (!onFaceLine(px[k] - x0, py[k] - y0, px[k], py[k], nx, ny)) break;
+    last = k;
+    size++;
+  }
+  face.first = first;
+  face.last = last;
+}
+
+/** Whether vertex v of polygon P (n vertices) has a neighbour on the line through it with normal (nx, ny): a face. */
+export function onFace(px: Float64Array, py: Float64Array, n: number, v: number, nx: number, ny: number): boolean {
+  if (n < 2) return false;
+  const prev = v === 0 ? n - 1 : v - 1;
+  const next = v + 1 === n ? 0 : v + 1;
+  return onFaceLine(px[prev] - px[v], py[prev] - py[v], px[prev], py[prev], nx, ny) || onFaceLine(px[next] - px[v], py[next] - py[v], px[next], py[next], nx, ny);
+}
+
+/** Result registers of faceMidpoint: a point of A's outline and the point of B's outline opposite it. */
+export const mid = { ax: 0, ay: 0, bx: 0, by: 0 };
+
+/**
+ * Where A's face a0..a1 (loaded in ax/ay, outward normal n) and B's face b0..b1 (in bx/by, outward normal about −n)
+ * overlap along the face direction t = (−ny, nx): at the middle of that interval, the point of A's face and the point
+ * of B's face, into `mid`. Only the faces' ends are read, so the answer does not depend on where either list starts.
+ * For faces that do not overlap (by rounding), the middle of the gap.
+ */
+export function faceMidpoint(a0: number, a1: number, b0: number, b1: number, nx: number, ny: number): void {
+  const tx = -ny;
+  const ty = nx;
+  // A's face runs along +t, B's along −t (both counter-clockwise).
+  const aLo = tx * ax[a0] + ty * ay[a0];
+  const aHi = tx * ax[a1] + ty * ay[a1];
+  const bHi = tx * bx[b0] + ty * by[b0];
+  const bLo = tx * bx[b1] + ty * by[b1];
+  const t = 0.5 * ((aLo > bLo ? aLo : bLo) + (aHi < bHi ? aHi : bHi));
+  let u = aHi > aLo ? (t - aLo) / (aHi - aLo) : 0;
+  u = u < 0 ? 0 : u > 1 ? 1 : u;
+  mid.ax = ax[a0] + u * (ax[a1] - ax[a0]);
+  mid.ay = ay[a0] + u * (ay[a1] - ay[a0]);
+  u = bHi > bLo ? (bHi - t) / (bHi - bLo) : 0;
+  u = u < 0 ? 0 : u > 1 ? 1 : u;
+  mid.bx = bx[b0] + u * (bx[b1] - bx[b0]);
+  mid.by = by[b0] + u * (by[b1] - by[b0]);
+}
+
 /** Result registers of maxSeparation. */
 export const sep = { value: 0, edge: -1, vertex: -1, nx: 0, ny: 0 };
 
@@ -72,7 +151,9 @@ export function maxSeparation(px: Float64Array, py: Float64Array, n: number, qx:
       }
     }
     const s = min - (nx * px[i] + ny * py[i]);
-    if (s > best) {
+    // Exact ties (a square against itself) go to the larger normal (x, then y), not to the first edge in the list,
+    // so the answer does not depend on which vertex a polygon's list starts from.
+    if (s > best || (s === best && (nx > bnx || (nx === bnx && ny > bny)))) {
       best = s;
       bestEdge = i;
       bestVertex = arg;
