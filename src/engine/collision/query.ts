@@ -1,12 +1,18 @@
 // Queries: point in shape, and ray casts against each shape (hit, distance, normal).
+import { finite, nonNegativeOrInfinity } from '../validate.js';
 import type { RayHit } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
 
 /**
  * (x, y) is inside the shape or on its outline. A segment counts points within 1e-12 of its length of it (it has no
  * inside); a polygon view need not be convex for its outline's points, but its inside test assumes convexity.
+ * Throws a TypeError or RangeError naming x or y when it is not a finite number (NaN would compare as inside).
  */
 export function pointInShape(shape: Shape, x: number, y: number): boolean {
+  if (!(Number.isFinite(x) && Number.isFinite(y))) {
+    finite('x', x);
+    finite('y', y);
+  }
   const { xs, ys, index, offset, count } = shape;
   if (shape.type === ShapeType.Circle) {
     const i = index[offset];
@@ -37,11 +43,14 @@ export function pointInShape(shape: Shape, x: number, y: number): boolean {
 }
 
 /**
- * Casts the ray from (ox, oy) along (dx, dy) (any non-zero length; normalized here) up to `maxDistance`, written
- * into `out`. A ray that starts inside (or on) a polygon or circle hits it at distance 0 with normal −direction.
- * A ray parallel to a segment misses it. A zero direction misses everything.
+ * Casts the ray from (ox, oy) along (dx, dy) (any non-zero length; normalized here) up to `maxDistance` (>= 0, may be
+ * Infinity), written into `out`. A ray that starts inside (or on) a polygon or circle hits it at distance 0 with
+ * normal −direction; a circle of radius 0 hit from outside also has normal −direction. A ray parallel to a segment
+ * misses it. A zero direction misses everything. Throws a TypeError or RangeError naming a coordinate that is not a
+ * finite number, or a maxDistance that is negative or NaN.
  */
 export function raycast(shape: Shape, ox: number, oy: number, dx: number, dy: number, maxDistance: number, out: RayHit): boolean {
+  if (!(Number.isFinite(ox) && Number.isFinite(oy) && Number.isFinite(dx) && Number.isFinite(dy) && maxDistance >= 0)) badRay(ox, oy, dx, dy, maxDistance);
   const len = Math.sqrt(dx * dx + dy * dy);
   out.hit = false;
   if (!(len > 0)) return false;
@@ -66,8 +75,13 @@ export function raycast(shape: Shape, ox: number, oy: number, dx: number, dy: nu
     out.distance = t;
     out.x = ox + t * dx;
     out.y = oy + t * dy;
-    out.normalX = (out.x - cx) / r;
-    out.normalY = (out.y - cy) / r;
+    // From the centre to the hit point, measured from the origin (fewer digits lost than x − cx far from (0, 0)).
+    // A circle of radius 0 is a point: it faces the ray.
+    const hx = mx + t * dx;
+    const hy = my + t * dy;
+    const hl = Math.sqrt(hx * hx + hy * hy);
+    out.normalX = hl > 0 ? hx / hl : -dx;
+    out.normalY = hl > 0 ? hy / hl : -dy;
     return true;
   }
   if (shape.type === ShapeType.Segment) {
@@ -133,6 +147,16 @@ export function raycast(shape: Shape, ox: number, oy: number, dx: number, dy: nu
   out.normalX = nx / nl;
   out.normalY = ny / nl;
   return true;
+}
+
+/** Names the first bad argument of raycast (kept out of it so the check there stays a few comparisons). */
+function badRay(ox: number, oy: number, dx: number, dy: number, maxDistance: number): never {
+  finite('ox', ox);
+  finite('oy', oy);
+  finite('dx', dx);
+  finite('dy', dy);
+  nonNegativeOrInfinity('maxDistance', maxDistance);
+  throw new RangeError(`raycast arguments must be finite numbers, got (${ox}, ${oy}, ${dx}, ${dy}, ${maxDistance})`);
 }
 
 function inside(out: RayHit, ox: number, oy: number, dx: number, dy: number): boolean {
