@@ -61,7 +61,23 @@ export function segmentView(xs: Float64Array, ys: Float64Array, index: Int32Arra
 // ---------------------------------------------------------------------------------------------------------------
 // Standalone shapes (own their arrays, validated)
 
-/** Reads `[{x, y}, ...]` or a flat `[x0, y0, x1, y1, ...]` into two arrays, checking every number. */
+/**
+ * Largest coordinate (and radius) magnitude a shape may have. Products of two coordinates — squared lengths, areas,
+ * the cross products of GJK — then stay finite with room to spare; beyond it they overflow to Infinity and the
+ * narrow phase would quietly answer wrong (a box inside a polygon of coordinates 1e200 was missed).
+ */
+export const MAX_COORDINATE = 1e150;
+
+/** A finite number within ±MAX_COORDINATE, or a TypeError/RangeError naming it. */
+function coordinate(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (v > MAX_COORDINATE || v < -MAX_COORDINATE) {
+    throw new RangeError(`${name} must be within ±${MAX_COORDINATE} (beyond, squared lengths and areas overflow), got ${v}`);
+  }
+  return v;
+}
+
+/** Reads `[{x, y}, ...]` or a flat `[x0, y0, x1, y1, ...]` into two arrays, checking every number (finite, within ±MAX_COORDINATE). */
 export function readPoints(name: string, points: unknown): { xs: Float64Array; ys: Float64Array } {
   if (!Array.isArray(points) && !ArrayBuffer.isView(points)) {
     throw new TypeError(`${name} must be an array of {x, y} points or of numbers, got ${describeValue(points)}`);
@@ -73,8 +89,8 @@ export function readPoints(name: string, points: unknown): { xs: Float64Array; y
     const xs = new Float64Array(n);
     const ys = new Float64Array(n);
     for (let k = 0; k < n; k++) {
-      xs[k] = finite(`${name}[${2 * k}]`, list[2 * k]);
-      ys[k] = finite(`${name}[${2 * k + 1}]`, list[2 * k + 1]);
+      xs[k] = coordinate(`${name}[${2 * k}]`, list[2 * k]);
+      ys[k] = coordinate(`${name}[${2 * k + 1}]`, list[2 * k + 1]);
     }
     return { xs, ys };
   }
@@ -84,8 +100,8 @@ export function readPoints(name: string, points: unknown): { xs: Float64Array; y
   for (let k = 0; k < n; k++) {
     const p = list[k] as PointLike | null | undefined;
     if (p === null || typeof p !== 'object') throw new TypeError(`${name}[${k}] must be a point {x, y}, got ${describeValue(p)}`);
-    xs[k] = finite(`${name}[${k}].x`, p.x);
-    ys[k] = finite(`${name}[${k}].y`, p.y);
+    xs[k] = coordinate(`${name}[${k}].x`, p.x);
+    ys[k] = coordinate(`${name}[${k}].y`, p.y);
   }
   return { xs, ys };
 }
@@ -98,7 +114,8 @@ function iota(n: number): Int32Array {
 
 /**
  * A convex polygon that owns a copy of `points` ({x, y} objects or a flat number list). Throws a TypeError or
- * RangeError naming the argument when there are fewer than 3 points, a coordinate is not finite, two consecutive
+ * RangeError naming the argument when there are fewer than 3 points, a coordinate is not finite or beyond
+ * ±MAX_COORDINATE, two consecutive
  * points coincide, the area is zero, the order is clockwise (fix it with counterClockwise) or the outline is not
  * convex (split it with decompose). Collinear consecutive vertices (180° corners) are allowed.
  */
@@ -109,17 +126,17 @@ export function polygon(points: readonly PointLike[] | readonly number[] | Array
   return shape;
 }
 
-/** A circle of centre (x, y) and radius r >= 0. */
+/** A circle of centre (x, y) and radius r >= 0 (coordinates and radius within ±MAX_COORDINATE). */
 export function circle(x: number, y: number, r: number): Shape {
-  const xs = new Float64Array([finite('x', x)]);
-  const ys = new Float64Array([finite('y', y)]);
-  return circleView(xs, ys, iota(1), 0, nonNegative('r', r));
+  const xs = new Float64Array([coordinate('x', x)]);
+  const ys = new Float64Array([coordinate('y', y)]);
+  return circleView(xs, ys, iota(1), 0, coordinate('r', nonNegative('r', r)));
 }
 
 /** A segment from (x1, y1) to (x2, y2); the endpoints must differ. */
 export function segment(x1: number, y1: number, x2: number, y2: number): Shape {
-  const xs = new Float64Array([finite('x1', x1), finite('x2', x2)]);
-  const ys = new Float64Array([finite('y1', y1), finite('y2', y2)]);
+  const xs = new Float64Array([coordinate('x1', x1), coordinate('x2', x2)]);
+  const ys = new Float64Array([coordinate('y1', y1), coordinate('y2', y2)]);
   if (xs[0] === xs[1] && ys[0] === ys[1]) throw new RangeError(`segment endpoints must differ, got (${x1}, ${y1}) twice`);
   return segmentView(xs, ys, iota(2), 0);
 }
@@ -136,13 +153,19 @@ export function counterClockwise(points: readonly PointLike[] | readonly number[
 // ---------------------------------------------------------------------------------------------------------------
 // Validation
 
-/** Twice the signed area, Σ x_i·y_{i+1} − x_{i+1}·y_i: positive when counter-clockwise in the math sense. */
+/**
+ * Twice the signed area, Σ x_i·y_{i+1} − x_{i+1}·y_i: positive when counter-clockwise in the math sense. Summed
+ * relative to the first vertex: far from the origin the products of absolute coordinates would cancel away the
+ * digits of a small area (a triangle of area 0.57 near (1e6, −1e6) came out 0.57000732).
+ */
 export function shoelace(xs: Float64Array, ys: Float64Array, index: Int32Array, offset: number, count: number): number {
+  const ox = xs[index[offset]];
+  const oy = ys[index[offset]];
   let s = 0;
-  for (let k = 0; k < count; k++) {
+  for (let k = 1; k + 1 < count; k++) {
     const i = index[offset + k];
-    const j = index[offset + (k + 1 === count ? 0 : k + 1)];
-    s += xs[i] * ys[j] - xs[j] * ys[i];
+    const j = index[offset + k + 1];
+    s += (xs[i] - ox) * (ys[j] - oy) - (xs[j] - ox) * (ys[i] - oy);
   }
   return s;
 }
@@ -165,10 +188,10 @@ export function assertConvex(shape: Shape, name = 'shape'): void {
   for (let k = 0; k < count; k++) {
     const i = index[offset + k];
     if (i < 0 || i >= xs.length || i >= ys.length) throw new RangeError(`${name}.index[${offset + k}] = ${i} is outside the coordinate arrays`);
-    finite(`${name} vertex ${k} x`, xs[i]);
-    finite(`${name} vertex ${k} y`, ys[i]);
+    coordinate(`${name} vertex ${k} x`, xs[i]);
+    coordinate(`${name} vertex ${k} y`, ys[i]);
   }
-  nonNegative(`${name}.radius`, shape.radius);
+  coordinate(`${name}.radius`, nonNegative(`${name}.radius`, shape.radius));
   if (type !== ShapeType.Circle && shape.radius !== 0) throw new RangeError(`${name}.radius must be 0 for a polygon or segment, got ${shape.radius}`);
   if (type === ShapeType.Segment) {
     const i = index[offset];
@@ -196,7 +219,7 @@ function checkConvex(name: string, shape: Shape): void {
     const fy = ys[l] - ys[j];
     const cross = ex * fy - ey * fx;
     const dot = ex * fx + ey * fy;
-    const scale = Math.sqrt((ex * ex + ey * ey) * (fx * fx + fy * fy));
+    const scale = Math.sqrt(ex * ex + ey * ey) * Math.sqrt(fx * fx + fy * fy); // (not the root of the product: it overflows)
     if (cross < -CONVEX_TOLERANCE * scale) {
       const area = shoelace(xs, ys, index, offset, count);
       if (area < 0 && isConvexClockwise(shape)) {
