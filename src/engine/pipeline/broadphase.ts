@@ -165,7 +165,11 @@ export class GridBroadPhase implements BroadPhase {
     return false;
   }
 
-  private autoCellSize = 0;
+  /**
+   * The cell size chosen automatically at the first step after the bodies changed (0: not chosen yet). Part of the
+   * state: chosen again from other positions, it would find the same pairs in another order.
+   */
+  autoCellSize = 0;
 
   /** The bodies changed: choose the automatic cell size again at the next step. */
   invalidateCellSize(): void {
@@ -233,4 +237,11 @@ export class GridBroadPhase implements BroadPhase {
     this.keysTmp = keysTmp;
     this.valuesTmp = valuesTmp;
   }
+}
+
+export function makeBroadPhase(kind: 'grid' | 'brute', cellSize: number): BroadPhase {
+  if (kind === 'brute') return new BruteForceBroadPhase();
+  const grid = new GridBroadPhase();
+  grid.cellSize = cellSize;
+  return grid;
 }

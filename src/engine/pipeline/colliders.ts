@@ -1,4 +1,5 @@
 import { grown } from '../table.js';
+import type { ColliderOptions, ResolvedCollider } from '../options.js';
 
 /** How a body collides. */
 export const enum ColliderKind {
@@ -49,6 +50,32 @@ export class Colliders {
     for (const name of ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'partStart', 'partCount', 'isStatic', 'ringLength', 'minX', 'minY', 'maxX', 'maxY'] as const) {
       (this as unknown as Record<string, Float64Array>)[name] = grown((this as unknown as Record<string, Float64Array>)[name], slots);
     }
+  }
+
+  /** Sets a body's collider from checked options (its parts are rebuilt with the others by rebuild()). */
+  write(slot: number, o: ResolvedCollider, ringLength: number): void {
+    this.ensureBodies(slot + 1);
+    this.kind[slot] = o.shape === 'polygon' ? ColliderKind.Polygon : o.shape === 'particles' ? ColliderKind.Particles : ColliderKind.None;
+    this.friction[slot] = o.friction;
+    this.restitution[slot] = o.restitution;
+    this.category[slot] = o.category;
+    this.mask[slot] = o.mask;
+    this.group[slot] = o.group;
+    this.ringLength[slot] = ringLength;
+  }
+
+  /** A body's collider as options (`parts` as the body keeps them). */
+  optionsOf(slot: number, parts: number[][] | undefined): ColliderOptions {
+    const kind = this.kind[slot];
+    return {
+      shape: kind === ColliderKind.Polygon ? 'polygon' : kind === ColliderKind.Particles ? 'particles' : 'none',
+      parts,
+      friction: this.friction[slot],
+      restitution: this.restitution[slot],
+      category: this.category[slot],
+      mask: this.mask[slot],
+      group: this.group[slot],
+    };
   }
 
   addPart(body: number, vertexIndices: ArrayLike<number>): void {

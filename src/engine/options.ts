@@ -1,0 +1,195 @@
+// The options and results of the World's public API, and the checks of the options that several modules share.
+import type { Bounds } from './bounds.js';
+import type { Handle } from './handles.js';
+import type { Integrator } from './integrate.js';
+import { finite, integer, nonNegative, oneOf } from './validate.js';
+
+export interface Vec2 {
+  x: number;
+  y: number;
+}
+
+export interface WorldOptions {
+  /** Acceleration of gravity. Default {x: 0, y: 9.81}: y grows downward, as on a canvas or in SVG. */
+  gravity?: Vec2;
+  /** The fixed step in seconds. Default 1/60. */
+  timestep?: number;
+  /** Substeps per step. Default 10 (substeps buy more stiffness per cost than iterations). */
+  substeps?: number;
+  /** Gauss–Seidel iterations per substep. Default 1. */
+  iterations?: number;
+  /** Linear damping per second (velocity shrinks by 1/(1 + h·damping) each substep). Default 0. */
+  damping?: number;
+  integrator?: Integrator;
+  /** A box the particles cannot leave; null for none (default). */
+  bounds?: Bounds | null;
+  /** Coulomb friction of the bounds' walls. Default 0.5. */
+  boundsFriction?: number;
+  /** The most steps advance() takes to catch up with real time; the rest of the backlog is dropped. Default 5. */
+  maxCatchUpSteps?: number;
+  /** advance(elapsed) takes one step of the elapsed time instead of fixed steps (seed 5.3's comparison). */
+  variableStep?: boolean;
+  /** Broad phase: 'grid' (default, uniform grid with radix sort) or 'brute' (every pair; for tests and comparison). */
+  broadphase?: 'grid' | 'brute';
+  /** Narrow phase for polygon pairs: 'sat' (default) or 'gjk' (GJK distance / GJK + EPA). */
+  narrowphase?: 'sat' | 'gjk';
+  /** Grid cell size; 0 (default) picks twice the median body size. */
+  cellSize?: number;
+  /** Extra gap within which contacts are created before bodies touch. Default 0.02. */
+  contactSlop?: number;
+  /** Bodies at rest fall asleep and cost nothing until woken. Default true. */
+  sleeping?: boolean;
+  /** The fastest an overlap that already exists is pushed apart (units/s). Default 4. */
+  maxPushSpeed?: number;
+  /** Caps on live objects; creating more throws a RangeError. Defaults: DEFAULT_LIMITS. */
+  limits?: Partial<Limits>;
+}
+
+export interface Limits {
+  particles: number;
+  constraints: number;
+  bodies: number;
+}
+
+/** Default caps: far above what a page can simulate at 60 steps a second, low enough to fail fast on a runaway loop. */
+export const DEFAULT_LIMITS: Limits = { particles: 200_000, constraints: 1_000_000, bodies: 100_000 };
+
+export interface GrabOptions {
+  /** Pull per unit of distance and of mass (1/s²): how tightly the body follows. Default 2000. */
+  stiffness?: number;
+  /** How far from the point a particle may be picked when no body contains the point. Default 0.5. */
+  pickRadius?: number;
+}
+
+/** Where a ray first hits a body. */
+export interface RayCastHit {
+  body: Handle;
+  x: number;
+  y: number;
+  normalX: number;
+  normalY: number;
+  distance: number;
+}
+
+/** How a body collides. Builders pass these through. */
+export interface ColliderOptions {
+  /**
+   * 'polygon': convex parts whose vertices are the body's particles (default: one part, all particles in order);
+   * 'particles': each particle is a circle of its radius; 'none': no collisions.
+   */
+  shape?: 'polygon' | 'particles' | 'none';
+  /** Convex parts as lists of indices into the body's particle list (concave outlines). */
+  parts?: number[][];
+  /** Coulomb friction coefficient (>= 0). Pairs use √(μa·μb). Default 0.6. */
+  friction?: number;
+  /** Restitution in [0, 1]. Pairs use the larger. Default 0. */
+  restitution?: number;
+  /** Collision filtering: bodies collide when (catA & maskB) && (catB & maskA), unless they share a group:
+   *  a shared positive group always collides, a shared negative group never does. */
+  category?: number;
+  mask?: number;
+  group?: number;
+}
+
+export const COLLIDER_SHAPES = ['polygon', 'particles', 'none'] as const;
+
+export interface ParticleOptions {
+  x: number;
+  y: number;
+  /** Mass (> 0). Infinity makes the particle immovable. Default 1. */
+  mass?: number;
+  /** Collision radius (>= 0). Default 0. */
+  radius?: number;
+  vx?: number;
+  vy?: number;
+}
+
+export interface DistanceOptions {
+  /** Rest length; default the particles' current distance. Sets both minLength and maxLength. */
+  length?: number;
+  /** Lower limit (default = length). 0 with maxLength = L makes a slack rope link. */
+  minLength?: number;
+  /** Upper limit (default = length). Infinity with minLength = L keeps particles at least L apart. */
+  maxLength?: number;
+  /** Inverse stiffness (length per unit force); 0 = rigid. Default 0. */
+  compliance?: number;
+  /**
+   * Tearing: the link breaks for good once stretched past maxLength by this fraction (0.5 = half again as long).
+   * Default: unbreakable. Needs a finite maxLength.
+   */
+  breakStrain?: number;
+}
+
+export interface AngleOptions {
+  /** Lower limit of the signed angle from (a − b) to (c − b), radians. */
+  min: number;
+  /** Upper limit, radians; min <= max <= min + 2π. Limits beyond ±π are fine (the angle is measured from the centre of the range). */
+  max: number;
+  compliance?: number;
+}
+
+export interface SpringOptions {
+  /** Rest length; default the current distance. */
+  length?: number;
+  /** Hooke constant k (force per unit length, >= 0). */
+  stiffness: number;
+  /** Damping constant c (force per unit relative speed, >= 0). Default 0. */
+  damping?: number;
+}
+
+export interface PinOptions {
+  /** Target point; default the particle's current position. */
+  x?: number;
+  y?: number;
+  /** 0 (default) holds the particle exactly; > 0 pulls it like a zero-length spring. */
+  compliance?: number;
+}
+
+export interface AreaOptions {
+  /** Rest area as a multiple of the loop's current area (a soft body's pressure). Default 1. */
+  pressure?: number;
+  compliance?: number;
+}
+
+export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';
+export const BODY_KINDS: readonly BodyKind[] = ['particle', 'rope', 'cloth', 'rigid', 'soft', 'ragdoll', 'custom'];
+
+export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area' | 'grab';
+/** In the order of the constraint registry's tables (see Kind in constraint-registry.ts). */
+export const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area', 'grab'];
+
+/** A collider's options checked and completed with their defaults (parts as given: indices into the body's particles). */
+export type ResolvedCollider = Required<Omit<ColliderOptions, 'parts'>> & { parts?: number[][] };
+
+/** Checks collider options for a body of `particleCount` particles and fills in the defaults. */
+export function resolveCollider(o: ColliderOptions, particleCount: number): ResolvedCollider {
+  if (o == null || typeof o !== 'object') throw new TypeError(`collider options must be an object, got ${String(o)}`);
+  const shape = oneOf('shape', o.shape ?? 'polygon', COLLIDER_SHAPES);
+  let parts: number[][] | undefined;
+  if (o.parts !== undefined) {
+    if (!Array.isArray(o.parts) || o.parts.length === 0) throw new RangeError(`parts must be a non-empty list of index lists, got ${JSON.stringify(o.parts)}`);
+    parts = o.parts.map((part, k) => {
+      if (!Array.isArray(part) || part.length < 3) throw new RangeError(`parts[${k}] must list at least 3 particle indices, got ${JSON.stringify(part)}`);
+      return part.map((i, j) => integer(`parts[${k}][${j}]`, i, 0, particleCount - 1));
+    });
+  }
+  if (shape === 'polygon' && !parts && particleCount < 3) throw new RangeError(`a polygon collider needs at least 3 particles, got ${particleCount}`);
+  const restitution = finite('restitution', o.restitution ?? 0);
+  if (restitution < 0 || restitution > 1) throw new RangeError(`restitution must be between 0 and 1, got ${restitution}`);
+  return {
+    shape,
+    parts,
+    friction: nonNegative('friction', o.friction ?? 0.6),
+    restitution,
+    category: integer('category', o.category ?? 1, 0, 0xffffffff),
+    mask: integer('mask', o.mask ?? 0xffffffff, 0, 0xffffffff),
+    group: integer('group', o.group ?? 0, -0x80000000, 0x7fffffff),
+  };
+}
+
+export function checkBounds(b: Bounds): Bounds {
+  if (b == null || typeof b !== 'object') throw new TypeError(`bounds must be {minX, minY, maxX, maxY} or null, got ${String(b)}`);
+  const out = { minX: finite('bounds.minX', b.minX), minY: finite('bounds.minY', b.minY), maxX: finite('bounds.maxX', b.maxX), maxY: finite('bounds.maxY', b.maxY) };
+  if (!(out.minX < out.maxX && out.minY < out.maxY)) throw new RangeError(`bounds must have minX < maxX and minY < maxY, got ${JSON.stringify(b)}`);
+  return out;
+}

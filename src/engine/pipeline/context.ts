@@ -1,0 +1,79 @@
+import { HandleRegistry } from '../handles.js';
+import { ParticleStore } from '../particles.js';
+import { grown } from '../table.js';
+import { ConstraintRegistry } from '../constraint-registry.js';
+import { BodyRegistry } from '../body-registry.js';
+import type { StepSettings } from '../settings.js';
+import { Colliders } from './colliders.js';
+import { PairList, type BroadPhase } from './broadphase.js';
+import { NarrowPhase } from './narrowphase.js';
+import { AnchorCache, Contacts } from './contacts.js';
+import { Sleep } from './sleep.js';
+import { CollisionEvents, EventTracker } from './events.js';
+import { shouldCollide } from './collide.js';
+
+/**
+ * Everything a step works on: the particles, the constraint tables and the bodies (with their handle registries),
+ * the collision state (colliders, candidate pairs, contacts, broad and narrow phase), sleep, events, the settings and
+ * the clock. The World is a facade over one context; the step's phases are plain functions of it. What of it a
+ * snapshot holds and what is rebuilt is listed in snapshot.ts (a test keeps that list complete).
+ */
+export class StepContext {
+  /** Simulated seconds and steps taken. */
+  time = 0;
+  stepCount = 0;
+  /** Real time not yet stepped (advance()), and its fraction of a step (for interpolated rendering). */
+  accumulator = 0;
+  alpha = 0;
+
+  readonly particles = new ParticleStore();
+  readonly particleIds = new HandleRegistry('particle', 'particles');
+  readonly constraints = new ConstraintRegistry();
+  readonly bodies = new BodyRegistry();
+
+  /** Collision state: per body slot colliders, this step's candidate pairs and contacts. */
+  readonly colliders = new Colliders();
+  readonly pairs = new PairList();
+  readonly contacts = new Contacts();
+  readonly narrowPhase = new NarrowPhase();
+  /** Friction anchors of last step's contacts, by feature. */
+  readonly anchors = new AnchorCache();
+  /** Per body slot: how far the body may move this step (speculative margin). */
+  motion = new Float64Array(16);
+
+  readonly sleep = new Sleep();
+  /** Begin/end collision events of the last step. */
+  readonly events = new CollisionEvents();
+  readonly eventTracker = new EventTracker();
+  /** Handles of the distance constraints that broke in the last step. */
+  readonly breaks = { count: 0, handles: new Float64Array(16) };
+  /** Some distance constraint can break (a step checks for tearing only then). */
+  hasBreakableLinks = false;
+
+  /** Bodies or constraints changed: the sleep bookkeeping needs rebuilding. */
+  topologyDirty = true;
+  /** Colliders changed: their parts and the active list need rebuilding. */
+  collidersDirty = false;
+  /** Movable particles that belong to no body (they never sleep). */
+  freeMovableParticles = 0;
+
+  /** When true, each step records how long collision detection and the substeps took (ms) in `timings`. */
+  measureTimings = false;
+  readonly timings = { detect: 0, solve: 0 };
+
+  // Callbacks made once, so that the step passes them without allocating.
+  readonly acceptPair = (a: number, b: number): boolean => shouldCollide(this, a, b);
+  readonly recordBreak = (row: number): void => {
+    const b = this.breaks;
+    if (b.count === b.handles.length) b.handles = grown(b.handles, b.count * 2);
+    b.handles[b.count++] = this.constraints.ids.handleOf(this.constraints.distances.slot[row]);
+  };
+  readonly bodyHandleOf = (slot: number): number => this.bodies.ids.handleOf(slot);
+  readonly bodyAlive = (slot: number): boolean => this.bodies.ids.alive[slot] === 1;
+  readonly bodyParticlesOf = (slot: number): Int32Array => this.bodies.particles[slot];
+
+  constructor(
+    readonly settings: StepSettings,
+    public broadPhase: BroadPhase,
+  ) {}
+}

@@ -1,0 +1,167 @@
+// The step, as a short list of named phases over a StepContext (the layout of Box2D v3's b2World_Step):
+//
+//   prepare → detect collisions (bounding boxes, broad phase, narrow phase)
+//   → per substep: accelerate → integrate → place pins → reset multipliers → relax (constraints, grabs, contacts,
+//     bounds) × iterations → derive velocities → contact velocities
+//   → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
+//
+// Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
+// (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
+import { breakOverstretched, solveDistances } from '../constraints/distance.js';
+import { solveAngles } from '../constraints/angle.js';
+import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
+import { solveAreas } from '../constraints/area.js';
+import { accumulateSprings } from '../constraints/spring.js';
+import { solveGrabs } from '../constraints/grab.js';
+import { integrate, updateVelocities } from '../integrate.js';
+import { keepInBounds } from '../bounds.js';
+import { solveContacts, solveContactVelocities } from './contacts.js';
+import { detectCollisions } from './collide.js';
+import { ensureTopology } from './topology.js';
+import type { StepContext } from './context.js';
+
+/** One step of `dt` seconds in `settings.substeps` substeps. */
+export function step(ctx: StepContext, dt: number): void {
+  ensureTopology(ctx);
+  if (isSettled(ctx)) {
+    // Everything sleeps: nothing moves, nothing to compute.
+    ctx.events.count = 0;
+    ctx.breaks.count = 0;
+    advanceClock(ctx, dt);
+    return;
+  }
+  const t0 = ctx.measureTimings ? performance.now() : 0;
+  recordStartPositions(ctx);
+  detectCollisions(ctx, dt);
+  const t1 = ctx.measureTimings ? performance.now() : 0;
+  const n = ctx.settings.substeps;
+  const h = dt / n;
+  for (let s = 0; s < n; s++) substep(ctx, h);
+  if (ctx.measureTimings) {
+    ctx.timings.detect = t1 - t0;
+    ctx.timings.solve = performance.now() - t1;
+  }
+  ctx.anchors.store(ctx.contacts);
+  breakLinks(ctx);
+  ctx.eventTracker.update(ctx.contacts, ctx.contacts.touched, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
+  updateSleep(ctx, dt);
+  clearForces(ctx);
+  advanceClock(ctx, dt);
+}
+
+/** One substep of length h. */
+export function substep(ctx: StepContext, h: number): void {
+  const { settings, particles } = ctx;
+  accelerate(ctx, h);
+  integrate(particles, h, 1 / (1 + h * settings.damping), settings.integrator);
+  placeRigidPins(ctx.constraints.pins, particles);
+  resetMultipliers(ctx);
+  ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
+  const h2 = h * h;
+  for (let k = 0; k < settings.iterations; k++) relax(ctx, h2);
+  updateVelocities(particles, h, settings.integrator);
+  if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
+}
+
+/**
+ * Real time has passed: take as many fixed steps as fit (at most maxCatchUpSteps; an older backlog is dropped so a
+ * stalled tab does not spiral), calling `afterStep` after each, and leave the remainder's fraction in `alpha`. In
+ * variableStep mode, take one step of the elapsed time instead. Returns the steps taken.
+ */
+export function advance(ctx: StepContext, elapsed: number, afterStep?: () => void): number {
+  const { timestep, maxCatchUpSteps } = ctx.settings;
+  if (ctx.settings.variableStep) {
+    if (elapsed === 0) return 0;
+    step(ctx, Math.min(elapsed, timestep * maxCatchUpSteps));
+    ctx.alpha = 1;
+    afterStep?.();
+    return 1;
+  }
+  ctx.accumulator += elapsed;
+  let taken = 0;
+  while (ctx.accumulator >= timestep && taken < maxCatchUpSteps) {
+    step(ctx, timestep);
+    ctx.accumulator -= timestep;
+    taken++;
+    afterStep?.();
+  }
+  if (ctx.accumulator >= timestep) ctx.accumulator %= timestep;
+  ctx.alpha = ctx.accumulator / timestep;
+  return taken;
+}
+
+/** True when every body is asleep and no free particle moves: a step then does no work. */
+export function isSettled(ctx: StepContext): boolean {
+  const sleep = ctx.sleep;
+  return !ctx.topologyDirty && sleep.enabled && sleep.awakeCount === 0 && ctx.freeMovableParticles === 0 && ctx.constraints.grabs.count === 0;
+}
+
+/** Where each particle starts the step (sleeping judges motion over whole steps, not substep jitter). */
+function recordStartPositions(ctx: StepContext): void {
+  const { x, y, sx, sy } = ctx.particles;
+  for (let i = 0, n = ctx.particles.count; i < n; i++) {
+    sx[i] = x[i];
+    sy[i] = y[i];
+  }
+}
+
+/** Gravity, the user's forces and the springs' forces, as accelerations. */
+function accelerate(ctx: StepContext, h: number): void {
+  const p = ctx.particles;
+  const { ax, ay, fx, fy, invMass } = p;
+  const gx = ctx.settings.gravity.x;
+  const gy = ctx.settings.gravity.y;
+  for (let i = 0, n = p.count; i < n; i++) {
+    ax[i] = gx + fx[i] * invMass[i];
+    ay[i] = gy + fy[i] * invMass[i];
+  }
+  const springs = ctx.constraints.springs;
+  if (springs.count > 0) accumulateSprings(springs, p, ax, ay, h);
+}
+
+/** XPBD multipliers start each substep at zero. */
+function resetMultipliers(ctx: StepContext): void {
+  const { distances, angles, areas, pins, grabs } = ctx.constraints;
+  distances.lambda.fill(0, 0, distances.count);
+  angles.lambda.fill(0, 0, angles.count);
+  areas.lambda.fill(0, 0, areas.count);
+  pins.lambdaX.fill(0, 0, pins.count);
+  pins.lambdaY.fill(0, 0, pins.count);
+  grabs.lambdaX.fill(0, 0, grabs.count);
+  grabs.lambdaY.fill(0, 0, grabs.count);
+}
+
+/** One Gauss–Seidel sweep over every constraint, then the contacts and the bounds. */
+function relax(ctx: StepContext, h2: number): void {
+  const p = ctx.particles;
+  const { distances, angles, areas, pins, grabs } = ctx.constraints;
+  if (distances.count > 0) solveDistances(distances, p, h2);
+  if (angles.count > 0) solveAngles(angles, p, h2);
+  if (areas.count > 0) solveAreas(areas, p, h2);
+  if (pins.count > 0) solveSoftPins(pins, p, h2);
+  if (grabs.count > 0) solveGrabs(grabs, p, h2);
+  if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p);
+  const bounds = ctx.settings.bounds;
+  if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction);
+}
+
+/** Tearing: links stretched past their breakStrain break; their handles go to `breaks`. */
+function breakLinks(ctx: StepContext): void {
+  ctx.breaks.count = 0;
+  if (ctx.hasBreakableLinks) breakOverstretched(ctx.constraints.distances, ctx.particles, ctx.recordBreak);
+}
+
+function updateSleep(ctx: StepContext, dt: number): void {
+  ctx.sleep.update(ctx.bodies.ids.high, ctx.bodies.ids.alive, ctx.bodyParticlesOf, ctx.particles, ctx.contacts, ctx.contacts.touched, dt);
+}
+
+/** The user's forces act for one step. */
+function clearForces(ctx: StepContext): void {
+  ctx.particles.fx.fill(0, 0, ctx.particles.count);
+  ctx.particles.fy.fill(0, 0, ctx.particles.count);
+}
+
+function advanceClock(ctx: StepContext, dt: number): void {
+  ctx.time += dt;
+  ctx.stepCount++;
+}

@@ -1,0 +1,74 @@
+// Bookkeeping rebuilt when bodies, particles or constraints change (never inside a step): the colliders' parts and
+// active list, the particle → body map, the body pairs constraints join (sleeping islands) and the free particles.
+import { GridBroadPhase } from './broadphase.js';
+import type { StepContext } from './context.js';
+import { grown } from '../table.js';
+
+/**
+ * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers floating,
+ * and parked masses must not be restored over a changed pin) and the bookkeeping is rebuilt before its next use.
+ */
+export function topologyChanged(ctx: StepContext): void {
+  if (!ctx.topologyDirty) wakeAll(ctx);
+  ctx.topologyDirty = true;
+}
+
+export function wakeAll(ctx: StepContext): void {
+  const { ids, particles } = ctx.bodies;
+  for (let s = 0; s < ids.high; s++) if (ids.alive[s]) ctx.sleep.wakeBody(s, particles[s], ctx.particles);
+}
+
+/** Wakes the body a particle belongs to (anything the user does to a particle). */
+export function wakeParticle(ctx: StepContext, i: number): void {
+  if (ctx.topologyDirty) return;
+  const s = ctx.sleep.particleBody[i];
+  if (s >= 0) ctx.sleep.wakeBody(s, ctx.bodies.particles[s], ctx.particles);
+}
+
+/** Rebuilds what is stale: after this the colliders and the sleep bookkeeping match the bodies. */
+export function ensureTopology(ctx: StepContext): void {
+  if (ctx.topologyDirty) rebuildTopology(ctx);
+}
+
+/** Particle → body map, cross-body constraint links and free particles, for sleeping (after any change). */
+export function rebuildTopology(ctx: StepContext): void {
+  if (ctx.collidersDirty) rebuildColliders(ctx);
+  const { ids, particles: members } = ctx.bodies;
+  const high = ids.high;
+  const p = ctx.particles;
+  const sleep = ctx.sleep;
+  sleep.rebuild(high, p.count, (slot) => (ids.alive[slot] ? members[slot] : null));
+  const owner = sleep.particleBody;
+  const links: [number, number][] = [];
+  const link = (i: number, j: number) => {
+    const a = owner[i];
+    const b = owner[j];
+    if (a >= 0 && b >= 0 && a !== b) links.push([a, b]);
+  };
+  const { distances: d, springs: s, angles: g, areas: ar } = ctx.constraints;
+  for (let r = 0; r < d.count; r++) link(d.a[r], d.b[r]);
+  for (let r = 0; r < s.count; r++) link(s.a[r], s.b[r]);
+  for (let r = 0; r < g.count; r++) {
+    link(g.a[r], g.b[r]);
+    link(g.b[r], g.c[r]);
+  }
+  for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) link(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+  sleep.setLinks(links);
+  let free = 0;
+  for (let i = 0; i < p.count; i++) if (p.alive[i] && owner[i] < 0 && p.invMass[i] > 0) free++;
+  ctx.freeMovableParticles = free;
+  let awake = 0;
+  for (let b = 0; b < high; b++) if (ids.alive[b] && !sleep.asleep[b]) awake++;
+  sleep.awakeCount = awake;
+  ctx.topologyDirty = false;
+}
+
+/** The colliders' convex parts and active list, from the bodies (after bodies or colliders changed). */
+export function rebuildColliders(ctx: StepContext): void {
+  const bodies = ctx.bodies;
+  const high = bodies.ids.high;
+  ctx.motion = grown(ctx.motion, high);
+  ctx.colliders.rebuild(high, (slot) => (bodies.ids.alive[slot] ? { particles: bodies.particles[slot], parts: bodies.partIndices(slot) } : null));
+  if (ctx.broadPhase instanceof GridBroadPhase) ctx.broadPhase.invalidateCellSize();
+  ctx.collidersDirty = false;
+}

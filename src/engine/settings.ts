@@ -1,0 +1,70 @@
+// The world's settings as the step reads them, their defaults and their checks (shared by the World's constructor,
+// its setters and restore(), so a setting is validated the same way wherever it comes from).
+import type { Bounds } from './bounds.js';
+import { INTEGRATORS, type Integrator } from './integrate.js';
+import { checkBounds, type Vec2, type WorldOptions } from './options.js';
+import { finite, integer, nonNegative, oneOf, positive } from './validate.js';
+
+/** See WorldOptions for what each setting does. */
+export interface StepSettings {
+  gravity: Vec2;
+  timestep: number;
+  substeps: number;
+  iterations: number;
+  damping: number;
+  integrator: Integrator;
+  bounds: Bounds | null;
+  boundsFriction: number;
+  maxCatchUpSteps: number;
+  variableStep: boolean;
+  contactSlop: number;
+  maxPushSpeed: number;
+}
+
+/** Every option's default (limits: DEFAULT_LIMITS). */
+export const DEFAULTS: Required<Omit<WorldOptions, 'limits'>> = {
+  gravity: { x: 0, y: 9.81 },
+  timestep: 1 / 60,
+  substeps: 10,
+  iterations: 1,
+  damping: 0,
+  integrator: 'verlet',
+  bounds: null,
+  boundsFriction: 0.5,
+  maxCatchUpSteps: 5,
+  variableStep: false,
+  broadphase: 'grid',
+  narrowphase: 'sat',
+  cellSize: 0,
+  contactSlop: 0.02,
+  sleeping: true,
+  maxPushSpeed: 4,
+};
+
+export const BROAD_PHASES = ['grid', 'brute'] as const;
+export const NARROW_PHASES = ['sat', 'gjk'] as const;
+
+/** Each setting's check: returns the value to store or throws a TypeError/RangeError naming the setting. */
+export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K]) => StepSettings[K] } = {
+  gravity: (g) => ({ x: finite('gravity.x', g?.x), y: finite('gravity.y', g?.y) }),
+  timestep: (v) => positive('timestep', v),
+  substeps: (v) => integer('substeps', v, 1, 1000),
+  iterations: (v) => integer('iterations', v, 1, 1000),
+  damping: (v) => nonNegative('damping', v),
+  integrator: (v) => oneOf('integrator', v, INTEGRATORS),
+  bounds: (b) => (b == null ? null : checkBounds(b)),
+  boundsFriction: (v) => nonNegative('boundsFriction', v),
+  maxCatchUpSteps: (v) => integer('maxCatchUpSteps', v, 1, 1000),
+  variableStep: (v) => Boolean(v),
+  contactSlop: (v) => nonNegative('contactSlop', v),
+  maxPushSpeed: (v) => positive('maxPushSpeed', v),
+};
+
+const NAMES = Object.keys(CHECK) as (keyof StepSettings)[];
+
+/** Checked settings from options completed with the defaults (gravity and bounds copied, never shared). */
+export function checkedSettings(options: Required<Omit<WorldOptions, 'limits'>>): StepSettings {
+  const out = {} as Record<keyof StepSettings, unknown>;
+  for (const name of NAMES) out[name] = (CHECK[name] as (v: unknown) => unknown)(options[name]);
+  return out as StepSettings;
+}
