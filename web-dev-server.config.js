@@ -1,5 +1,5 @@
 // Shared by the demo server (`npm start`) and the test runner: TypeScript through esbuild, p5's ESM build,
-// `.js` worker URLs mapped to their `.ts` sources, and optional cross-origin isolation (COOP/COEP).
+// `.js` worker URLs mapped to their `.ts` sources, optional cross-origin isolation (COOP/COEP), and `/` sent to the gallery.
 import { esbuildPlugin } from '@web/dev-server-esbuild';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -34,12 +34,19 @@ export const p5Esm = {
   },
 };
 
+/** `/` is not a page: send it to the gallery, so the address the server prints works. (Dev server only: the test
+ * runner serves its own pages at `/`.) */
+export function rootToDemo(ctx, next) {
+  if (ctx.path === '/') return ctx.redirect('/demo/');
+  return next();
+}
+
 export const plugins = [p5Esm, esbuildPlugin({ ts: true, target: 'es2022', tsconfig: root + 'tsconfig.json' })];
 
 export default {
   rootDir: root,
   nodeResolve: true,
   appIndex: undefined,
-  middleware: [crossOriginIsolation(), jsToTs],
+  middleware: [rootToDemo, crossOriginIsolation(), jsToTs],
   plugins,
 };
