@@ -12,6 +12,8 @@ echo "== custom-elements.json up to date"
 cp custom-elements.json /tmp/custom-elements.committed.json
 npm run analyze --silent >/dev/null
 cmp -s /tmp/custom-elements.committed.json custom-elements.json || { echo "custom-elements.json was out of date (regenerated now): commit it"; exit 1; }
+echo "== docs/elements.md up to date with custom-elements.json"
+node scripts/docs-elements.mjs --check
 echo "== engine tests in Node"
 npx mocha
 echo "== engine in Node: allocation per step, soak"
