@@ -192,7 +192,7 @@ const PAGE = `<!doctype html>
       return scenes.map((s, k) => s.stepCount > counts[k]);
     },
     async counts() {
-      const { liveResources } = await import('/src/index.js');
+      const { liveResources } = await import('/src/worker/resources.js');
       const all = document.querySelectorAll('*').length + scenes.reduce((n, s) => n + s.shadowRoot.querySelectorAll('*').length, 0);
       return {
         workers: window.__soak.workersMade - window.__soak.workersTerminated,

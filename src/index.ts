@@ -1,8 +1,10 @@
-// physics-elements: the element library entry. Importing it registers the elements; it also re-exports the headless
-// engine, so one import gives both.
+// physics-elements: the element library entry. Importing it registers the elements. It exports the public API only:
+// the elements, their event details, the drawing hook's types, and the headless engine (so one import gives both).
+// Internals (the worker client and host, frame stores, the wire protocol) stay in their modules.
 export * from './engine/index.js';
 
-export { PhysicsSceneElement, type PhysicsErrorDetail, type PhysicsCollisionDetail, type PhysicsReadyDetail } from './elements/physics-scene.js';
+export { PhysicsSceneElement } from './elements/physics-scene/physics-scene.js';
+export type { PhysicsErrorDetail, PhysicsCollisionDetail, PhysicsReadyDetail, PhysicsEventDetails, PhysicsEventName } from './elements/physics-scene/events.js';
 export { PhysicsBodyElement } from './elements/body-element.js';
 export { PhysicsLinkElement } from './elements/link-element.js';
 export { PhysicsBoxElement } from './elements/physics-box.js';
@@ -18,11 +20,6 @@ export { PhysicsPinElement } from './elements/physics-pin.js';
 export { ClothSimElement } from './elements/cloth-sim.js';
 export { RagdollSimElement } from './elements/ragdoll-sim.js';
 
-export { SceneRenderer, type DrawHook, type DrawView, type BodyStyle } from './render/renderer.js';
-export { EngineClient, FrameStore, createEngineWorker, type ClientOptions } from './worker/client.js';
-export { EngineHost } from './worker/engine-host.js';
-export { liveResources } from './worker/resources.js';
-export type {
-  EngineApi, HostScene, HostParams, HostSnapshot, HostError, KeyedBody, KeyedLink, LinkDescription, Topology, TopologyBody,
-  Diagnostics, Transport,
-} from './worker/protocol.js';
+export type { DrawHook, DrawView, BodyStyle } from './render/renderer.js';
+// What the public API above names: diagnostics(), snapshot()/restore(), physics-ready's transport, DrawView's topology.
+export type { Diagnostics, HostSnapshot, Topology, TopologyBody, Transport } from './worker/protocol.js';

@@ -1,7 +1,7 @@
 import { css } from 'lit';
 import { property } from 'lit/decorators.js';
 import { numberAttribute, type Problem } from './checks.js';
-import { PhysicsSceneElement } from './physics-scene.js';
+import { PhysicsSceneElement } from './physics-scene/physics-scene.js';
 
 /**
  * What `<cloth-sim>` and `<ragdoll-sim>` share: a `<physics-scene>` whose bodies are generated, from a setup read off

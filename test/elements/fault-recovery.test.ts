@@ -2,7 +2,8 @@
 // reported with physics-error, replaced by a new worker and the scene restored where it was drawn last; past
 // max-restarts the scene stops with a visible error. One live worker per scene throughout.
 import { expect } from '@open-wc/testing';
-import { liveResources, PhysicsSceneElement, type PhysicsErrorDetail } from '../../src/index.js';
+import { PhysicsSceneElement, type PhysicsErrorDetail } from '../../src/index.js';
+import { liveResources } from '../../src/worker/resources.js';
 import { TimeoutError, WorkerDiedError } from '../../src/worker/client.js';
 import { mount, unmount, waitFor } from './helpers.js';
 

@@ -2,7 +2,8 @@
 // listener, observer or p5 sketch behind.
 import { expect } from '@open-wc/testing';
 import p5 from 'p5';
-import { liveResources, type PhysicsSceneElement } from '../../src/index.js';
+import type { PhysicsSceneElement } from '../../src/index.js';
+import { liveResources } from '../../src/worker/resources.js';
 import { frames, mount, unmount, waitFor } from './helpers.js';
 
 /** Counts workers made and terminated, by replacing the global Worker for the duration of a test. */

@@ -1,8 +1,9 @@
 // The renderer on its own, fed hand-made frames: batched drawing (one path per style) and interpolation between
 // the two newest frames.
 import { expect } from '@open-wc/testing';
-import { SceneRenderer, FrameStore, type DrawView, type Topology, type TopologyBody } from '../../src/index.js';
-import { F, HEADER, POSE } from '../../src/worker/protocol.js';
+import { SceneRenderer, type DrawView } from '../../src/render/renderer.js';
+import { FrameStore } from '../../src/worker/client.js';
+import { F, HEADER, POSE, type Topology, type TopologyBody } from '../../src/worker/protocol.js';
 import { waitFor } from '../elements/helpers.js';
 
 function frame(seq: number, time: number, running: boolean, xy: number[], bodies: number): Float64Array {

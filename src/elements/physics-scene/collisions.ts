@@ -1,0 +1,66 @@
+// Collision events: the engine collects contacts that begin and end only while someone listens on the scene (or
+// `collision-events` asks for them), and each one reaches the page as `physics-collision` / `physics-collision-end`
+// naming the two body elements.
+import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { EVENT } from '../../worker/protocol.js';
+import { firePhysicsEvent } from './events.js';
+import type { EngineCommands } from './session.js';
+
+const COLLISION_EVENTS = new Set(['physics-collision', 'physics-collision-end']);
+
+export interface CollisionOptions {
+  /** Events wanted even with no listener on the scene (the `collision-events` attribute). */
+  always(): boolean;
+  /** The body element of an engine key. */
+  elementOf(key: number): Element | undefined;
+  engine: EngineCommands;
+}
+
+/** @internal */
+export class CollisionEventsController implements ReactiveController {
+  private listeners = 0;
+  /** Whether the engine was last told to collect events. */
+  private on = false;
+
+  constructor(
+    private readonly host: ReactiveControllerHost & EventTarget,
+    private readonly options: CollisionOptions,
+  ) {
+    host.addController(this);
+  }
+
+  /** `collision-events` may have changed. */
+  hostUpdated(): void {
+    this.refresh();
+  }
+
+  /** Whether the engine should collect events now. */
+  get wanted(): boolean {
+    return this.options.always() || this.listeners > 0;
+  }
+
+  /** A listener of `type` was added (+1) or removed (−1) on the scene. */
+  listened(type: string, delta: 1 | -1): void {
+    if (!COLLISION_EVENTS.has(type) || (delta < 0 && this.listeners === 0)) return;
+    this.listeners += delta;
+    this.refresh();
+  }
+
+  /** Tells the engine when whether events are wanted changed. */
+  refresh(): void {
+    const on = this.wanted;
+    if (on === this.on) return;
+    this.on = on;
+    if (this.options.engine.live) this.options.engine.send('setParams', { events: on });
+  }
+
+  /** Events from the engine: [type (0 begin, 1 end), key a, key b, normal x, normal y, depth] each. */
+  readonly dispatch = (data: Float64Array, count: number): void => {
+    for (let k = 0; k < count; k++) {
+      const o = k * EVENT;
+      const a = this.options.elementOf(data[o + 1]) ?? null;
+      const b = this.options.elementOf(data[o + 2]) ?? null;
+      firePhysicsEvent(this.host, data[o] === 0 ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] });
+    }
+  };
+}

@@ -1,0 +1,110 @@
+// The scene's own attributes, checked once per update: the values the engine and the canvas get (defaults in place of
+// bad values), and the problems to report.
+import type { Bounds } from '../../engine/index.js';
+import type { HostParams } from '../../worker/protocol.js';
+import { Checker, type Problem } from '../checks.js';
+
+/** The scene properties the configuration is read from (as set: unchecked). */
+export interface SceneAttributes {
+  width: number;
+  height: number;
+  gravity: string;
+  iterations: number;
+  substeps: number;
+  timestep: number;
+  broadphase: string;
+  narrowphase: string;
+  bounds: string;
+  background: string;
+  worker: string;
+  maxRestarts: number;
+  drawMode: string;
+}
+
+/** The checked configuration. */
+export interface SceneConfig {
+  width: number;
+  height: number;
+  gravity: { x: number; y: number };
+  iterations: number;
+  substeps: number;
+  timestep: number;
+  broadphase: 'grid' | 'brute';
+  narrowphase: 'sat' | 'gjk';
+  bounds: 'view' | 'none';
+  worker: 'auto' | 'none';
+  maxRestarts: number;
+  drawMode: 'over' | 'replace';
+  /** CSS colour of the canvas ('transparent' for "none"). */
+  background: string;
+}
+
+/** Reads and checks the scene's attributes, in the order their problems are reported. @internal */
+export function readConfig(scene: Element & SceneAttributes): { config: SceneConfig; problems: Problem[] } {
+  const check = new Checker(scene);
+  const config: SceneConfig = {
+    width: check.number('width', scene.width, { positive: true, fallback: 16 })!,
+    height: check.number('height', scene.height, { positive: true, fallback: 9 })!,
+    gravity: gravityOf(check, scene.gravity),
+    iterations: check.number('iterations', scene.iterations, { integer: true, min: 1, max: 1000, fallback: 1 })!,
+    substeps: check.number('substeps', scene.substeps, { integer: true, min: 1, max: 1000, fallback: 10 })!,
+    timestep: check.number('timestep', scene.timestep, { positive: true, max: 1, fallback: 1 / 60 })!,
+    broadphase: check.oneOf('broadphase', scene.broadphase, ['grid', 'brute'] as const, 'grid'),
+    narrowphase: check.oneOf('narrowphase', scene.narrowphase, ['sat', 'gjk'] as const, 'sat'),
+    bounds: check.oneOf('bounds', scene.bounds, ['view', 'none'] as const, 'view'),
+    worker: check.oneOf('worker', scene.worker, ['auto', 'none'] as const, 'auto'),
+    maxRestarts: check.number('max-restarts', scene.maxRestarts, { integer: true, min: 0, max: 100, fallback: 3 })!,
+    drawMode: check.oneOf('draw-mode', scene.drawMode, ['over', 'replace'] as const, 'over'),
+    background: check.color('background', scene.background, '#f7f5f0') ?? 'transparent',
+  };
+  return { config, problems: check.problems };
+}
+
+/** Gravity "x y": two numbers (default 0 9.81). */
+function gravityOf(check: Checker, value: string): { x: number; y: number } {
+  const g = check.numbers('gravity', value);
+  if (g && g.length === 2) return { x: g[0], y: g[1] };
+  if (g) check.fail('gravity', value, 'must be two numbers "x y"');
+  return { x: 0, y: 9.81 };
+}
+
+/** Walls at the sides and a floor at the bottom; open at the top, so bodies may start above the view. @internal */
+export function viewBounds(config: Pick<SceneConfig, 'bounds' | 'width' | 'height'>): Bounds | null {
+  return config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null;
+}
+
+/** The engine parameters of a configuration. @internal */
+export function hostParams(config: SceneConfig, extra: { gravityOffset: { x: number; y: number }; debug: boolean; events: boolean }): HostParams {
+  return {
+    gravity: { x: config.gravity.x + extra.gravityOffset.x, y: config.gravity.y + extra.gravityOffset.y },
+    iterations: config.iterations,
+    substeps: config.substeps,
+    timestep: config.timestep,
+    broadphase: config.broadphase,
+    narrowphase: config.narrowphase,
+    debug: extra.debug,
+    events: extra.events,
+    bounds: viewBounds(config),
+  };
+}
+
+/** Which engine parameters each scene property sets. */
+const PARAMS_OF: Record<string, (keyof HostParams)[]> = {
+  gravity: ['gravity'],
+  iterations: ['iterations'],
+  substeps: ['substeps'],
+  timestep: ['timestep'],
+  broadphase: ['broadphase'],
+  narrowphase: ['narrowphase'],
+  debug: ['debug'],
+  width: ['bounds'],
+  height: ['bounds'],
+  bounds: ['bounds'],
+};
+
+/** The parameters to send when the properties `changed` changed (empty when none is an engine parameter). @internal */
+export function changedParams(changed: Iterable<PropertyKey>, params: HostParams): Partial<HostParams> {
+  const out: Record<string, unknown> = {};
+  for (const name of changed) for (const p of PARAMS_OF[String(name)] ?? []) out[p] = params[p];
+  return out as Partial<HostParams>;
+}

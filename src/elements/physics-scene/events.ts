@@ -1,0 +1,57 @@
+// The events the elements fire, with their details. Every `physics-*` event bubbles and is composed (it leaves shadow
+// roots), and HTMLElementEventMap names its detail, so `scene.addEventListener('physics-error', (e) => e.detail)` is
+// typed without a cast.
+import type { Transport } from '../../worker/protocol.js';
+
+/** Detail of `physics-error`. */
+export interface PhysicsErrorDetail {
+  /** The element whose markup is wrong (a child, or the scene). */
+  element: Element;
+  /** The attribute at fault ("" when the problem is not one attribute's). */
+  attribute: string;
+  /** Its value as written. */
+  value: string;
+  message: string;
+}
+
+/** Detail of `physics-collision` and `physics-collision-end`. */
+export interface PhysicsCollisionDetail {
+  a: Element | null;
+  b: Element | null;
+  /** Contact normal from a to b (zero for end events). */
+  normal: { x: number; y: number };
+  /** Deepest overlap seen when the contact began (0 for end events). */
+  depth: number;
+}
+
+/** Detail of `physics-ready`. */
+export interface PhysicsReadyDetail {
+  /** Where the engine runs. */
+  mode: 'worker' | 'main';
+  /** How states reach the page: SharedArrayBuffer, transferred ArrayBuffers, or directly (main thread). */
+  transport: Transport;
+}
+
+/** Every `physics-*` event and its detail. */
+export interface PhysicsEventDetails {
+  'physics-ready': PhysicsReadyDetail;
+  'physics-error': PhysicsErrorDetail;
+  'physics-collision': PhysicsCollisionDetail;
+  'physics-collision-end': PhysicsCollisionDetail;
+}
+
+export type PhysicsEventName = keyof PhysicsEventDetails;
+
+/** Dispatches a `physics-*` event on `target`: bubbling and composed, like every event of the elements. @internal */
+export function firePhysicsEvent<K extends PhysicsEventName>(target: EventTarget, type: K, detail: PhysicsEventDetails[K]): void {
+  target.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+}
+
+declare global {
+  interface HTMLElementEventMap {
+    'physics-ready': CustomEvent<PhysicsReadyDetail>;
+    'physics-error': CustomEvent<PhysicsErrorDetail>;
+    'physics-collision': CustomEvent<PhysicsCollisionDetail>;
+    'physics-collision-end': CustomEvent<PhysicsCollisionDetail>;
+  }
+}

@@ -1,0 +1,215 @@
+// Markup → engine. Every body and link element of the scene gets a numeric key; its description goes to the engine
+// when the scene loads, and again when it changes (the element's own update) or comes and goes (a MutationObserver on
+// the container). The markup is the source of truth: what the engine holds follows it. Not a controller: it has no
+// lifecycle of its own, the session's start (observe, collect) and the scene's stop (reset) drive it.
+import type { BodyDescription } from '../../engine/index.js';
+import type { BodyStyle } from '../../render/renderer.js';
+import type { KeyedBody, KeyedLink, LinkDescription } from '../../worker/protocol.js';
+import { PhysicsBodyElement } from '../body-element.js';
+import { Checker, type Problem } from '../checks.js';
+import { PhysicsLinkElement } from '../link-element.js';
+import type { SceneHost } from '../scene-host.js';
+import type { EngineCommands } from './session.js';
+
+type Child = PhysicsBodyElement | PhysicsLinkElement;
+
+interface Entry {
+  element: Child;
+  kind: 'body' | 'link';
+  /** JSON of the description last sent to the engine ('' = none). */
+  sent: string;
+}
+
+export interface MarkupOptions {
+  /** Where the body and link elements are: the scene, or a preset's hidden part of its shadow root. */
+  container(): ParentNode & Node;
+  /** The engine the changes go to (sent only while it has the scene loaded). */
+  engine: EngineCommands & { readonly shown: { pose(key: number): [number, number, number] | null } | null };
+  /** Where each element's problems go (the element is their source). */
+  problems: { set(source: unknown, el: Element, problems: Problem[]): void; forget(source: unknown): void };
+  /** How each body is drawn. */
+  styles: { setStyle(key: number, style: BodyStyle): void; deleteStyle(key: number): void };
+}
+
+/** @internal */
+export class MarkupSync implements SceneHost {
+  private nextKey = 1;
+  private keys = new WeakMap<Element, number>();
+  private readonly entries = new Map<number, Entry>();
+  private readonly observer = new MutationObserver(() => this.sync());
+
+  constructor(private readonly options: MarkupOptions) {}
+
+  /** Starts following the container's children (added, removed, ids changed). */
+  observe(): void {
+    this.observer.observe(this.options.container(), { childList: true, subtree: true, attributes: true, attributeFilter: ['id'] });
+  }
+
+  /** The scene stopped: no observing, no keys; the children are no longer this scene's. */
+  reset(): void {
+    this.observer.disconnect();
+    for (const key of [...this.entries.keys()]) this.forget(key);
+    this.keys = new WeakMap();
+  }
+
+  keyOf(el: Element): number | undefined {
+    return this.keys.get(el);
+  }
+
+  elementOf(key: number): Child | undefined {
+    return this.entries.get(key)?.element;
+  }
+
+  /**
+   * Every child described, for a (re)load. A restart keeps the keys of children it knows (the snapshot names them),
+   * forgets removed ones and adopts new ones.
+   */
+  collect(): { bodies: KeyedBody[]; links: KeyedLink[] } {
+    const children = this.children();
+    this.prune(children, false);
+    const bodies: KeyedBody[] = [];
+    const links: KeyedLink[] = [];
+    for (const el of children) if (el instanceof PhysicsBodyElement) {
+      const key = this.keys.get(el) ?? this.adopt(el);
+      const desc = this.describeBody(key);
+      if (desc) bodies.push({ key, desc });
+    }
+    for (const el of children) if (el instanceof PhysicsLinkElement) {
+      const key = this.keys.get(el) ?? this.adopt(el);
+      const desc = this.describeLink(key);
+      if (desc) links.push({ key, desc });
+    }
+    return { bodies, links };
+  }
+
+  /** The child list changed: new children added, gone ones removed, links resolved again. */
+  sync(): void {
+    const { engine } = this.options;
+    if (!engine.live) return;
+    const children = this.children();
+    this.prune(children, true);
+    for (const el of children) {
+      if (this.keys.has(el) || !(el instanceof PhysicsBodyElement)) continue;
+      const key = this.adopt(el);
+      const desc = this.describeBody(key);
+      if (desc) engine.send('addBody', { key, desc });
+    }
+    for (const el of children) if (!this.keys.has(el) && el instanceof PhysicsLinkElement) this.adopt(el);
+    this.refreshLinks();
+  }
+
+  // ---- SceneHost: what the children call ---------------------------------------------------------------------
+
+  childChanged(child: Element): void {
+    const { engine } = this.options;
+    if (!engine.live) return;
+    const key = this.keys.get(child);
+    if (key === undefined) {
+      this.sync();
+      return;
+    }
+    const entry = this.entries.get(key)!;
+    if (entry.kind === 'body') {
+      const before = entry.sent;
+      const desc = this.describeBody(key);
+      if (entry.sent !== before) {
+        if (desc) engine.send('updateBody', { key, desc });
+        else engine.send('removeBody', key);
+      }
+    }
+    this.refreshLinks();
+  }
+
+  poseOf(child: Element): [number, number, number] | null {
+    const key = this.keys.get(child);
+    const shown = this.options.engine.shown;
+    return key === undefined || !shown ? null : shown.pose(key);
+  }
+
+  applyImpulse(child: Element, ix: number, iy: number): void {
+    const key = this.keys.get(child);
+    if (key !== undefined && Number.isFinite(ix) && Number.isFinite(iy)) this.options.engine.send('applyImpulse', key, ix, iy);
+  }
+
+  setVelocity(child: Element, vx: number, vy: number): void {
+    const key = this.keys.get(child);
+    if (key !== undefined && Number.isFinite(vx) && Number.isFinite(vy)) this.options.engine.send('setVelocity', key, vx, vy);
+  }
+
+  // ---- internals ---------------------------------------------------------------------------------------------
+
+  private children(): Child[] {
+    const out: Child[] = [];
+    for (const el of Array.from(this.options.container().children)) {
+      if (el instanceof PhysicsBodyElement || el instanceof PhysicsLinkElement) out.push(el);
+    }
+    return out;
+  }
+
+  private adopt(el: Child): number {
+    const key = this.nextKey++;
+    this.keys.set(el, key);
+    this.entries.set(key, { element: el, kind: el instanceof PhysicsBodyElement ? 'body' : 'link', sent: '' });
+    el._scene = this;
+    return key;
+  }
+
+  private forget(key: number): void {
+    const entry = this.entries.get(key)!;
+    entry.element._scene = null;
+    this.entries.delete(key);
+    this.keys.delete(entry.element);
+    this.options.problems.forget(entry.element);
+  }
+
+  /** Forgets the children no longer in the container (and, with `tellEngine`, removes them from the engine). */
+  private prune(children: Child[], tellEngine: boolean): void {
+    const present = new Set<Element>(children);
+    for (const [key, entry] of [...this.entries]) {
+      if (present.has(entry.element)) continue;
+      if (tellEngine) this.options.engine.send(entry.kind === 'body' ? 'removeBody' : 'removeLink', key);
+      if (entry.kind === 'body') this.options.styles.deleteStyle(key);
+      this.forget(key);
+    }
+  }
+
+  private describeBody(key: number): BodyDescription | null {
+    const entry = this.entries.get(key)!;
+    const el = entry.element as PhysicsBodyElement;
+    const { desc, problems } = el.describe();
+    const check = new Checker(el);
+    const style = el.styleOf(check);
+    this.options.problems.set(el, el, [...problems, ...check.problems]);
+    this.options.styles.setStyle(key, style);
+    entry.sent = desc ? JSON.stringify(desc) : '';
+    return desc;
+  }
+
+  private describeLink(key: number): LinkDescription | null {
+    const entry = this.entries.get(key)!;
+    const el = entry.element as PhysicsLinkElement;
+    const { desc, problems } = el.describe((id) => this.resolve(id));
+    this.options.problems.set(el, el, problems);
+    entry.sent = desc ? JSON.stringify(desc) : '';
+    return desc;
+  }
+
+  /** The key of the body element with this id, or null. */
+  private resolve(id: string): number | null {
+    for (const [key, entry] of this.entries) if (entry.kind === 'body' && entry.element.id === id) return key;
+    return null;
+  }
+
+  /** Describes every link again (ids may now name other bodies) and sends the ones that changed. */
+  private refreshLinks(): void {
+    const { engine } = this.options;
+    for (const [key, entry] of this.entries) {
+      if (entry.kind !== 'link') continue;
+      const before = entry.sent;
+      const desc = this.describeLink(key);
+      if (entry.sent === before) continue;
+      if (desc) engine.send('updateLink', { key, desc });
+      else engine.send('removeLink', key);
+    }
+  }
+}

@@ -1,0 +1,483 @@
+// <physics-scene>: properties, public API and render. The work is done by controllers, one concern each (this
+// folder): the engine session, fault recovery, markup sync, visibility, the canvas, pointer drag, problems and
+// collision events. The element wires them together and is the only one that knows them all.
+import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
+import { property, state } from 'lit/decorators.js';
+import type { DrawHook } from '../../render/renderer.js';
+import { EngineClient } from '../../worker/client.js';
+import type { Diagnostics, HostParams, HostScene, HostSnapshot, Transport } from '../../worker/protocol.js';
+import type { Problem } from '../checks.js';
+import { CollisionEventsController } from './collisions.js';
+import { changedParams, hostParams, readConfig, viewBounds, type SceneConfig } from './config.js';
+import { firePhysicsEvent } from './events.js';
+import { MarkupSync } from './markup.js';
+import { PointerDragController } from './pointer.js';
+import { ProblemsController } from './problems.js';
+import { RecoveryController } from './recovery.js';
+import { EngineSession, type Engine } from './session.js';
+import { StageController } from './stage.js';
+import { sceneStyles } from './styles.js';
+import { VisibilityController } from './visibility.js';
+
+/**
+ * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
+ * scene simulates them in a Web Worker at a fixed step and draws them with p5 into a canvas in its shadow root.
+ * The markup is the source of truth: adding, removing or changing a child or an attribute updates the running
+ * simulation. World units: `width` × `height` is the visible box (like an SVG viewBox), y grows downward.
+ *
+ * @summary A declarative 2D physics scene.
+ *
+ * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
+ * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth}`, a and b are the body elements). Sent only while a listener is registered on the scene (or `collision-events` is set).
+ * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`).
+ * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
+ *
+ * @csspart stage - The box that holds the canvas.
+ * @csspart canvas - The p5 canvas.
+ * @csspart status - The loading message shown until the engine runs.
+ * @csspart error - The visible list of current problems (bad attributes, a failing engine).
+ * @csspart play-button - The play control, shown when the scene started paused for `prefers-reduced-motion` or was paused with Space.
+ *
+ * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
+ * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable and
+ * Space toggles pause; it gets `role="group"`, `aria-label` and `aria-keyshortcuts="Space"` unless the page sets them.
+ *
+ * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height).
+ */
+export class PhysicsSceneElement extends LitElement {
+  static override styles: CSSResultGroup = sceneStyles;
+
+  /** Makes the engine worker; replace it to load the worker from elsewhere (or to test a failing one). */
+  static workerFactory: (() => Worker) | null = null;
+  /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error`. */
+  static callTimeout = 8000;
+
+  /** World units across the view. Default 16. */
+  @property({ type: Number }) width = 16;
+  /** World units down the view. Default 9. */
+  @property({ type: Number }) height = 9;
+  /** Gravity "x y" in world units / s² (y grows downward). Default "0 9.81". */
+  @property() gravity = '0 9.81';
+  /** Gauss–Seidel iterations per substep. Default 1. */
+  @property({ type: Number }) iterations = 1;
+  /** Substeps per step. Default 10. */
+  @property({ type: Number }) substeps = 10;
+  /** Fixed step in seconds. Default 1/60. */
+  @property({ type: Number }) timestep = 1 / 60;
+  /** Starts (and stays) paused. */
+  @property({ type: Boolean, reflect: true }) paused = false;
+  /** Draws AABBs, contacts and the broad phase's grid cells. */
+  @property({ type: Boolean, reflect: true }) debug = false;
+  /** Broad phase: "grid" (default) or "brute". */
+  @property() broadphase = 'grid';
+  /** Narrow phase for polygon pairs: "sat" (default, separating axes) or "gjk" (GJK distance, EPA when overlapping). */
+  @property() narrowphase = 'sat';
+  /** "view" (default): walls at the sides and bottom of the width × height box (open at the top); "none": unbounded. */
+  @property() bounds = 'view';
+  /** Canvas background (CSS colour). Default "#f7f5f0". */
+  @property() background = '#f7f5f0';
+  /** "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. */
+  @property() worker = 'auto';
+  /** Send collision events even with no listener on the scene itself (for listeners on ancestors). */
+  @property({ type: Boolean, attribute: 'collision-events' }) collisionEvents = false;
+  /**
+   * Restarts of a dead or hung engine worker allowed within 60 s. Each fires `physics-error` ("restarting it,
+   * attempt k of n") and restores the last snapshot; one more failure within the minute stops the scene with a final
+   * `physics-error` and the error box. Default 3; 0 never restarts.
+   */
+  @property({ type: Number, attribute: 'max-restarts' }) maxRestarts = 3;
+  /** How `drawHook` combines with the default drawing: "over" (default) or "replace". */
+  @property({ attribute: 'draw-mode' }) drawMode = 'over';
+  /**
+   * Custom p5 drawing, called every frame with a DrawView (the p5 instance, the 2D context, interpolated particle
+   * positions, the topology and the world → canvas mapping), after the default drawing ("over") or instead ("replace").
+   */
+  @property({ attribute: false }) drawHook: DrawHook | null = null;
+
+  /** The loading message is shown. */
+  @state() private loading = true;
+  /** The checked configuration, read once per update. */
+  private settings: SceneConfig | null = null;
+  /** Added to `gravity` when sent to the engine (a preset's wind). */
+  private gravityOffset = { x: 0, y: 0 };
+
+  private readonly problems = new ProblemsController(this, {
+    box: () => this.renderRoot?.querySelector<HTMLElement>('.error') ?? null,
+    elementOf: (key) => this.markup.elementOf(key),
+  });
+  private readonly session: EngineSession = new EngineSession(this, {
+    connect: () => this.connect(),
+    scene: {
+      prepare: () => {
+        this.stage.open(this.renderRoot.querySelector<HTMLElement>('.stage')!, this.onScreen);
+        this.markup.observe();
+      },
+      describe: () => this.describe(),
+      loaded: (engine, errors) => {
+        this.loading = false;
+        this.recovery.keepSnapshot();
+        for (const e of errors) this.problems.refused(e);
+        // Visibility may have changed while the scene loaded.
+        this.syncRunning();
+        this.runningChanged(this.running);
+        firePhysicsEvent(this, 'physics-ready', { mode: engine.mode, transport: engine.transport });
+      },
+      settled: () => (this.loading = false),
+    },
+    failed: (message) => this.problems.report(this, '', '', message),
+    refused: (e) => this.problems.refused(e),
+  });
+  private readonly stage = new StageController(this, {
+    source: () => this.session.shown,
+    view: () => ({ ...this.config, debug: this.debug, hook: this.drawHook }),
+  });
+  private readonly markup = new MarkupSync({
+    container: () => this.bodyContainer,
+    engine: this.session,
+    problems: this.problems,
+    styles: this.stage,
+  });
+  private readonly recovery: RecoveryController = new RecoveryController(this, {
+    session: this.session,
+    connect: () => this.connect(),
+    scene: {
+      describe: () => this.describe(),
+      limits: () => ({ maxRestarts: this.config.maxRestarts, timestep: this.config.timestep, callTimeout: PhysicsSceneElement.callTimeout }),
+      grab: () => this.pointer.grab,
+      lost: () => {
+        this.pointer.cancel();
+        this.runningChanged(false);
+      },
+      resumed: () => this.syncRunning(),
+      report: (message, keep) => this.problems.report(this, 'worker', this.worker, message, keep),
+      refused: (e) => this.problems.refused(e),
+    },
+  });
+  private readonly visibility = new VisibilityController(this, { changed: () => this.syncRunning() });
+  private readonly pointer = new PointerDragController(this, {
+    engine: () => this.session.engine,
+    toWorld: (x, y) => this.clientToWorld(x, y),
+  });
+  private readonly collisions = new CollisionEventsController(this, {
+    always: () => this.collisionEvents,
+    elementOf: (key) => this.markup.elementOf(key),
+    engine: this.session,
+  });
+
+  /** Resolves when the engine has loaded the scene (after each start). */
+  get ready(): Promise<void> {
+    return this.session.ready;
+  }
+
+  /** Where the engine runs ('worker' or 'main'), or null before it started. */
+  get mode(): 'worker' | 'main' | null {
+    return this.session.engine?.mode ?? null;
+  }
+
+  /** How states reach the page, or null before the engine started. */
+  get transport(): Transport | null {
+    return this.session.engine?.transport ?? null;
+  }
+
+  /** Frames drawn so far. */
+  get renderedFrames(): number {
+    return this.stage.drawn;
+  }
+
+  /** The canvas, once p5 has made it. */
+  get canvas(): HTMLCanvasElement | null {
+    return this.stage.canvas;
+  }
+
+  /** True while the engine steps: not paused, on screen and the page visible. */
+  get running(): boolean {
+    return this.visibility.running;
+  }
+
+  /** True while the element is on screen and the page is visible (frames are drawn). */
+  get onScreen(): boolean {
+    return this.visibility.onScreen;
+  }
+
+  /** Steps taken, as of the newest frame received. */
+  get stepCount(): number {
+    return this.session.shown?.latestStep ?? 0;
+  }
+
+  // ---- for presets -------------------------------------------------------------------------------------------
+
+  /** Where the body elements live. Presets built on this class may keep generated bodies elsewhere. */
+  protected get bodyContainer(): ParentNode & Node {
+    return this;
+  }
+
+  /** Extra shadow content of a preset (e.g. its generated body elements). */
+  protected renderBodies(): TemplateResult | typeof nothing {
+    return nothing;
+  }
+
+  /** A preset's uniform extra acceleration (e.g. wind), added to `gravity`. */
+  protected setGravityOffset(x: number, y: number): void {
+    if (x === this.gravityOffset.x && y === this.gravityOffset.y) return;
+    this.gravityOffset = { x, y };
+    if (this.session.live) this.session.send('setParams', { gravity: this.params().gravity });
+  }
+
+  /** Reports a preset's own attribute problems (the current set: fixed ones leave the error box). */
+  protected reportPresetProblems(problems: Problem[]): void {
+    this.problems.set('preset', this, problems);
+  }
+
+  /** Called when the scene starts or stops stepping (pause, scrolled away, hidden page). */
+  protected runningChanged(_running: boolean): void {}
+
+  /** The default `aria-label`. */
+  protected get defaultLabel(): string {
+    return 'Physics simulation';
+  }
+
+  // ---- public methods ----------------------------------------------------------------------------------------
+
+  /** Runs the simulation (clears `paused`). */
+  play(): void {
+    this.visibility.play();
+  }
+
+  /** Stops the simulation (sets `paused`). */
+  pause(): void {
+    this.paused = true;
+  }
+
+  /** Takes `n` fixed steps now (also while paused). Resolves to the step count. */
+  async step(n = 1): Promise<number> {
+    const engine = await this.engineWhenReady();
+    if (!engine) return 0;
+    const count = await engine.api.step(n);
+    await engine.frameAt(count);
+    this.recovery.keepSnapshot();
+    return count;
+  }
+
+  /** Rebuilds the scene from its markup, at time 0. */
+  async reset(): Promise<void> {
+    const engine = await this.engineWhenReady();
+    if (!engine) return;
+    await engine.api.reset();
+    await engine.frameAt(0);
+    this.recovery.keepSnapshot();
+  }
+
+  /** Where and how the engine runs, and what it holds. */
+  async diagnostics(): Promise<Diagnostics & { mode: 'worker' | 'main' }> {
+    const engine = await this.engineOrThrow();
+    return { ...(await engine.api.diagnostics()), mode: engine.mode };
+  }
+
+  /** A hash of the full simulation state: equal markup and equal steps give equal hashes in every mode. */
+  async stateHash(): Promise<string> {
+    const engine = await this.engineWhenReady();
+    return engine ? engine.api.stateHash() : '';
+  }
+
+  /** The whole simulation state as plain data. */
+  async snapshot(): Promise<HostSnapshot> {
+    return (await this.engineOrThrow()).api.snapshot();
+  }
+
+  /** Puts back a state from snapshot() (of this scene's markup). */
+  async restore(snapshot: HostSnapshot): Promise<void> {
+    const engine = await this.engineWhenReady();
+    await engine?.api.restore(snapshot);
+    this.recovery.keepSnapshot();
+  }
+
+  /** A world point in viewport (client) coordinates, e.g. to place an overlay or synthesise pointer events. */
+  worldToClient(x: number, y: number): { x: number; y: number } {
+    return this.stage.worldToClient(x, y);
+  }
+
+  /** A viewport point in world units. */
+  clientToWorld(x: number, y: number): { x: number; y: number } {
+    return this.stage.clientToWorld(x, y);
+  }
+
+  /** Live pose [x, y, angle (radians)] of a body element of this scene, or null before it is simulated. @internal */
+  poseOf(child: Element): [number, number, number] | null {
+    return this.markup.poseOf(child);
+  }
+
+  /** The engine client (null while there is none): for diagnostics and tests. @internal */
+  get client(): Engine | null {
+    return this.session.engine;
+  }
+
+  /**
+   * @internal Test hook: makes the engine worker fail. 'terminate' ends it from outside and tells no one (found by
+   * the stall watch), 'throw' makes its step loop throw, 'hang' blocks it (calls then time out).
+   */
+  async _debugFault(fault: 'terminate' | 'throw' | 'hang'): Promise<void> {
+    const engine = this.session.engine;
+    if (!engine || engine.mode !== 'worker') throw new Error('_debugFault: no engine worker');
+    if (fault === 'terminate') engine.debugTerminate();
+    else await engine.api.debugFault(fault);
+  }
+
+  // ---- lifecycle ---------------------------------------------------------------------------------------------
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
+    if (!this.hasAttribute('role')) this.setAttribute('role', 'group');
+    if (!this.hasAttribute('aria-label') && !this.hasAttribute('aria-labelledby')) this.setAttribute('aria-label', this.defaultLabel);
+    if (!this.hasAttribute('aria-keyshortcuts')) this.setAttribute('aria-keyshortcuts', 'Space');
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    // A move (disconnect then connect in the same task) keeps the running engine.
+    queueMicrotask(() => {
+      if (!this.isConnected) this.stop();
+    });
+  }
+
+  override attributeChangedCallback(name: string, old: string | null, value: string | null): void {
+    super.attributeChangedCallback(name, old, value);
+    // A new value its property reads the same (NaN for "abc" and "xyz") is still checked and reported anew.
+    if (old !== value && !this.isUpdatePending) this.requestUpdate();
+  }
+
+  /** @ignore Typed listeners for the `physics-*` events (HTMLElementEventMap). */
+  override addEventListener<K extends keyof HTMLElementEventMap>(type: K, listener: (this: HTMLElement, ev: HTMLElementEventMap[K]) => unknown, options?: boolean | AddEventListenerOptions): void;
+  /** @ignore */
+  override addEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | AddEventListenerOptions): void;
+  override addEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | AddEventListenerOptions): void {
+    if (!listener) return;
+    super.addEventListener(type, listener, options);
+    // Controllers add listeners while the element is made, before the collision controller exists.
+    this.collisions?.listened(type, 1);
+  }
+
+  /** @ignore */
+  override removeEventListener<K extends keyof HTMLElementEventMap>(type: K, listener: (this: HTMLElement, ev: HTMLElementEventMap[K]) => unknown, options?: boolean | EventListenerOptions): void;
+  /** @ignore */
+  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | EventListenerOptions): void;
+  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | EventListenerOptions): void {
+    if (!listener) return;
+    super.removeEventListener(type, listener, options);
+    this.collisions?.listened(type, -1);
+  }
+
+  protected override render() {
+    return html`<div
+        class="stage"
+        part="stage"
+        @pointerdown=${this.pointer.down}
+        @pointermove=${this.pointer.move}
+        @pointerup=${this.pointer.up}
+        @pointercancel=${this.pointer.up}
+      ></div>
+      ${this.loading ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      ${this.visibility.playControl && this.paused
+        ? html`<button class="play" part="play-button" type="button" aria-label="Play the simulation" @click=${this.visibility.onPlayClick}>▶</button>`
+        : nothing}
+      <div class="error" part="error" role="alert" hidden></div>
+      ${this.renderBodies()}
+      <slot></slot>`;
+  }
+
+  protected override willUpdate(_changed: PropertyValues): void {
+    this.readSettings();
+  }
+
+  protected override updated(changed: PropertyValues): void {
+    this.style.setProperty('--physics-scene-aspect', `${this.config.width} / ${this.config.height}`);
+    if (changed.has('worker') && changed.get('worker') !== undefined && this.session.engine) {
+      this.stop();
+      void this.session.start();
+      return;
+    }
+    if (!this.session.live) return;
+    const params = changedParams(changed.keys(), this.params());
+    if (Object.keys(params).length > 0) this.session.send('setParams', params);
+    if (changed.has('paused')) this.syncRunning();
+  }
+
+  // ---- wiring ------------------------------------------------------------------------------------------------
+
+  /** The configuration as of the last update. */
+  private get config(): SceneConfig {
+    return this.settings ?? this.readSettings();
+  }
+
+  /** Reads and checks the scene's attributes, reporting what is wrong. */
+  private readSettings(): SceneConfig {
+    const { config, problems } = readConfig(this);
+    this.settings = config;
+    this.problems.set('config', this, problems);
+    return config;
+  }
+
+  private params(): HostParams {
+    return hostParams(this.config, { gravityOffset: this.gravityOffset, debug: this.debug, events: this.collisions.wanted });
+  }
+
+  /** The whole scene for load(): the view's walls, the parameters and every child. */
+  private describe(): HostScene {
+    const { bounds: _, ...params } = this.params();
+    return { world: { bounds: viewBounds(this.config) }, params, ...this.markup.collect(), running: this.running };
+  }
+
+  /** Starts an engine whose events, complaints and death reach the controllers. */
+  private async connect(): Promise<Engine> {
+    let made: EngineClient | null = null;
+    made = await EngineClient.start({
+      worker: this.config.worker,
+      timeout: PhysicsSceneElement.callTimeout,
+      createWorker: PhysicsSceneElement.workerFactory ?? undefined,
+      onEvents: this.collisions.dispatch,
+      onError: (message) => this.problems.report(this, 'worker', this.worker, message),
+      onDeath: (reason) => made && this.recovery.died(made, reason),
+    });
+    return made;
+  }
+
+  /** Tells the engine to step or not (paused, off screen, hidden page), the canvas to draw or not, the keeper to watch. */
+  private syncRunning(): void {
+    const running = this.running;
+    this.stage.setLooping(this.onScreen && !this.recovery.gaveUp);
+    this.recovery.watch(running);
+    if (this.session.setRunning(running)) this.runningChanged(running);
+  }
+
+  /** The engine once ready, or null when there is none (never started, given up). */
+  private async engineWhenReady(): Promise<Engine | null> {
+    await this.ready;
+    return this.session.engine;
+  }
+
+  /** The engine once ready; throws when there is none. */
+  private async engineOrThrow(): Promise<Engine> {
+    const engine = await this.engineWhenReady();
+    if (!engine) throw new Error('<physics-scene> is not running');
+    return engine;
+  }
+
+  private stop(): void {
+    this.session.stop();
+    this.recovery.reset();
+    this.runningChanged(false);
+    this.stage.close();
+    this.loading = true;
+    this.problems.clear();
+    this.pointer.cancel();
+    this.markup.reset();
+  }
+}
+
+if (!customElements.get('physics-scene')) customElements.define('physics-scene', PhysicsSceneElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'physics-scene': PhysicsSceneElement;
+  }
+}

@@ -1,0 +1,112 @@
+// The canvas: a p5 renderer in the scene's stage, from start to stop, showing what the scene's attributes say (viewBox,
+// colours, debug drawing, hook) after each update, and the mapping between world and viewport coordinates.
+import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { SceneRenderer, type BodyStyle, type DrawHook, type FrameSource } from '../../render/renderer.js';
+
+/** What the canvas shows, from the scene's attributes. */
+export interface StageView {
+  width: number;
+  height: number;
+  background: string;
+  debug: boolean;
+  drawMode: 'over' | 'replace';
+  hook: DrawHook | null;
+}
+
+/** What the stage needs of a renderer (a SceneRenderer; unit tests pass fakes). */
+export type Renderer = Pick<
+  SceneRenderer,
+  'viewWidth' | 'viewHeight' | 'background' | 'debug' | 'drawMode' | 'hook' | 'drawn' | 'canvas' | 'setLooping' | 'setStyle' | 'deleteStyle' | 'worldToCanvas' | 'canvasToWorld' | 'dispose'
+>;
+
+export type RendererFactory = (container: HTMLElement, source: () => FrameSource | null) => Renderer;
+
+export interface StageOptions {
+  /** The engine whose frames are drawn. */
+  source(): FrameSource | null;
+  /** What the canvas shows, as the scene's attributes say now. */
+  view(): StageView;
+  /** Makes the renderer (default: a SceneRenderer). */
+  create?: RendererFactory;
+}
+
+const sceneRenderer: RendererFactory = (container, source) => new SceneRenderer(container, source);
+
+/** @internal */
+export class StageController implements ReactiveController {
+  private renderer: Renderer | null = null;
+
+  constructor(
+    host: ReactiveControllerHost,
+    private readonly options: StageOptions,
+  ) {
+    host.addController(this);
+  }
+
+  /** The view follows the scene's attributes after each update. */
+  hostUpdated(): void {
+    this.apply(this.options.view());
+  }
+
+  /** Frames drawn so far (0 without a renderer). */
+  get drawn(): number {
+    return this.renderer?.drawn ?? 0;
+  }
+
+  /** The canvas, once p5 has made it. */
+  get canvas(): HTMLCanvasElement | null {
+    return this.renderer?.canvas ?? null;
+  }
+
+  /** A renderer in `container`, drawing every animation frame or not at all (`looping`). */
+  open(container: HTMLElement, looping: boolean): void {
+    this.renderer = (this.options.create ?? sceneRenderer)(container, () => this.options.source());
+    this.renderer.setLooping(looping);
+    this.apply(this.options.view());
+  }
+
+  close(): void {
+    this.renderer?.dispose();
+    this.renderer = null;
+  }
+
+  private apply(view: StageView): void {
+    const r = this.renderer;
+    if (!r) return;
+    r.viewWidth = view.width;
+    r.viewHeight = view.height;
+    r.background = view.background;
+    r.debug = view.debug;
+    r.drawMode = view.drawMode;
+    r.hook = view.hook;
+  }
+
+  setLooping(on: boolean): void {
+    this.renderer?.setLooping(on);
+  }
+
+  setStyle(key: number, style: BodyStyle): void {
+    this.renderer?.setStyle(key, style);
+  }
+
+  deleteStyle(key: number): void {
+    this.renderer?.deleteStyle(key);
+  }
+
+  /** A world point in viewport (client) coordinates; NaN without a canvas. */
+  worldToClient(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!this.renderer || !canvas) return { x: NaN, y: NaN };
+    const r = canvas.getBoundingClientRect();
+    const p = this.renderer.worldToCanvas(x, y);
+    return { x: r.left + p.x, y: r.top + p.y };
+  }
+
+  /** A viewport point in world units; NaN without a canvas. */
+  clientToWorld(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!this.renderer || !canvas) return { x: NaN, y: NaN };
+    const r = canvas.getBoundingClientRect();
+    return this.renderer.canvasToWorld(x - r.left, y - r.top);
+  }
+}

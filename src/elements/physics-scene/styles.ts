@@ -1,0 +1,78 @@
+// The styles of <physics-scene> (and of the presets built on it).
+import { css } from 'lit';
+
+/** @internal */
+export const sceneStyles = css`
+  :host {
+    display: block;
+    position: relative;
+    aspect-ratio: var(--physics-scene-aspect, 16 / 9);
+    overflow: hidden;
+    touch-action: none;
+    user-select: none;
+    -webkit-user-select: none;
+    contain: layout paint;
+  }
+  :host([hidden]) {
+    display: none;
+  }
+  :host(:focus-visible) {
+    outline: 2px solid #2f6fb5;
+    outline-offset: 2px;
+  }
+  .stage {
+    position: absolute;
+    inset: 0;
+  }
+  .status {
+    position: absolute;
+    inset: 0;
+    display: flex;
+    align-items: center;
+    justify-content: center;
+    font: 14px/1.3 system-ui, sans-serif;
+    color: #5b6270;
+    pointer-events: none;
+  }
+  .error[hidden] {
+    display: none;
+  }
+  .error {
+    position: absolute;
+    left: 6px;
+    right: 6px;
+    bottom: 6px;
+    max-height: 45%;
+    overflow: auto;
+    padding: 4px 8px;
+    border: 1px solid #e0a090;
+    border-radius: 4px;
+    background: #fff3efee;
+    color: #8a1c0c;
+    font: 12px/1.35 system-ui, sans-serif;
+    white-space: pre-wrap;
+    overflow-wrap: anywhere;
+  }
+  .play {
+    position: absolute;
+    left: 50%;
+    top: 50%;
+    width: 56px;
+    height: 56px;
+    margin: -28px 0 0 -28px;
+    border: 0;
+    border-radius: 50%;
+    background: #14181ebb;
+    color: #fff;
+    font: 22px/56px system-ui, sans-serif;
+    cursor: pointer;
+    padding: 0 0 0 4px;
+  }
+  .play:focus-visible {
+    outline: 3px solid #fff;
+    outline-offset: -6px;
+  }
+  ::slotted(*) {
+    display: none;
+  }
+`;

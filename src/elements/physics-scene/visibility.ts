@@ -1,0 +1,150 @@
+// When the scene may run: on screen (IntersectionObserver) with the page visible (Page Visibility) and not paused.
+// With `prefers-reduced-motion: reduce` it starts paused and shows a play control; Space toggles pause while the
+// scene has focus.
+import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { track } from '../../worker/resources.js';
+
+/** The scene as the visibility controller sees it. */
+export interface VisibilityHost extends ReactiveControllerHost, HTMLElement {
+  paused: boolean;
+}
+
+/** Something that reports whether an element is on screen (an IntersectionObserver), until disconnected. */
+export type IntersectionWatch = (target: Element, changed: (onScreen: boolean) => void) => { disconnect(): void };
+
+export interface VisibilityOptions {
+  /** On screen or the page's visibility changed. */
+  changed(): void;
+  /** Watches the element on screen; default: an IntersectionObserver (none where there is no IntersectionObserver). */
+  intersection?: IntersectionWatch | null;
+  /** Whether the user asks for reduced motion; default: the `prefers-reduced-motion` media query. */
+  reducedMotion?: () => boolean;
+}
+
+const intersectionObserver: IntersectionWatch = (target, changed) => {
+  const io = new IntersectionObserver((entries) => {
+    const e = entries[entries.length - 1];
+    if (e) changed(e.isIntersecting);
+  });
+  io.observe(target);
+  return io;
+};
+
+const prefersReducedMotion = (): boolean => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+
+/** @internal */
+export class VisibilityController implements ReactiveController {
+  /** The play control is shown (while paused). */
+  playControl = false;
+  /** On screen, as the observer last reported (assumed until its first report, the next frame). */
+  private inView = true;
+  private pageVisible = typeof document === 'undefined' || document.visibilityState !== 'hidden';
+  private watch: { disconnect(): void } | null = null;
+  private watching = false;
+  private motionChecked = false;
+  /** play() was called: the page wants motion, reduced-motion preference or not. */
+  private playRequested = false;
+  private readonly intersection: IntersectionWatch | null;
+  private readonly reducedMotion: () => boolean;
+
+  constructor(
+    private readonly host: VisibilityHost,
+    private readonly options: VisibilityOptions,
+  ) {
+    this.intersection = options.intersection !== undefined ? options.intersection : typeof IntersectionObserver === 'function' ? intersectionObserver : null;
+    this.reducedMotion = options.reducedMotion ?? prefersReducedMotion;
+    host.addController(this);
+    host.addEventListener('keydown', this.onKeyDown);
+  }
+
+  /** On screen and the page visible (frames are drawn). */
+  get onScreen(): boolean {
+    return this.inView && this.pageVisible;
+  }
+
+  /** Not paused, on screen and the page visible (the engine steps). */
+  get running(): boolean {
+    return !this.host.paused && this.onScreen;
+  }
+
+  /** Runs the scene (clears `paused`); from now on a reduced-motion preference does not pause it. */
+  play(): void {
+    this.playRequested = true;
+    this.host.paused = false;
+  }
+
+  hostConnected(): void {
+    if (!this.motionChecked) {
+      this.motionChecked = true;
+      if (!this.host.paused && !this.playRequested && this.reducedMotion()) {
+        this.host.paused = true;
+        this.showPlayControl();
+      }
+    }
+    this.setWatching(true);
+    // Back in the document (or in it for the first time): the scene's running state follows at once.
+    this.options.changed();
+  }
+
+  hostDisconnected(): void {
+    this.setWatching(false);
+  }
+
+  hostUpdate(): void {
+    if (!this.host.paused) this.playControl = false;
+  }
+
+  /** The play control's click handler. */
+  readonly onPlayClick = (e: Event): void => {
+    e.stopPropagation();
+    this.play();
+    this.host.focus();
+  };
+
+  private showPlayControl(): void {
+    this.playControl = true;
+    this.host.requestUpdate();
+  }
+
+  private setWatching(on: boolean): void {
+    if (on === this.watching) return;
+    this.watching = on;
+    if (on) {
+      if (this.intersection) {
+        this.watch = this.intersection(this.host, (inView) => {
+          this.inView = inView;
+          this.options.changed();
+        });
+        track('observers', 1);
+      }
+      this.pageVisible = document.visibilityState !== 'hidden';
+      document.addEventListener('visibilitychange', this.onVisibility);
+      track('listeners', 1);
+    } else {
+      if (this.watch) {
+        this.watch.disconnect();
+        this.watch = null;
+        track('observers', -1);
+      }
+      document.removeEventListener('visibilitychange', this.onVisibility);
+      track('listeners', -1);
+    }
+  }
+
+  private readonly onVisibility = (): void => {
+    this.pageVisible = document.visibilityState !== 'hidden';
+    this.options.changed();
+  };
+
+  private readonly onKeyDown = (event: Event): void => {
+    const e = event as KeyboardEvent;
+    if ((e.key !== ' ' && e.code !== 'Space') || e.composedPath()[0] !== this.host || e.altKey || e.ctrlKey || e.metaKey) return;
+    e.preventDefault();
+    if (e.repeat) return;
+    if (this.host.paused) this.play();
+    else {
+      this.host.paused = true;
+      this.showPlayControl();
+    }
+  };
+}
