@@ -1,5 +1,7 @@
-// The scene's own attributes, checked once per update: the values the engine and the canvas get (defaults in place of
-// bad values), and the problems to report.
+// The scene's own attributes, checked once per update (before it renders): the values the engine and the canvas get
+// (defaults in place of bad values), and the problems to report. The keeper and the engine calls between updates read
+// the checked values; nothing re-validates on a timer.
+import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Bounds } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
 import { Checker, type Problem } from '../checks.js';
@@ -19,6 +21,7 @@ export interface SceneAttributes {
   worker: string;
   maxRestarts: number;
   drawMode: string;
+  debug: boolean;
 }
 
 /** The checked configuration. */
@@ -73,20 +76,6 @@ export function viewBounds(config: Pick<SceneConfig, 'bounds' | 'width' | 'heigh
   return config.bounds === 'view' ? { minX: 0, minY: -1e6, maxX: config.width, maxY: config.height } : null;
 }
 
-/** The engine parameters of a configuration. @internal */
-export function hostParams(config: SceneConfig, extra: { gravityOffset: { x: number; y: number }; debug: boolean; events: boolean }): HostParams {
-  return {
-    gravity: { x: config.gravity.x + extra.gravityOffset.x, y: config.gravity.y + extra.gravityOffset.y },
-    iterations: config.iterations,
-    substeps: config.substeps,
-    timestep: config.timestep,
-    broadphase: config.broadphase,
-    narrowphase: config.narrowphase,
-    debug: extra.debug,
-    events: extra.events,
-    bounds: viewBounds(config),
-  };
-}
 
 /** Which engine parameters each scene property sets. */
 const PARAMS_OF: Record<string, (keyof HostParams)[]> = {
@@ -107,4 +96,64 @@ export function changedParams(changed: Iterable<PropertyKey>, params: HostParams
   const out: Record<string, unknown> = {};
   for (const name of changed) for (const p of PARAMS_OF[String(name)] ?? []) out[p] = params[p];
   return out as Partial<HostParams>;
+}
+
+export interface ConfigOptions {
+  /** Where the scene's problems go. */
+  problems: { set(source: unknown, el: Element, problems: Problem[]): void };
+}
+
+/** @internal */
+export class ConfigController implements ReactiveController {
+  private current: SceneConfig | null = null;
+  /** Added to `gravity` when sent to the engine (a preset's wind). */
+  private gravityOffset = { x: 0, y: 0 };
+
+  constructor(
+    private readonly host: ReactiveControllerHost & Element & SceneAttributes,
+    private readonly options: ConfigOptions,
+  ) {
+    host.addController(this);
+  }
+
+  /** Before each render: the attributes checked, their problems reported. */
+  hostUpdate(): void {
+    this.read();
+  }
+
+  /** The configuration as of the last update. */
+  get config(): SceneConfig {
+    return this.current ?? this.read();
+  }
+
+  /** Reads and checks the attributes now (problems reported once each; their lines put back in the error box). */
+  read(): SceneConfig {
+    const { config, problems } = readConfig(this.host);
+    this.current = config;
+    this.options.problems.set('config', this.host, problems);
+    return config;
+  }
+
+  /** A preset's uniform extra acceleration, added to `gravity`. True when it changed. */
+  setGravityOffset(x: number, y: number): boolean {
+    if (x === this.gravityOffset.x && y === this.gravityOffset.y) return false;
+    this.gravityOffset = { x, y };
+    return true;
+  }
+
+  /** The engine parameters (`events`: whether collision events are wanted). */
+  params(events: boolean): HostParams {
+    const c = this.config;
+    return {
+      gravity: { x: c.gravity.x + this.gravityOffset.x, y: c.gravity.y + this.gravityOffset.y },
+      iterations: c.iterations,
+      substeps: c.substeps,
+      timestep: c.timestep,
+      broadphase: c.broadphase,
+      narrowphase: c.narrowphase,
+      debug: this.host.debug,
+      events,
+      bounds: viewBounds(c),
+    };
+  }
 }

@@ -4,17 +4,16 @@
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
 import type { DrawHook } from '../../render/renderer.js';
-import { EngineClient } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import { CollisionEventsController } from './collisions.js';
-import { changedParams, hostParams, readConfig, viewBounds, type SceneConfig } from './config.js';
+import { changedParams, ConfigController, type SceneConfig } from './config.js';
 import { firePhysicsEvent } from './events.js';
 import { MarkupSync } from './markup.js';
 import { PointerDragController } from './pointer.js';
 import { ProblemsController } from './problems.js';
 import { RecoveryController } from './recovery.js';
-import { EngineSession, type Engine } from './session.js';
+import { EngineSession, startEngine, type Engine } from './session.js';
 import { StageController } from './stage.js';
 import { sceneStyles } from './styles.js';
 import { VisibilityController } from './visibility.js';
@@ -96,11 +95,6 @@ export class PhysicsSceneElement extends LitElement {
 
   /** The loading message is shown. */
   @state() private loading = true;
-  /** The checked configuration, read once per update. */
-  private settings: SceneConfig | null = null;
-  /** Added to `gravity` when sent to the engine (a preset's wind). */
-  private gravityOffset = { x: 0, y: 0 };
-
   private readonly problems = new ProblemsController(this, {
     box: () => this.renderRoot?.querySelector<HTMLElement>('.error') ?? null,
     elementOf: (key) => this.markup.elementOf(key),
@@ -127,6 +121,7 @@ export class PhysicsSceneElement extends LitElement {
     failed: (message) => this.problems.report(this, '', '', message),
     refused: (e) => this.problems.refused(e),
   });
+  private readonly settings = new ConfigController(this, { problems: this.problems });
   private readonly stage = new StageController(this, {
     source: () => this.session.shown,
     view: () => ({ ...this.config, debug: this.debug, hook: this.drawHook }),
@@ -153,7 +148,7 @@ export class PhysicsSceneElement extends LitElement {
       refused: (e) => this.problems.refused(e),
     },
   });
-  private readonly visibility = new VisibilityController(this, { changed: () => this.syncRunning() });
+  private readonly visibility = new VisibilityController(this, { changed: () => this.syncRunning(), label: () => this.defaultLabel });
   private readonly pointer = new PointerDragController(this, {
     engine: () => this.session.engine,
     toWorld: (x, y) => this.clientToWorld(x, y),
@@ -218,9 +213,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** A preset's uniform extra acceleration (e.g. wind), added to `gravity`. */
   protected setGravityOffset(x: number, y: number): void {
-    if (x === this.gravityOffset.x && y === this.gravityOffset.y) return;
-    this.gravityOffset = { x, y };
-    if (this.session.live) this.session.send('setParams', { gravity: this.params().gravity });
+    if (this.settings.setGravityOffset(x, y) && this.session.live) this.session.send('setParams', { gravity: this.params().gravity });
   }
 
   /** Reports a preset's own attribute problems (the current set: fixed ones leave the error box). */
@@ -250,7 +243,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Takes `n` fixed steps now (also while paused). Resolves to the step count. */
   async step(n = 1): Promise<number> {
-    const engine = await this.engineWhenReady();
+    const engine = await this.session.whenReady();
     if (!engine) return 0;
     const count = await engine.api.step(n);
     await engine.frameAt(count);
@@ -260,7 +253,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Rebuilds the scene from its markup, at time 0. */
   async reset(): Promise<void> {
-    const engine = await this.engineWhenReady();
+    const engine = await this.session.whenReady();
     if (!engine) return;
     await engine.api.reset();
     await engine.frameAt(0);
@@ -269,24 +262,24 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Where and how the engine runs, and what it holds. */
   async diagnostics(): Promise<Diagnostics & { mode: 'worker' | 'main' }> {
-    const engine = await this.engineOrThrow();
+    const engine = await this.session.running();
     return { ...(await engine.api.diagnostics()), mode: engine.mode };
   }
 
   /** A hash of the full simulation state: equal markup and equal steps give equal hashes in every mode. */
   async stateHash(): Promise<string> {
-    const engine = await this.engineWhenReady();
+    const engine = await this.session.whenReady();
     return engine ? engine.api.stateHash() : '';
   }
 
   /** The whole simulation state as plain data. */
   async snapshot(): Promise<HostSnapshot> {
-    return (await this.engineOrThrow()).api.snapshot();
+    return (await this.session.running()).api.snapshot();
   }
 
   /** Puts back a state from snapshot() (of this scene's markup). */
   async restore(snapshot: HostSnapshot): Promise<void> {
-    const engine = await this.engineWhenReady();
+    const engine = await this.session.whenReady();
     await engine?.api.restore(snapshot);
     this.recovery.keepSnapshot();
   }
@@ -323,14 +316,6 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   // ---- lifecycle ---------------------------------------------------------------------------------------------
-
-  override connectedCallback(): void {
-    super.connectedCallback();
-    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
-    if (!this.hasAttribute('role')) this.setAttribute('role', 'group');
-    if (!this.hasAttribute('aria-label') && !this.hasAttribute('aria-labelledby')) this.setAttribute('aria-label', this.defaultLabel);
-    if (!this.hasAttribute('aria-keyshortcuts')) this.setAttribute('aria-keyshortcuts', 'Space');
-  }
 
   override disconnectedCallback(): void {
     super.disconnectedCallback();
@@ -385,10 +370,6 @@ export class PhysicsSceneElement extends LitElement {
       <slot></slot>`;
   }
 
-  protected override willUpdate(_changed: PropertyValues): void {
-    this.readSettings();
-  }
-
   protected override updated(changed: PropertyValues): void {
     this.style.setProperty('--physics-scene-aspect', `${this.config.width} / ${this.config.height}`);
     if (changed.has('worker') && changed.get('worker') !== undefined && this.session.engine) {
@@ -404,41 +385,31 @@ export class PhysicsSceneElement extends LitElement {
 
   // ---- wiring ------------------------------------------------------------------------------------------------
 
-  /** The configuration as of the last update. */
   private get config(): SceneConfig {
-    return this.settings ?? this.readSettings();
-  }
-
-  /** Reads and checks the scene's attributes, reporting what is wrong. */
-  private readSettings(): SceneConfig {
-    const { config, problems } = readConfig(this);
-    this.settings = config;
-    this.problems.set('config', this, problems);
-    return config;
+    return this.settings.config;
   }
 
   private params(): HostParams {
-    return hostParams(this.config, { gravityOffset: this.gravityOffset, debug: this.debug, events: this.collisions.wanted });
+    return this.settings.params(this.collisions.wanted);
   }
 
-  /** The whole scene for load(): the view's walls, the parameters and every child. */
+  /** The whole scene for load(), as the markup is now: the view's walls, the parameters and every child. */
   private describe(): HostScene {
-    const { bounds: _, ...params } = this.params();
-    return { world: { bounds: viewBounds(this.config) }, params, ...this.markup.collect(), running: this.running };
+    this.settings.read();
+    const { bounds, ...params } = this.params();
+    return { world: { bounds }, params, ...this.markup.collect(), running: this.running };
   }
 
   /** Starts an engine whose events, complaints and death reach the controllers. */
-  private async connect(): Promise<Engine> {
-    let made: EngineClient | null = null;
-    made = await EngineClient.start({
+  private connect(): Promise<Engine> {
+    return startEngine({
       worker: this.config.worker,
       timeout: PhysicsSceneElement.callTimeout,
       createWorker: PhysicsSceneElement.workerFactory ?? undefined,
       onEvents: this.collisions.dispatch,
       onError: (message) => this.problems.report(this, 'worker', this.worker, message),
-      onDeath: (reason) => made && this.recovery.died(made, reason),
+      onDeath: (engine, reason) => this.recovery.died(engine, reason),
     });
-    return made;
   }
 
   /** Tells the engine to step or not (paused, off screen, hidden page), the canvas to draw or not, the keeper to watch. */
@@ -447,19 +418,6 @@ export class PhysicsSceneElement extends LitElement {
     this.stage.setLooping(this.onScreen && !this.recovery.gaveUp);
     this.recovery.watch(running);
     if (this.session.setRunning(running)) this.runningChanged(running);
-  }
-
-  /** The engine once ready, or null when there is none (never started, given up). */
-  private async engineWhenReady(): Promise<Engine | null> {
-    await this.ready;
-    return this.session.engine;
-  }
-
-  /** The engine once ready; throws when there is none. */
-  private async engineOrThrow(): Promise<Engine> {
-    const engine = await this.engineWhenReady();
-    if (!engine) throw new Error('<physics-scene> is not running');
-    return engine;
   }
 
   private stop(): void {

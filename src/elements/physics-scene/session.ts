@@ -2,7 +2,7 @@
 // start from a stale one, the `ready` promise callers wait on, and one way to send commands whose failures are
 // reported (or not: a dead worker is reported once, by recovery, not once per call it failed).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
-import { EngineStoppedError, TimeoutError, WorkerDiedError, type EngineClient } from '../../worker/client.js';
+import { EngineClient, EngineStoppedError, TimeoutError, WorkerDiedError, type ClientOptions } from '../../worker/client.js';
 import type { EngineApi, HostError, HostScene } from '../../worker/protocol.js';
 
 /** What a scene uses of an engine client (an EngineClient; unit tests pass fakes). */
@@ -13,6 +13,13 @@ export type Engine = Pick<
 
 /** Makes an engine: a worker, or the main-thread fallback. */
 export type EngineFactory = () => Promise<Engine>;
+
+/** Starts an engine client (EngineClient.start) whose death is reported with the engine that died. */
+export async function startEngine(options: Omit<ClientOptions, 'onDeath'> & { onDeath(engine: Engine, reason: string): void }): Promise<Engine> {
+  let made: EngineClient | null = null;
+  made = await EngineClient.start({ ...options, onDeath: (reason) => made && options.onDeath(made, reason) });
+  return made;
+}
 
 /** Engine calls that answer nothing or a HostError: sent without waiting, refusals and failures reported. */
 export type Command = { [K in keyof EngineApi]: ReturnType<EngineApi[K]> extends void | HostError | null ? K : never }[keyof EngineApi];
@@ -116,6 +123,19 @@ export class EngineSession implements ReactiveController, EngineCommands {
   /** No engine and none on the way. */
   get idle(): boolean {
     return !this.current && !this.starting;
+  }
+
+  /** The engine once ready, or null when there is none (never started, given up). */
+  async whenReady(): Promise<Engine | null> {
+    await this.ready;
+    return this.current;
+  }
+
+  /** The engine once ready; throws when there is none. */
+  async running(): Promise<Engine> {
+    const engine = await this.whenReady();
+    if (!engine) throw new Error('<physics-scene> is not running');
+    return engine;
   }
 
   /** Makes an engine and loads the scene into it. A stop() meanwhile makes this start stale: it cleans up and ends. */

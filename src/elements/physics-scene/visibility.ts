@@ -1,6 +1,6 @@
 // When the scene may run: on screen (IntersectionObserver) with the page visible (Page Visibility) and not paused.
 // With `prefers-reduced-motion: reduce` it starts paused and shows a play control; Space toggles pause while the
-// scene has focus.
+// scene has focus (it is focusable, with a role, a label and its key shortcut, unless the page set its own).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { track } from '../../worker/resources.js';
 
@@ -15,6 +15,8 @@ export type IntersectionWatch = (target: Element, changed: (onScreen: boolean) =
 export interface VisibilityOptions {
   /** On screen or the page's visibility changed. */
   changed(): void;
+  /** The default `aria-label`. */
+  label(): string;
   /** Watches the element on screen; default: an IntersectionObserver (none where there is no IntersectionObserver). */
   intersection?: IntersectionWatch | null;
   /** Whether the user asks for reduced motion; default: the `prefers-reduced-motion` media query. */
@@ -74,6 +76,11 @@ export class VisibilityController implements ReactiveController {
   }
 
   hostConnected(): void {
+    const host = this.host;
+    if (!host.hasAttribute('tabindex')) host.tabIndex = 0;
+    if (!host.hasAttribute('role')) host.setAttribute('role', 'group');
+    if (!host.hasAttribute('aria-label') && !host.hasAttribute('aria-labelledby')) host.setAttribute('aria-label', this.options.label());
+    if (!host.hasAttribute('aria-keyshortcuts')) host.setAttribute('aria-keyshortcuts', 'Space');
     if (!this.motionChecked) {
       this.motionChecked = true;
       if (!this.host.paused && !this.playRequested && this.reducedMotion()) {
