@@ -9,7 +9,8 @@ if ! [[ "$PORT" =~ ^[1-9][0-9]{0,4}$ ]] || (( PORT > 65535 )); then
   echo "npm start: PORT must be a port number from 1 to 65535, got \"$PORT\"" >&2
   exit 1
 fi
-# The dev server reports a busy port with a stack trace and exit status 0: look before starting it.
+bash scripts/ensure-deps.sh
+# The dev server reports a busy port with a stack trace and exit status 0: look just before starting it.
 node -e '
   const port = Number(process.argv[1]);
   const server = require("node:net").createServer();
@@ -21,6 +22,5 @@ node -e '
   });
   server.listen(port, "0.0.0.0", () => server.close());
 ' "$PORT"
-bash scripts/ensure-deps.sh
 echo "physics-elements demo: http://localhost:${PORT}/ (redirects to the gallery, /demo/)"
-exec npx web-dev-server --config web-dev-server.config.js --port "$PORT" --hostname 0.0.0.0 "$@"
+exec node_modules/.bin/web-dev-server --config web-dev-server.config.js --port "$PORT" --hostname 0.0.0.0 "$@"
