@@ -4,7 +4,7 @@
 export * from './engine/index.js';
 
 export { PhysicsSceneElement } from './elements/physics-scene/physics-scene.js';
-export type { PhysicsErrorDetail, PhysicsCollisionDetail, PhysicsReadyDetail, PhysicsEventDetails, PhysicsEventName } from './elements/physics-scene/events.js';
+export type { PhysicsErrorDetail, PhysicsCollisionDetail, PhysicsReadyDetail, PhysicsEventDetails, PhysicsEventMap, PhysicsEventName } from './elements/physics-scene/events.js';
 export { PhysicsBodyElement } from './elements/body-element.js';
 export { PhysicsLinkElement } from './elements/link-element.js';
 export { PhysicsBoxElement } from './elements/physics-box.js';

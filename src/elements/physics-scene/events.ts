@@ -1,6 +1,6 @@
 // The events the elements fire, with their details. Every `physics-*` event bubbles and is composed (it leaves shadow
-// roots), and HTMLElementEventMap names its detail, so `scene.addEventListener('physics-error', (e) => e.detail)` is
-// typed without a cast.
+// roots), and HTMLElementEventMap (and the document's and window's maps) name its detail, so
+// `scene.addEventListener('physics-error', (e) => e.detail.attribute)` is typed without a cast.
 import type { Transport } from '../../worker/protocol.js';
 
 /** Detail of `physics-error`. */
@@ -47,11 +47,12 @@ export function firePhysicsEvent<K extends PhysicsEventName>(target: EventTarget
   target.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
 }
 
+/** The `physics-*` events as DOM events: each a CustomEvent with its detail. */
+export type PhysicsEventMap = { [K in PhysicsEventName]: CustomEvent<PhysicsEventDetails[K]> };
+
+// Typed listeners on the elements, and on the document and window the events bubble to.
 declare global {
-  interface HTMLElementEventMap {
-    'physics-ready': CustomEvent<PhysicsReadyDetail>;
-    'physics-error': CustomEvent<PhysicsErrorDetail>;
-    'physics-collision': CustomEvent<PhysicsCollisionDetail>;
-    'physics-collision-end': CustomEvent<PhysicsCollisionDetail>;
-  }
+  interface HTMLElementEventMap extends PhysicsEventMap {}
+  interface DocumentEventMap extends PhysicsEventMap {}
+  interface WindowEventMap extends PhysicsEventMap {}
 }

@@ -1,0 +1,135 @@
+// Visibility on its own: a fake intersection watch and a reduced-motion answer instead of the browser's. Off screen or
+// on a hidden page the scene does not run; reduced motion starts it paused with the play control; Space toggles.
+import { expect } from '@open-wc/testing';
+import { VisibilityController, type IntersectionWatch } from '../../../src/elements/physics-scene/visibility.js';
+import { liveResources } from '../../../src/worker/resources.js';
+import { makeHost, type FakeHost } from './fakes.js';
+
+function rig(reducedMotion = false) {
+  const host = makeHost();
+  let report: ((onScreen: boolean) => void) | null = null;
+  let watching = 0;
+  const intersection: IntersectionWatch = (target, changed) => {
+    expect(target).to.equal(host);
+    report = changed;
+    watching++;
+    return { disconnect: () => void watching-- };
+  };
+  let changes = 0;
+  const visibility = new VisibilityController(host, { changed: () => changes++, label: () => 'Crates falling', intersection, reducedMotion: () => reducedMotion });
+  return {
+    host, visibility,
+    changes: () => changes,
+    watching: () => watching,
+    scroll: (onScreen: boolean) => report!(onScreen),
+  };
+}
+
+const space = (init: KeyboardEventInit = {}) => new KeyboardEvent('keydown', { key: ' ', code: 'Space', bubbles: true, composed: true, cancelable: true, ...init });
+
+describe('VisibilityController', () => {
+  let host: FakeHost | null = null;
+  afterEach(() => {
+    host?.remove();
+    delete (document as unknown as Record<string, unknown>).visibilityState;
+  });
+
+  it('runs on screen; scrolled away it does not (and says so); back on screen it runs again', () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    expect(r.changes()).to.equal(1);
+    expect([r.visibility.onScreen, r.visibility.running]).to.deep.equal([true, true]);
+    r.scroll(false);
+    expect([r.visibility.onScreen, r.visibility.running, r.changes()]).to.deep.equal([false, false, 2]);
+    r.scroll(true);
+    expect([r.visibility.onScreen, r.visibility.running, r.changes()]).to.deep.equal([true, true, 3]);
+    host.paused = true;
+    expect([r.visibility.onScreen, r.visibility.running]).to.deep.equal([true, false]);
+  });
+
+  it('a hidden page: not on screen; visible again: on screen', () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    Object.defineProperty(document, 'visibilityState', { configurable: true, get: () => 'hidden' });
+    document.dispatchEvent(new Event('visibilitychange'));
+    expect([r.visibility.onScreen, r.changes()]).to.deep.equal([false, 2]);
+    delete (document as unknown as Record<string, unknown>).visibilityState;
+    document.dispatchEvent(new Event('visibilitychange'));
+    expect([r.visibility.onScreen, r.changes()]).to.deep.equal([true, 3]);
+  });
+
+  it('watches only while connected: its observer and listener counted, and released on disconnect', () => {
+    const r = rig();
+    host = r.host;
+    const before = liveResources();
+    document.body.append(host);
+    expect(r.watching()).to.equal(1);
+    expect(liveResources().observers - before.observers).to.equal(1);
+    expect(liveResources().listeners - before.listeners).to.equal(1);
+    host.remove();
+    expect(r.watching()).to.equal(0);
+    expect(liveResources()).to.deep.include({ observers: before.observers, listeners: before.listeners });
+    // Hidden while out of the document: no one is told.
+    document.dispatchEvent(new Event('visibilitychange'));
+    expect(r.changes()).to.equal(1);
+  });
+
+  it('prefers-reduced-motion: paused at connect with the play control, which play() hides; not once play() was called', () => {
+    const r = rig(true);
+    host = r.host;
+    document.body.append(host);
+    expect(host.paused).to.equal(true);
+    expect(r.visibility.playControl).to.equal(true);
+    expect(host.requestedUpdates).to.equal(1);
+    r.visibility.play();
+    expect(host.paused).to.equal(false);
+    host.update();
+    expect(r.visibility.playControl).to.equal(false);
+    const other = rig(true);
+    other.visibility.play();
+    document.body.append(other.host);
+    expect(other.host.paused).to.equal(false);
+    other.host.remove();
+  });
+
+  it('Space on the focused scene toggles pause (the play control shows while paused); not from inside, not with modifiers', () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    const key = space();
+    host.dispatchEvent(key);
+    expect([host.paused, r.visibility.playControl, key.defaultPrevented]).to.deep.equal([true, true, true]);
+    host.dispatchEvent(space({ repeat: true }));
+    expect(host.paused).to.equal(true);
+    host.dispatchEvent(space({ ctrlKey: true }));
+    expect(host.paused).to.equal(true);
+    const inner = document.createElement('button');
+    host.append(inner);
+    inner.dispatchEvent(space());
+    expect(host.paused).to.equal(true);
+    host.dispatchEvent(space());
+    expect(host.paused).to.equal(false);
+    // The play control's click plays and gives the scene focus.
+    host.paused = true;
+    const click = new MouseEvent('click', { bubbles: true });
+    r.visibility.onPlayClick(click);
+    expect(host.paused).to.equal(false);
+    expect(document.activeElement).to.equal(host);
+  });
+
+  it('makes the scene focusable with a role, a label and its key shortcut, unless the page set them', () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    expect([host.tabIndex, host.getAttribute('role'), host.getAttribute('aria-label'), host.getAttribute('aria-keyshortcuts')]).to.deep.equal([0, 'group', 'Crates falling', 'Space']);
+    const other = rig();
+    other.host.setAttribute('tabindex', '-1');
+    other.host.setAttribute('role', 'img');
+    other.host.setAttribute('aria-labelledby', 'caption');
+    document.body.append(other.host);
+    expect([other.host.tabIndex, other.host.getAttribute('role'), other.host.getAttribute('aria-label')]).to.deep.equal([-1, 'img', null]);
+    other.host.remove();
+  });
+});
