@@ -1,4 +1,6 @@
-// Shared by the element tests: mounting scenes from markup, polling for conditions, sampling canvas pixels.
+// Shared by the element tests: mounting scenes from markup, polling for conditions, pointer drags, sampling canvas
+// pixels. No test may depend on how fast a loaded machine runs: a scene is driven by step(n) while paused, or a test
+// waits for a condition with a generous deadline; it never asserts how far something moved in wall-clock time.
 import '../../src/index.js';
 import type { PhysicsSceneElement } from '../../src/index.js';
 
@@ -22,8 +24,11 @@ export function unmount(scene: Element | null | undefined): void {
   else scene?.remove();
 }
 
+/** How long a condition may take by default (ms): generous, so a loaded machine is slow, not failing. */
+export const DEADLINE = 15000;
+
 /** Polls `condition` every animation frame until it holds; fails with `what` after `timeout` ms. */
-export async function waitFor(condition: () => boolean | Promise<boolean>, what: string, timeout = 4000): Promise<void> {
+export async function waitFor(condition: () => boolean | Promise<boolean>, what: string, timeout = DEADLINE): Promise<void> {
   const until = performance.now() + timeout;
   while (!(await condition())) {
     if (performance.now() > until) throw new Error(`timed out after ${timeout} ms waiting for ${what}`);
@@ -53,6 +58,36 @@ export async function frames(n: number): Promise<void> {
 export async function drawn(scene: PhysicsSceneElement, n = 2): Promise<void> {
   const target = scene.renderedFrames + n;
   await waitFor(() => scene.renderedFrames >= target, `${n} drawn frames`);
+}
+
+/** Dispatches a synthetic pointer event at the world point (x, y) on the scene's canvas. */
+export function pointerAt(scene: PhysicsSceneElement, type: string, x: number, y: number, pointerId = 7): void {
+  const p = scene.worldToClient(x, y);
+  const init = { clientX: p.x, clientY: p.y, pointerId, pointerType: 'mouse', isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 };
+  scene.canvas!.dispatchEvent(new PointerEvent(type, { ...init, bubbles: true, composed: true, cancelable: true }));
+}
+
+/**
+ * Drags on a paused scene from (x0, y0) to (x1, y1) in `moves` pointer moves, taking `steps` fixed steps after each,
+ * and keeps holding (release with pointerAt(…, 'pointerup', …)). What the bodies do depends on the steps taken, not
+ * on how fast the machine runs: the engine answers calls in order, so the grab is in place before the first step.
+ */
+export async function steppedDrag(scene: PhysicsSceneElement, from: [number, number], to: [number, number], moves: number, steps: number): Promise<void> {
+  await waitFor(() => scene.canvas !== null, 'the canvas');
+  pointerAt(scene, 'pointerdown', from[0], from[1]);
+  await scene.step(1);
+  for (let k = 1; k <= moves; k++) {
+    pointerAt(scene, 'pointermove', from[0] + ((to[0] - from[0]) * k) / moves, from[1] + ((to[1] - from[1]) * k) / moves);
+    await scene.step(steps);
+  }
+}
+
+/** Steps a paused scene `chunk` steps at a time until `condition` holds; fails with `what` after `most` steps. */
+export async function stepUntil(scene: PhysicsSceneElement, condition: () => boolean | Promise<boolean>, what: string, most = 600, chunk = 5): Promise<void> {
+  for (let taken = 0; !(await condition()); taken += chunk) {
+    if (taken >= most) throw new Error(`${what}: not after ${most} steps`);
+    await scene.step(chunk);
+  }
 }
 
 /** [r, g, b, a] of the canvas pixel under the world point (x, y). */

@@ -106,7 +106,7 @@ describe('<physics-scene> lifecycle', () => {
       expect(liveResources().workers).to.equal(1);
       expect(liveResources().sketches).to.equal(1);
       unmount(scene);
-      await waitFor(() => w.counts.terminated === 1, 'the worker to be terminated', 1000);
+      await waitFor(() => w.counts.terminated === 1, 'the worker to be terminated');
       expect(liveResources()).to.deep.include({ workers: 0, sketches: 0, observers: 0 });
       // Moving a scene (disconnect and connect in one task) keeps its engine.
       const moved = await mount('width="10" height="10"', CHILDREN);
@@ -119,7 +119,7 @@ describe('<physics-scene> lifecycle', () => {
       expect(moved.mode).to.equal('worker');
       box.remove();
       moved.parentElement!.remove();
-      await waitFor(() => w.counts.terminated === 2, 'the moved scene\'s worker to be terminated', 1000);
+      await waitFor(() => w.counts.terminated === 2, 'the moved scene\'s worker to be terminated');
     } finally {
       w.restore();
     }
@@ -145,7 +145,7 @@ describe('<physics-scene> lifecycle', () => {
         await Promise.resolve();
       }
       expect(ready).to.be.greaterThan(10);
-      await waitFor(() => allZero() && w.counts.terminated === w.counts.made, 'every resource to be released', 3000);
+      await waitFor(() => allZero() && w.counts.terminated === w.counts.made, 'every resource to be released');
       // Let stray callbacks fire, then check that nothing is pending.
       await new Promise((r) => setTimeout(r, 150));
       await frames(2);

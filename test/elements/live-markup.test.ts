@@ -94,13 +94,13 @@ describe('<physics-scene> live markup', () => {
     // Gravity to the right: the ball rests against the right wall, at x = width − radius.
     scene = await mount('width="8" height="8" gravity="10 0"', `<physics-circle id="ball" x="4" y="4" radius="0.5"></physics-circle>`);
     const ball = scene.querySelector('physics-circle')!;
-    await waitFor(() => Math.abs(ball.x - 7.5) < 0.05, 'the ball against the wall at x = 7.5', 8000);
+    await waitFor(() => Math.abs(ball.x - 7.5) < 0.05, 'the ball against the wall at x = 7.5');
     const steps = scene.stepCount;
     scene.width = 12;
-    await waitFor(() => Math.abs(ball.x - 11.5) < 0.05, 'the ball against the moved wall at x = 11.5', 8000);
+    await waitFor(() => Math.abs(ball.x - 11.5) < 0.05, 'the ball against the moved wall at x = 11.5');
     // The same simulation went on (no rebuild).
     expect(scene.stepCount).to.be.above(steps);
     scene.bounds = 'none';
-    await waitFor(() => ball.x > 14, 'the ball to leave the view with no walls', 8000);
+    await waitFor(() => ball.x > 14, 'the ball to leave the view with no walls');
   });
 });

@@ -248,7 +248,7 @@ function record(): Recorder {
 }
 
 function frameOf(scene: PhysicsSceneElement): Float64Array | null {
-  const client = (scene as unknown as { client: { poll(): void; frames: { curr: Float64Array; received: number } } | null }).client;
+  const client = scene.client;
   if (!client) return null;
   client.poll();
   return client.frames.received > 0 ? client.frames.curr : null;

@@ -1,7 +1,7 @@
 // <cloth-sim> and <ragdoll-sim>: one tag each, bodies generated in their shadow root by <physics-scene>'s machinery.
 import { expect } from '@open-wc/testing';
 import { ClothSimElement, RagdollSimElement, type PhysicsClothElement, type PhysicsErrorDetail, type PhysicsRagdollElement, type PhysicsSceneElement } from '../../src/index.js';
-import { colourDistance, frames, rgb, unmount, waitFor } from './helpers.js';
+import { colourDistance, drawn, pointerAt, rgb, stepUntil, steppedDrag, unmount, waitFor } from './helpers.js';
 
 /** Mounts `<tag attrs>` in a 480 × 300 container; waits for `ready` unless told not to. */
 async function mountSim<T extends PhysicsSceneElement>(tag: string, attrs = '', ready = true): Promise<T> {
@@ -23,11 +23,6 @@ function countColour(scene: PhysicsSceneElement, hex: string, tolerance = 12): n
   let n = 0;
   for (let i = 0; i < data.length; i += 4) if (colourDistance([data[i], data[i + 1], data[i + 2]], c) <= tolerance) n++;
   return n;
-}
-
-function pointer(scene: PhysicsSceneElement, type: string, x: number, y: number): void {
-  const p = scene.worldToClient(x, y);
-  scene.canvas!.dispatchEvent(new PointerEvent(type, { clientX: p.x, clientY: p.y, pointerId: 3, pointerType: 'mouse', isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1, bubbles: true, composed: true, cancelable: true }));
 }
 
 const clothOf = (sim: ClothSimElement) => sim.shadowRoot!.querySelector<PhysicsClothElement>('physics-cloth')!;
@@ -60,54 +55,53 @@ describe('<cloth-sim>', () => {
   });
 
   it('a drag pulls the cloth sideways', async () => {
-    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" spacing="1" pins="top"');
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" spacing="1" pins="top" paused');
     const cloth = clothOf(sim);
-    // Top-left corner at ((16 − 7) / 2, 0.8) = (4.5, 0.8): the bottom-middle particle hangs at about (7.5, 5.8).
-    await frames(5);
+    // Top-left corner at ((16 − 7) / 2, 0.8) = (4.5, 0.8): the bottom-middle particle hangs at (7.5, 5.8).
     const x0 = cloth.x;
-    pointer(sim, 'pointerdown', 7.5, 5.8);
-    for (let k = 1; k <= 12; k++) {
-      await frames(1);
-      pointer(sim, 'pointermove', 7.5 + (4 * k) / 12, 5.8);
-    }
-    await waitFor(() => cloth.x > x0 + 0.5, 'the cloth to follow the pointer to the right');
-    pointer(sim, 'pointerup', 11.5, 5.8);
+    expect(x0).to.be.closeTo(8, 1e-6);
+    await steppedDrag(sim, [7.5, 5.8], [11.5, 5.8], 12, 2);
+    await stepUntil(sim, () => cloth.x > x0 + 0.5, 'the cloth to follow the pointer to the right', 60);
+    pointerAt(sim, 'pointerup', 11.5, 5.8);
   });
 
   it('tear: a hard pull tears the cloth, the torn cells are not drawn, it stays torn until reset(); no tear, no tearing', async () => {
-    /** Pulls the bottom-middle particle 7 units down, lets go, and waits for the cloth to settle. */
+    /** Cloth pixels on the canvas, once it shows the newest step (a paused scene draws its newest frame as it is). */
+    const cloth = async (s: ClothSimElement) => {
+      await drawn(s, 2);
+      return countColour(s, '#9cc3ec');
+    };
+    /** Pulls the bottom-middle particle 7 units down over 24 steps, holds it for 10, lets go and steps 60 more. */
     const pullDown = async (s: ClothSimElement) => {
-      pointer(s, 'pointerdown', 7.5, 5.8);
-      for (let k = 1; k <= 24; k++) {
-        await frames(1);
-        pointer(s, 'pointermove', 7.5, 5.8 + (7 * k) / 24);
-      }
-      await frames(10);
-      pointer(s, 'pointerup', 7.5, 12.8);
-      await frames(60);
+      await steppedDrag(s, [7.5, 5.8], [7.5, 12.8], 24, 1);
+      await s.step(10);
+      pointerAt(s, 'pointerup', 7.5, 12.8);
+      await s.step(60);
     };
     for (const tear of [null, '0.2']) {
-      sim = await mountSim<ClothSimElement>('cloth-sim', `columns="8" rows="6" spacing="1" pins="top" stroke="none" gusts="0" ${tear ? `tear="${tear}"` : ''}`);
-      await waitFor(() => sim!.stepCount > 30 && countColour(sim!, '#9cc3ec') > 3000, 'the cloth hanging');
-      const whole = countColour(sim, '#9cc3ec');
+      sim = await mountSim<ClothSimElement>('cloth-sim', `columns="8" rows="6" spacing="1" pins="top" stroke="none" gusts="0" paused ${tear ? `tear="${tear}"` : ''}`);
+      await sim.step(30);
+      const whole = await cloth(sim);
+      expect(whole).to.be.above(3000);
       await pullDown(sim);
       const broken = (await sim.diagnostics()).brokenLinks;
       if (!tear) {
         expect(broken).to.equal(0);
         // Released, the untorn cloth hangs whole again.
-        await waitFor(() => countColour(sim!, '#9cc3ec') > whole * 0.95, 'the cloth whole again');
+        await stepUntil(sim, async () => (await cloth(sim!)) > whole * 0.95, 'the cloth whole again', 600, 30);
         unmount(sim);
         continue;
       }
       expect(broken).to.be.at.least(2);
       // Torn cells are left undrawn and the torn-off piece falls away: clearly less cloth on the canvas, and it stays so.
-      await waitFor(() => countColour(sim!, '#9cc3ec') < whole * 0.9, 'less cloth drawn');
-      await frames(60);
+      expect(await cloth(sim)).to.be.below(whole * 0.9);
+      await sim.step(60);
       expect((await sim.diagnostics()).brokenLinks).to.be.at.least(broken);
-      expect(countColour(sim, '#9cc3ec')).to.be.below(whole * 0.9);
+      expect(await cloth(sim)).to.be.below(whole * 0.9);
       await sim.reset();
       expect((await sim.diagnostics()).brokenLinks).to.equal(0);
-      await waitFor(() => countColour(sim!, '#9cc3ec') > whole * 0.95, 'the cloth whole after reset()');
+      await sim.step(30);
+      expect(await cloth(sim)).to.be.above(whole * 0.95);
     }
   });
 
@@ -164,7 +158,7 @@ describe('<ragdoll-sim>', () => {
     expect(dolls.length).to.equal(2);
     const start = dolls.map((r) => [r.x, r.y]);
     // They fall in and are pushed down the stairs (to the right).
-    await waitFor(() => dolls.every((r, k) => r.y > start[k][1] + 1.5 && r.x > start[k][0] + 1.5), 'both ragdolls to fall and move down the stairs', 8000);
+    await waitFor(() => dolls.every((r, k) => r.y > start[k][1] + 1.5 && r.x > start[k][0] + 1.5), 'both ragdolls to fall and move down the stairs');
   });
 
   it('obstacles="pegs" and "none"; count changes live', async () => {
@@ -178,29 +172,29 @@ describe('<ragdoll-sim>', () => {
   it('respawn puts a ragdoll that lies still back at the top', async () => {
     sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" respawn');
     const [doll] = dollsOf(sim);
-    await waitFor(() => doll.y > 8, 'the ragdoll to land on the floor', 6000);
-    await waitFor(() => sim!.respawned >= 1, 'a respawn after lying still', 8000);
+    await waitFor(() => doll.y > 8, 'the ragdoll to land on the floor');
+    // It must lie still for 1.5 s of the page's clock: a generous deadline, not a measure of speed.
+    await waitFor(() => sim!.respawned >= 1, 'a respawn after lying still', 30000);
     await waitFor(() => doll.y < 4, 'the ragdoll back near the top');
   });
 
   it('drag a ragdoll and let go: it is thrown', async () => {
     // No gravity and no obstacles: the ragdoll stands where it spawned until the pointer takes its pelvis.
-    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" gravity="0 0"');
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" gravity="0 0" paused');
     const [doll] = dollsOf(sim);
-    await frames(3);
     const x0 = doll.x;
     const y0 = doll.y;
-    pointer(sim, 'pointerdown', x0, y0);
-    for (let k = 1; k <= 12; k++) {
-      await frames(1);
-      pointer(sim, 'pointermove', x0 + (5 * k) / 12, y0 + (2 * k) / 12);
-    }
-    await waitFor(() => doll.x > x0 + 2, 'the ragdoll to follow the pointer');
+    await steppedDrag(sim, [x0, y0], [x0 + 5, y0 + 2], 12, 2);
+    await stepUntil(sim, () => doll.x > x0 + 2, 'the ragdoll to follow the pointer', 60);
     const atRelease = doll.x;
-    pointer(sim, 'pointerup', x0 + 5, y0 + 2);
+    pointerAt(sim, 'pointerup', x0 + 5, y0 + 2);
     // Thrown: it keeps the speed it had and flies on to the right after the pointer let go (no gravity, no walls
-    // in its way for a while). Measured from where it was at release: on a loaded machine it may still lag the pointer.
-    await waitFor(() => doll.x > atRelease + 1.5, 'the ragdoll to fly on after release', 8000);
+    // in its way for a while).
+    await sim.step(30);
+    const flown = doll.x - atRelease;
+    expect(flown, 'distance flown in 0.5 s').to.be.above(0.5);
+    await sim.step(30);
+    expect(doll.x - atRelease - flown, 'distance flown in the next 0.5 s').to.be.above(0.5);
   });
 
   it('bad attributes fall back to defaults and are reported on the element', async () => {
