@@ -56,7 +56,7 @@ export const FIELDS = {
     },
   },
   colliders: {
-    snapshotted: ['kind', 'friction', 'restitution', 'category', 'mask', 'group'],
+    snapshotted: ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'ringLength'],
     notSnapshotted: Object.fromEntries(
       ['partStart', 'partCount', 'particles', 'partVertexStart', 'partVertexCount', 'partBody', 'partsUsed', 'vertices', 'verticesUsed', 'active', 'activeCount'].map((f) => [f, 'rebuilt from the bodies by restore()']).concat(
         ['isStatic', 'minX', 'minY', 'maxX', 'maxY'].map((f) => [f, PER_STEP]),
@@ -64,7 +64,7 @@ export const FIELDS = {
     ),
   },
   sleep: {
-    snapshotted: ['sleepTime', 'asleep', 'parkedInvMass', 'awakeCount', 'speedThreshold', 'timeToSleep'],
+    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'awakeCount', 'speedThreshold', 'timeToSleep'],
     notSnapshotted: {
       enabled: 'settings.sleeping',
       particleBody: 'rebuilt from the bodies by restore()',
@@ -76,7 +76,7 @@ export const FIELDS = {
     },
   },
   grid: {
-    snapshotted: [],
+    snapshotted: ['autoCellSize'],
     notSnapshotted: {
       name: 'settings.broadphase',
       cellSize: 'settings.cellSize',
@@ -183,7 +183,7 @@ export function snapshotContext(ctx: StepContext): WorldSnapshot {
 export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   if (s == null || typeof s !== 'object') throw new TypeError(`snapshot must be an object made by World.snapshot(), got ${describeValue(s)}`);
   for (const name of FIELDS.context.snapshotted) {
-    if (!(name in s)) throw new TypeError(`snapshot has no ${name}: it was not made by World.snapshot() of this version`);
+    if (s[name] == null) throw new TypeError(`snapshot has no ${name}: it was not made by World.snapshot() of this version`);
   }
   restoreSettings(ctx, s.settings);
   ctx.time = nonNegative('snapshot time', s.time);
