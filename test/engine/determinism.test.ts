@@ -1,16 +1,6 @@
 import { expect } from 'chai';
-import { World, createCloth, createRagdoll, createRope, createSoftBody, createBox } from '../../src/engine/index.js';
-
-function busyWorld(): World {
-  const world = new World({ gravity: { x: 0.5, y: 10 }, sleeping: false, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 } });
-  createCloth(world, { origin: { x: -5, y: -10 }, columns: 12, rows: 10, spacing: 0.4, pins: 'corners', shear: 1e-4, bend: 1e-3 });
-  createRope(world, { from: { x: 8, y: -10 }, to: { x: 15, y: -10 }, segments: 20 });
-  createRagdoll(world, { x: -12, y: 0 });
-  createSoftBody(world, { center: { x: 0, y: 5 }, radius: 1.5 });
-  createSoftBody(world, { center: { x: 5, y: 5 }, radius: 1, model: 'springs' });
-  createBox(world, { x: 12, y: 5, width: 2, height: 1, angle: 0.4 });
-  return world;
-}
+import { World } from '../../src/engine/index.js';
+import { busyWorld } from './helpers.js';
 
 describe('determinism', () => {
   it('two identical runs give identical state hashes', () => {

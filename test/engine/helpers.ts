@@ -1,4 +1,4 @@
-import { World, type Handle } from '../../src/engine/index.js';
+import { World, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
 
 /**
  * Kinetic + gravitational potential energy of every movable particle. The velocity of a position-based step is the
@@ -28,4 +28,16 @@ export function distance(world: World, a: Handle, b: Handle): number {
   const pa = world.getPosition(a);
   const pb = world.getPosition(b);
   return Math.sqrt((pa.x - pb.x) ** 2 + (pa.y - pb.y) ** 2);
+}
+
+/** A world with one of everything (cloth, rope, ragdoll, two soft bodies, a box) in bounds, sleeping off. */
+export function busyWorld(): World {
+  const world = new World({ gravity: { x: 0.5, y: 10 }, sleeping: false, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 } });
+  createCloth(world, { origin: { x: -5, y: -10 }, columns: 12, rows: 10, spacing: 0.4, pins: 'corners', shear: 1e-4, bend: 1e-3 });
+  createRope(world, { from: { x: 8, y: -10 }, to: { x: 15, y: -10 }, segments: 20 });
+  createRagdoll(world, { x: -12, y: 0 });
+  createSoftBody(world, { center: { x: 0, y: 5 }, radius: 1.5 });
+  createSoftBody(world, { center: { x: 5, y: 5 }, radius: 1, model: 'springs' });
+  createBox(world, { x: 12, y: 5, width: 2, height: 1, angle: 0.4 });
+  return world;
 }
