@@ -13,6 +13,8 @@ import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, mid, onFace } from 
 
 /** Convergence: the support along the closest edge's normal is within this fraction of the shapes' size of it. */
 const EPA_TOLERANCE = 1e-10;
+/** Convergence allowance for rounded coordinates: this many times their magnitude (about 16 ulps). */
+const EPA_ROUNDING = 16 * Number.EPSILON;
 
 // The polytope, counter-clockwise, in one interleaved array (inserting a vertex is one copyWithin): per vertex i,
 // the CSO point (X, Y), its points on A (AX, AY) and B (BX, BY), and for edge i (vertex i to i + 1) its outward unit
@@ -92,7 +94,14 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
     if (m > scale) scale = m;
   }
   if (!(scale > 0)) scale = shapeSize(a) + shapeSize(b);
-  const tol = EPA_TOLERANCE * scale;
+  // Far from the origin the support points themselves are rounded (1e6 away, by about 1e-10): a gain below that is
+  // noise, and chasing it folds the polytope over a face found twice.
+  let magnitude = 0;
+  for (let k = 0; k < simplex.count; k++) {
+    const m = Math.abs(simplex.ax[k]) + Math.abs(simplex.ay[k]) + Math.abs(simplex.bx[k]) + Math.abs(simplex.by[k]);
+    if (m > magnitude) magnitude = m;
+  }
+  const tol = EPA_TOLERANCE * scale + EPA_ROUNDING * magnitude;
   reserve(8);
   if (!initPolytope(a, b, simplex, tol)) {
     // The start does not enclose the origin: ask boolean GJK for one that does, once.
@@ -127,6 +136,14 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
     pushSupport(best + 1);
     computeEdge(best);
     computeEdge(best + 1);
+    // A point that does not lie beyond the edge (on the same face, past its end, by rounding) would fold the
+    // polytope: take it out again and stop, the edge is as close as the face.
+    if (P[best * S + D] < dmin || P[(best + 1) * S + D] < dmin) {
+      P.copyWithin((best + 1) * S, (best + 2) * S, n * S);
+      n--;
+      computeEdge(best);
+      break;
+    }
   }
   // Result from the closest edge: depth, normal, and the witness points by the origin's projection onto the edge.
   let i = 0;
@@ -153,7 +170,9 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
   out.depth = depth > 0 ? depth : 0;
   out.pointX = 0.5 * (qax + qbx);
   out.pointY = 0.5 * (qay + qby);
-  out.hit = depth > 0;
+  // Within its tolerance of zero the depth is touching, and the edge it came from need not be a face of A − B
+  // (an edge through the origin of a polytope that only touches it): no overlap, no direction to trust.
+  out.hit = depth > tol;
   if (out.hit) parallelFaces(a, b, out);
   return out.hit;
 }

@@ -108,6 +108,9 @@ export function gjkIntersect(a: Shape, b: Shape, simplexOut?: Simplex): boolean 
   return intersect(a, b, simplexOut ?? scratchSimplex, a.radius, b.radius);
 }
 
+/** Search directions shorter than this (|dx| + |dy|) are scaled up to length ~1 before their dot products underflow. */
+const TINY = 1e-100;
+
 /** Boolean GJK on A and B inflated by ra and rb (the shapes' radii, or 0 for their cores). */
 export function intersect(a: Shape, b: Shape, s: Simplex, ra: number, rb: number): boolean {
   // Simplex points, newest first: A (a*), B (b*), C (c*). x, y is the CSO point; ax.. the shapes' points.
@@ -122,6 +125,12 @@ export function intersect(a: Shape, b: Shape, s: Simplex, ra: number, rb: number
   let dx = a.xs[ia] - b.xs[ib];
   let dy = a.ys[ia] - b.ys[ib];
   if (dx === 0 && dy === 0) dx = 1;
+  // Only the direction matters; a tiny one (shapes that differ by denormals) would underflow in the dot products.
+  let m = Math.abs(dx) + Math.abs(dy);
+  if (m < TINY) {
+    dx /= m;
+    dy /= m;
+  }
   supportAB(a, b, dx, dy, ra, rb);
   Bax = sax; Bay = say; Bbx = sbx; Bby = sby;
   Bx = sax - sbx;
@@ -131,6 +140,11 @@ export function intersect(a: Shape, b: Shape, s: Simplex, ra: number, rb: number
   if (dx !== 0 || dy !== 0) {
     const cap = 64 + a.count + b.count;
     for (let iter = 0; iter < cap; iter++) {
+      m = Math.abs(dx) + Math.abs(dy);
+      if (m < TINY) {
+        dx /= m;
+        dy /= m;
+      }
       supportAB(a, b, dx, dy, ra, rb);
       const px = sax - sbx;
       const py = say - sby;

@@ -54,8 +54,11 @@ function polygonPolygon(a: Shape, b: Shape, out: Manifold, margin: number): bool
       return true;
     }
   }
-  // Neither face's side planes hold a point of the other's incident face: one point, the deepest vertex of the
-  // incident polygon under the shallower face, α clamped to the edge.
+  // Neither face's side planes hold a point of the other's incident face within the margin. Without a margin that
+  // happens only when the overlap is rounding (the least face's side planes always hold its deepest point): touching.
+  // With one, shapes apart corner to corner get one speculative point, the deepest vertex of the incident polygon
+  // under the shallower face, α clamped to the edge.
+  if (!(margin > 0)) return miss(out);
   const useB = sepB > sepA;
   deepest(out, useB ? bx : ax, useB ? by : ay, useB ? nb : na, useB ? edgeB : edgeA, useB ? nbx : nax, useB ? nby : nay, useB ? ax : bx, useB ? ay : by, useB ? na : nb, useB);
   return true;
@@ -147,13 +150,16 @@ function clip(
 
   const refOwner = flip ? 1 : 0;
   const incOwner = flip ? 0 : 1;
-  const c = nx * rx[e] + ny * ry[e];
+  // Separations are measured from the face's first vertex, not from edge e's: collinear edges with equal normals
+  // tie, and which of them is e depends on where the list starts.
+  const cx = rx[r0];
+  const cy = ry[r0];
   let count = 0;
   for (let k = 0; k < 2; k++) {
     const qx = k === 0 ? p0x : p1x;
     const qy = k === 0 ? p0y : p1y;
     const f = k === 0 ? f0 : f1;
-    const s = nx * qx + ny * qy - c; // separation of the point from the reference face
+    const s = nx * (qx - cx) + ny * (qy - cy); // separation of the point from the reference face
     if (s > margin) continue;
     const depth = -s;
     const tq = tx * qx + ty * qy;
