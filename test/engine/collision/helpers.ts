@@ -1,6 +1,6 @@
 // Random shapes from a fixed seed, and brute-force oracles that share no code with the algorithms under test.
 import { expect } from 'chai';
-import { ShapeType, ShapeView, supportPoint, type Shape } from '../../../src/engine/collision/index.js';
+import { ShapeType, ShapeView, supportPoint, type Manifold, type Shape } from '../../../src/engine/collision/index.js';
 
 /** mulberry32: a small, fast, seedable generator (uniform in [0, 1)). */
 export function rng(seed: number): () => number {
@@ -252,4 +252,177 @@ export class Failures {
 
 export function describeShape(s: Shape): string {
   return `${['polygon', 'circle', 'segment'][s.type]}(${pts(s).map((q) => `${q.x},${q.y}`).join(' ')}${s.radius ? ` r=${s.radius}` : ''})`;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Exact predicates: yes/no answers that rounding cannot fool. Floating point first (Shewchuk's error bound for the
+// orientation determinant); when the answer is within that bound of zero, exact integer arithmetic on the doubles'
+// exact values (every double is m·2^e with an integer m, so a common power of two turns six of them into BigInts).
+
+const bits = new DataView(new ArrayBuffer(8));
+
+/** The exact value of a double as [m, e] with value = m·2^e (m a BigInt; [0n, 0] for zero). */
+export function exactParts(x: number): [bigint, number] {
+  if (!Number.isFinite(x)) throw new RangeError(`exactParts needs a finite number, got ${x}`);
+  if (x === 0) return [0n, 0];
+  bits.setFloat64(0, x);
+  const hi = bits.getUint32(0);
+  const lo = bits.getUint32(4);
+  const biased = (hi >>> 20) & 0x7ff;
+  let m = (BigInt(hi & 0xfffff) << 32n) | BigInt(lo);
+  let e = -1074; // subnormal
+  if (biased !== 0) {
+    m |= 1n << 52n;
+    e = biased - 1075;
+  }
+  return [hi >>> 31 ? -m : m, e];
+}
+
+/** The doubles as BigInts scaled by one common power of two (so sums and products keep their signs exactly). */
+export function exactScaled(...values: number[]): bigint[] {
+  const parts = values.map(exactParts);
+  let e = Infinity;
+  for (const [m, pe] of parts) if (m !== 0n && pe < e) e = pe;
+  return parts.map(([m, pe]) => (m === 0n ? 0n : m << BigInt(pe - e)));
+}
+
+/** How often orient() had to fall back to exact arithmetic (for the tests' own logs). */
+export const exactStats = { calls: 0, exact: 0 };
+
+/** Shewchuk's ccwerrboundA: |det| above this times the sum of the two products' magnitudes has the right sign. */
+const ORIENT_BOUND = (3 + 16 * 2 ** -53) * 2 ** -53;
+
+/**
+ * Sign of the orientation of (a, b, c): 1 when c is left of a → b (counter-clockwise), −1 right, 0 exactly on the
+ * line. Exact for every finite input.
+ */
+export function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
+  exactStats.calls++;
+  const left = (bx - ax) * (cy - ay);
+  const right = (by - ay) * (cx - ax);
+  const det = left - right;
+  const bound = ORIENT_BOUND * (Math.abs(left) + Math.abs(right));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  exactStats.exact++;
+  const [Ax, Ay, Bx, By, Cx, Cy] = exactScaled(ax, ay, bx, by, cx, cy);
+  const d = (Bx - Ax) * (Cy - Ay) - (By - Ay) * (Cx - Ax);
+  return d > 0n ? 1 : d < 0n ? -1 : 0;
+}
+
+/**
+ * Whether two convex counter-clockwise polygons overlap with positive area, exactly (touching is not overlapping):
+ * they do unless an edge of one has every vertex of the other on or right of its line.
+ */
+export function exactOverlap(a: Shape, b: Shape): boolean {
+  const pa = pts(a);
+  const pb = pts(b);
+  const separates = (p: { x: number; y: number }[], q: { x: number; y: number }[]) => {
+    for (let k = 0; k < p.length; k++) {
+      const s = p[k];
+      const e = p[(k + 1) % p.length];
+      if (s.x === e.x && s.y === e.y) continue;
+      if (q.every((v) => orient(s.x, s.y, e.x, e.y, v.x, v.y) <= 0)) return true;
+    }
+    return false;
+  };
+  return !separates(pa, pb) && !separates(pb, pa);
+}
+
+/**
+ * Brute force, for convex polygons: over every edge normal of both shapes (A's outward, B's inward, so all point
+ * from A to B), the overlap max_A(n) − min_B(n), measured from A's first vertex. `depth` is the least of them (the
+ * penetration depth when positive), `normals` every normal with its overlap.
+ */
+export function edgeNormalOverlaps(a: Shape, b: Shape): { depth: number; normals: [number, number, number][] } {
+  const pa = pts(a);
+  const pb = pts(b);
+  const o = pa[0];
+  const overlap = (nx: number, ny: number) => {
+    let hi = -Infinity;
+    let lo = Infinity;
+    for (const p of pa) hi = Math.max(hi, nx * (p.x - o.x) + ny * (p.y - o.y));
+    for (const p of pb) lo = Math.min(lo, nx * (p.x - o.x) + ny * (p.y - o.y));
+    return hi - lo;
+  };
+  const normals: [number, number, number][] = [];
+  for (const [p, sign] of [[pa, 1], [pb, -1]] as const) {
+    for (let k = 0; k < p.length; k++) {
+      const ex = p[(k + 1) % p.length].x - p[k].x;
+      const ey = p[(k + 1) % p.length].y - p[k].y;
+      const len = Math.hypot(ex, ey);
+      if (len === 0) continue;
+      const nx = (sign * ey) / len;
+      const ny = (-sign * ex) / len;
+      normals.push([nx, ny, overlap(nx, ny)]);
+    }
+  }
+  return { depth: Math.min(...normals.map((n) => n[2])), normals };
+}
+
+/** Overlap of two polygons along (nx, ny), measured from A's first vertex (fewer digits lost far from the origin). */
+export function overlapAlongLocal(a: Shape, b: Shape, nx: number, ny: number): number {
+  const pa = pts(a);
+  const o = pa[0];
+  let hi = -Infinity;
+  let lo = Infinity;
+  for (const p of pa) hi = Math.max(hi, nx * (p.x - o.x) + ny * (p.y - o.y));
+  for (const p of pts(b)) lo = Math.min(lo, nx * (p.x - o.x) + ny * (p.y - o.y));
+  return hi - lo;
+}
+
+/** Largest coordinate magnitude of the shapes' vertices. */
+export function coordinateMagnitude(...shapes: Shape[]): number {
+  let m = 0;
+  for (const s of shapes) for (const p of pts(s)) m = Math.max(m, Math.abs(p.x), Math.abs(p.y));
+  return m;
+}
+
+/** The tolerance of issue 13: 1e-9 of the shapes' size plus 64 ulps of their largest coordinate. */
+export function outlineTolerance(...shapes: Shape[]): number {
+  return 1e-9 * sizeOf(...shapes) + 64 * Number.EPSILON * coordinateMagnitude(...shapes);
+}
+
+/** The same shape with its vertex list starting from vertex k (the same outline). */
+export function rotated(s: Shape, k: number): Shape {
+  const p = pts(s);
+  const q = p.map((_, j) => p[(j + k) % p.length]);
+  return make(s.type, q.map((v) => v.x), q.map((v) => v.y), s.radius);
+}
+
+/**
+ * Checks every contact point's feature against the geometry: the penetrating vertex V (minus its radius along the
+ * normal, for a circle) pushed by depth out of the other shape (along the normal for a vertex of B, against it for a
+ * vertex of A) lands on the named edge at α, and the reported point is halfway. Returns an error message or ''.
+ */
+export function checkFeatures(a: Shape, b: Shape, m: Manifold, tol: number): string {
+  const shapes = [a, b];
+  for (let k = 0; k < m.count; k++) {
+    const owner = shapes[m.incident[k]];
+    const other = shapes[1 - m.incident[k]];
+    const s = m.incident[k] === 1 ? 1 : -1; // a vertex of B meets A's edge further along the normal, one of A back along it
+    const v = pts(owner)[m.vertex[k]];
+    if (!v) return `vertex ${m.vertex[k]} out of range`;
+    const depth = m.depth[k];
+    // Penetrating point on the owner's outline.
+    const px = v.x - s * owner.radius * m.normalX;
+    const py = v.y - s * owner.radius * m.normalY;
+    const qx = px + s * depth * m.normalX;
+    const qy = py + s * depth * m.normalY;
+    if (Math.abs(m.pointX[k] - (px + qx) / 2) > tol || Math.abs(m.pointY[k] - (py + qy) / 2) > tol) return `point ${k} not halfway`;
+    if (boundaryDistance(owner, px, py) > tol) return `penetrating point ${k} off its shape by ${boundaryDistance(owner, px, py)}`;
+    if (m.alpha[k] < 0 || m.alpha[k] > 1) return `alpha ${m.alpha[k]}`;
+    if (m.edge[k] < 0) {
+      if (!(a.type === ShapeType.Circle && b.type === ShapeType.Circle)) return 'edge −1 outside circle–circle';
+      if (boundaryDistance(other, qx, qy) > tol) return `counterpart ${k} off the other circle`;
+      continue;
+    }
+    const e = pts(other);
+    const e0 = e[m.edge[k]];
+    const e1 = e[(m.edge[k] + 1) % e.length];
+    const ex = e0.x + m.alpha[k] * (e1.x - e0.x);
+    const ey = e0.y + m.alpha[k] * (e1.y - e0.y);
+    if (Math.abs(ex - qx) > tol || Math.abs(ey - qy) > tol) return `α ${m.alpha[k]} on edge ${m.edge[k]} gives (${ex}, ${ey}), expected (${qx}, ${qy})`;
+  }
+  return '';
 }

@@ -1,45 +1,8 @@
 import { expect } from 'chai';
-import { Manifold, Penetration, ShapeType, polygon, polygonManifold, sat, type Shape } from '../../../src/engine/collision/index.js';
-import { Failures, KINDS, boundaryDistance, describeShape, make, overlapAlong, pts, randomPair, rng, sizeOf } from './helpers.js';
+import { Manifold, Penetration, ShapeType, polygon, polygonManifold, sat } from '../../../src/engine/collision/index.js';
+import { Failures, KINDS, checkFeatures, describeShape, make, overlapAlong, randomPair, rng, sizeOf } from './helpers.js';
 
 const PAIRS = 10_000;
-
-/**
- * Checks every contact point's feature against the geometry: the penetrating vertex V (minus its radius along the
- * normal, for a circle) pushed by depth along the normal lands on the named edge at α, and the reported point is
- * halfway. Returns an error message or ''.
- */
-function checkFeatures(a: Shape, b: Shape, m: Manifold, tol: number): string {
-  const shapes = [a, b];
-  for (let k = 0; k < m.count; k++) {
-    const owner = shapes[m.incident[k]];
-    const other = shapes[1 - m.incident[k]];
-    const s = m.incident[k] === 1 ? 1 : -1; // a vertex of B meets A's edge further along the normal, one of A back along it
-    const v = pts(owner)[m.vertex[k]];
-    if (!v) return `vertex ${m.vertex[k]} out of range`;
-    const depth = m.depth[k];
-    // Penetrating point on the owner's outline.
-    const px = v.x - s * owner.radius * m.normalX;
-    const py = v.y - s * owner.radius * m.normalY;
-    const qx = px + s * depth * m.normalX;
-    const qy = py + s * depth * m.normalY;
-    if (Math.abs(m.pointX[k] - (px + qx) / 2) > tol || Math.abs(m.pointY[k] - (py + qy) / 2) > tol) return `point ${k} not halfway`;
-    if (boundaryDistance(owner, px, py) > tol) return `penetrating point ${k} off its shape by ${boundaryDistance(owner, px, py)}`;
-    if (m.alpha[k] < 0 || m.alpha[k] > 1) return `alpha ${m.alpha[k]}`;
-    if (m.edge[k] < 0) {
-      if (!(a.type === ShapeType.Circle && b.type === ShapeType.Circle)) return 'edge −1 outside circle–circle';
-      if (boundaryDistance(other, qx, qy) > tol) return `counterpart ${k} off the other circle`;
-      continue;
-    }
-    const e = pts(other);
-    const e0 = e[m.edge[k]];
-    const e1 = e[(m.edge[k] + 1) % e.length];
-    const ex = e0.x + m.alpha[k] * (e1.x - e0.x);
-    const ey = e0.y + m.alpha[k] * (e1.y - e0.y);
-    if (Math.abs(ex - qx) > tol || Math.abs(ey - qy) > tol) return `α ${m.alpha[k]} on edge ${m.edge[k]} gives (${ex}, ${ey}), expected (${qx}, ${qy})`;
-  }
-  return '';
-}
 
 describe('contact manifold', () => {
   for (const ka of KINDS) {
@@ -69,13 +32,13 @@ describe('contact manifold', () => {
           if (m.count === 2) two++;
           if (m.count < 1 || m.count > 2) fail.add(`count ${m.count}`);
           if (Math.abs(m.normalX ** 2 + m.normalY ** 2 - 1) > 1e-12) fail.add('normal not unit');
-          // The normal is SAT's or, with the reference-face bias, one whose overlap is within 2% of the minimum.
+          // The reference face is the one of least penetration: the deepest point is SAT's depth, and so is the
+          // overlap along the normal.
           let deepest = -Infinity;
           for (let j = 0; j < m.count; j++) deepest = Math.max(deepest, m.depth[j]);
-          if (deepest > pen.depth / 0.98 + tol) fail.add(`manifold depth ${deepest} > SAT ${pen.depth}`);
-          if (!(deepest > 0)) fail.add(`no penetrating point (deepest ${deepest})`);
+          if (Math.abs(deepest - pen.depth) > tol) fail.add(`manifold depth ${deepest}, SAT ${pen.depth}: ${describeShape(a)} vs ${describeShape(b)}`);
           const along = overlapAlong(a, b, m.normalX, m.normalY);
-          if (along > pen.depth / 0.98 + tol || along < pen.depth - tol) fail.add(`overlap along the normal ${along}, SAT depth ${pen.depth}`);
+          if (Math.abs(along - pen.depth) > tol) fail.add(`overlap along the normal ${along}, SAT depth ${pen.depth}`);
           const err = checkFeatures(a, b, m, tol * 10);
           if (err) fail.add(`${err}: ${describeShape(a)} vs ${describeShape(b)}`);
         }
