@@ -4,7 +4,8 @@
 /**
  * Minimum translation vector of two overlapping shapes. Moving B by depth·normal (or A by −depth·normal) leaves
  * them touching. The contact point is midway between the two surfaces: point + depth/2·normal lies on A's outline
- * and point − depth/2·normal on B's.
+ * and point − depth/2·normal on B's. Where the two shapes meet face to face (parallel faces), it is the middle of
+ * the stretch where the faces overlap, whichever vertex either list starts from.
  */
 export class Penetration {
   hit = false;
@@ -21,12 +22,15 @@ export class Penetration {
  * Up to two contact points of a polygon pair (or one for a pair with a circle), and for each the feature a
  * position-based response needs (seed 4.2): vertex `vertex[k]` of shape `incident[k]` (0 = A, 1 = B) penetrates edge
  * `edge[k]` of the other shape (edge e runs from vertex e to vertex (e + 1) % count) by `depth[k]` along the normal.
- * `alpha[k]` ∈ [0, 1] places the vertex's counterpart on that edge: Q = E0 + α·(E1 − E0) is where the vertex,
- * pushed by depth[k] along the normal (towards B for a vertex of A, towards A for a vertex of B), meets the edge.
- * For the reference edge this is the orthogonal projection of the vertex onto the edge; for a reference vertex
- * against the incident edge it is the projection along the contact normal. A circle's vertex is its centre, and its
- * penetrating point is centre ∓ radius·normal; circle–circle contacts have edge −1.
- * `point[k]` is midway between the two surfaces (between the penetrating point and Q).
+ * `alpha[k]` ∈ [0, 1] places the vertex's counterpart on that edge: Q = E0 + α·(E1 − E0) is where the vertex, pushed
+ * by depth[k] out of the other shape — along the normal (away from A) for a vertex of B, against it (away from B) for
+ * a vertex of A — meets the edge. For a vertex under the reference face this is its orthogonal projection onto the
+ * edge; for a reference vertex against the incident face it is the projection along the contact normal. A face may
+ * be a run of collinear edges (180° corners): `edge[k]` is then the one of them the point lies on. A circle's vertex
+ * is its centre, and its penetrating point is centre ∓ radius·normal; circle–circle contacts have edge −1.
+ * `point[k]` is midway between the two surfaces (between the penetrating point and Q): point + depth/2·normal lies on
+ * A's outline and point − depth/2·normal on B's. The deepest point's depth is the penetration depth (the reference
+ * face is the one of least penetration), and the points do not depend on where either vertex list starts.
  */
 export class Manifold {
   /** Unit normal from A to B. */

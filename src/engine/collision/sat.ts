@@ -1,7 +1,9 @@
 // Separating-axis test with minimum translation vector (seed 3.1, Algorithm 2), fixed per GUIDE.md: the normal is
 // signed to point from A to B, and each candidate axis is tested in the one direction that is a facet of the
 // Minkowski difference (Box2D's max-separation form), so the depth is exactly the MTV length even when one shape
-// contains the other. Shapes that only touch are not a hit.
+// contains the other. Shapes that only touch are not a hit. The contact point is the deepest vertex's, or, where
+// the shapes meet face to face, taken from the middle of the faces' overlap, so that it lies on both outlines and
+// does not depend on which vertex either list starts from.
 import type { Penetration } from './results.js';
 import { ShapeType, type Shape } from './shape.js';
 import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, maxSeparation, mid, near, nearestFeature, onFace, sep } from './scratch.js';
