@@ -1,4 +1,5 @@
-// What child elements need from the scene that owns them (kept apart from physics-scene.ts to avoid an import cycle).
+// What child elements need from the scene that owns them: the scene's markup sync (physics-scene/markup.ts) implements
+// it and sets itself as each child's `_scene`. Kept apart so that the children do not import the scene (a cycle).
 export interface SceneHost {
   /** A child's attributes or properties changed. */
   childChanged(child: Element): void;
