@@ -1,4 +1,4 @@
-import type { ParticleStore } from './particles.js';
+import { ParticleFlag, type ParticleStore } from './particles.js';
 
 /** An axis-aligned box the particles cannot leave (Jakobsen's first collision). */
 export interface Bounds {
@@ -14,9 +14,10 @@ export interface Bounds {
  * normal correction (static when it all fits, kinetic otherwise).
  */
 export function keepInBounds(p: ParticleStore, b: Bounds, friction: number): void {
-  const { x, y, px, py, radius, invMass } = p;
+  const { x, y, px, py, radius, invMass, flags } = p;
   for (let i = 0, n = p.count; i < n; i++) {
-    if (invMass[i] === 0) continue;
+    // A rigid body meets the walls by its shape (rigid contacts with the world), not as a circle.
+    if (invMass[i] === 0 || flags[i] & ParticleFlag.Rigid) continue;
     const r = radius[i];
     let dx = 0;
     let dy = 0;

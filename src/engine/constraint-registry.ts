@@ -9,6 +9,7 @@ import { PinConstraints } from './constraints/pin.js';
 import { AreaConstraints } from './constraints/area.js';
 import { Springs } from './constraints/spring.js';
 import { GrabConstraints } from './constraints/grab.js';
+import { Joints } from './rigid/joints.js';
 import { CONSTRAINT_KINDS, type ConstraintKind } from './options.js';
 
 /** A constraint's table, as an index into the registry's `tables` (and into CONSTRAINT_KINDS). */
@@ -19,6 +20,7 @@ export const enum Kind {
   Spring,
   Area,
   Grab,
+  Joint,
 }
 
 type ConstraintTable = Table & { slot: Int32Array };
@@ -30,8 +32,9 @@ export class ConstraintRegistry {
   readonly springs = new Springs();
   readonly areas = new AreaConstraints();
   readonly grabs = new GrabConstraints();
+  readonly joints = new Joints();
   /** Indexed by Kind. */
-  readonly tables: readonly ConstraintTable[] = [this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs];
+  readonly tables: readonly ConstraintTable[] = [this.distances, this.angles, this.pins, this.springs, this.areas, this.grabs, this.joints];
   readonly ids = new HandleRegistry('constraint', 'constraints');
   /** Per handle slot: the Kind of its table and its row there. */
   kind = new Uint8Array(64);
@@ -112,6 +115,8 @@ export class ConstraintRegistry {
       }
       case Kind.Grab:
         return this.grabs.p0[row] === i || this.grabs.p1[row] === i || this.grabs.p2[row] === i;
+      case Kind.Joint:
+        return this.joints.a[row] === i || this.joints.b[row] === i;
     }
   }
 

@@ -151,12 +151,93 @@ export interface AreaOptions {
   compliance?: number;
 }
 
+/** Material and filtering of a rigid body (as ColliderOptions, without the particle-based shapes). */
+export type RigidMaterial = Omit<ColliderOptions, 'shape' | 'parts'>;
+
+/** A rigid body: a shape (an outline or a disc) with a pose, velocities, a type and a material. */
+export interface RigidBodyOptions extends RigidMaterial {
+  /** Outline in body coordinates, any simple polygon (a concave one collides as convex parts). Give points or radius. */
+  points?: Vec2[];
+  /** A disc of this radius about the body's origin. */
+  radius?: number;
+  /** Where the body's origin goes, and its rotation (radians). */
+  x: number;
+  y: number;
+  angle?: number;
+  /** Velocity of the centre of mass, and angular velocity (rad/s, positive turns x toward y). */
+  vx?: number;
+  vy?: number;
+  angularVelocity?: number;
+  /** 'dynamic' (default), 'static' or 'kinematic' (moved by its velocities only). */
+  type?: 'dynamic' | 'static' | 'kinematic';
+  /** Mass per unit area (default 1), or the total `mass` instead. */
+  density?: number;
+  mass?: number;
+  /** False: the body collides with nothing. Default true. */
+  collide?: boolean;
+}
+
+/** A body's origin and angle. */
+export interface Pose {
+  x: number;
+  y: number;
+  angle: number;
+}
+
+/** What a rigid body moves with: mass, moment of inertia about the centre of mass, and where that centre is. */
+export interface MassInfo {
+  mass: number;
+  inertia: number;
+  centerX: number;
+  centerY: number;
+}
+
+export type JointType = 'revolute' | 'weld' | 'prismatic' | 'distance' | 'spring';
+export const JOINT_TYPES: readonly JointType[] = ['revolute', 'weld', 'prismatic', 'distance', 'spring'];
+
+/**
+ * A joint between two bodies (or a body and the world) at anchor points given in world coordinates where the bodies
+ * are now. Either side may be a particle instead (`particleA`, `particleB`): a rope's end, a cloth's corner.
+ */
+export interface JointOptions {
+  type: JointType;
+  /** A rigid body (or a body of one particle). */
+  a?: Handle;
+  /** The other body; omitted or null: the world. */
+  b?: Handle | null;
+  particleA?: Handle;
+  particleB?: Handle;
+  /** Where the bodies are joined (revolute, weld, prismatic). Default: A's centre of mass. */
+  anchor?: Vec2;
+  /** Each side's anchor (distance, spring). Default: `anchor`, else each body's centre. */
+  anchorA?: Vec2;
+  anchorB?: Vec2;
+  /** Prismatic: the direction B slides along, in world coordinates now (it turns with A). Default (1, 0). */
+  axis?: Vec2;
+  /** Revolute: limits of B's angle relative to A from where they are now (radians; both to enable). */
+  lowerAngle?: number;
+  upperAngle?: number;
+  /** Revolute: a motor turning B relative to A at this speed (rad/s), with at most `maxMotorTorque`. */
+  motorSpeed?: number;
+  maxMotorTorque?: number;
+  /** Prismatic: translation limits along the axis; distance: length limits (a rope: lower 0). */
+  lower?: number;
+  upper?: number;
+  /** Distance and spring: rest length (default the anchors' distance now). */
+  length?: number;
+  /** Spring: stiffness k (force per unit of stretch) and damping c (force per unit of stretch speed). */
+  stiffness?: number;
+  damping?: number;
+  /** Softness of the point or distance constraint (inverse stiffness); 0 = rigid (default). */
+  compliance?: number;
+}
+
 export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';
 export const BODY_KINDS: readonly BodyKind[] = ['particle', 'rope', 'cloth', 'rigid', 'soft', 'ragdoll', 'custom'];
 
-export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area' | 'grab';
+export type ConstraintKind = 'distance' | 'angle' | 'pin' | 'spring' | 'area' | 'grab' | 'joint';
 /** In the order of the constraint registry's tables (see Kind in constraint-registry.ts). */
-export const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area', 'grab'];
+export const CONSTRAINT_KINDS: readonly ConstraintKind[] = ['distance', 'angle', 'pin', 'spring', 'area', 'grab', 'joint'];
 
 /** A collider's options checked and completed with their defaults (parts as given: indices into the body's particles). */
 export type ResolvedCollider = Required<Omit<ColliderOptions, 'parts'>> & { parts?: number[][] };

@@ -1,12 +1,14 @@
 import { Table } from './table.js';
 
 /**
- * Particle state, one typed array per field. A particle's index is its handle's slot and never moves (constraints
+ * Particle state, one typed array per field. A rigid body is a particle too: the row of its centre of mass, with an
+ * angle and an inverse moment of inertia (a plain particle has both 0, and every formula reduces to it). A particle's index is its handle's slot and never moves (constraints
  * and shapes refer to particles by index), so removed particles leave a hole: `alive` 0 and `invMass` 0, which
  * every loop already skips. Slots are reused by later particles.
  */
 export class ParticleStore extends Table {
-  readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'sx', 'sy', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags'] as const;
+  readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'sx', 'sy', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags',
+    'angle', 'pangle', 'sangle', 'omega', 'rc', 'rs', 'torque', 'invInertia'] as const;
   /** Position now. */
   x = new Float64Array(16);
   y = new Float64Array(16);
@@ -34,6 +36,18 @@ export class ParticleStore extends Table {
   alive = new Uint8Array(16);
   /** Bit flags (see ParticleFlag). */
   flags = new Uint8Array(16);
+  /** A rigid body's angle (radians), at the start of the substep and of the step, and its angular velocity. */
+  angle = new Float64Array(16);
+  pangle = new Float64Array(16);
+  sangle = new Float64Array(16);
+  omega = new Float64Array(16);
+  /** cos and sin of the angle (1 and 0 for a particle), kept in step with it by the solvers. */
+  rc = new Float64Array(16);
+  rs = new Float64Array(16);
+  /** Torque accumulated by the user for the next step (cleared after it). */
+  torque = new Float64Array(16);
+  /** 1 / moment of inertia about the centre of mass; 0 for particles and for static and kinematic bodies. */
+  invInertia = new Float64Array(16);
 }
 
 export const enum ParticleFlag {
@@ -43,4 +57,8 @@ export const enum ParticleFlag {
   Pinned = 2,
   /** Collides with world bounds and (later) with shapes as a circle of its radius. */
   Collides = 4,
+  /** The centre of mass of a rigid body: the bounds act on its shape, not on the row as a circle. */
+  Rigid = 8,
+  /** A rigid body moved by its prescribed velocity (inverse mass 0, but it moves). */
+  Kinematic = 16,
 }

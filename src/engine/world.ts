@@ -27,6 +27,11 @@ import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKi
 import type { Limits, ParticleOptions, PinOptions, RayCastHit, SpringOptions, Vec2, WorldOptions } from './options.js';
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
+import type { JointOptions, MassInfo, Pose, RigidBodyOptions } from './options.js';
+import { circleShape, polygonShape, withDensity } from './rigid/outline.js';
+import { BODY_TYPES, BodyType, type BodyTypeName, type RigidShapeSource } from './rigid/shapes.js';
+import { applyForceAt, applyImpulseAt, initRigidRow, poseOf, setPose, setType } from './rigid/bodies.js';
+import { jointRow, type JointSide } from './rigid/joint-setup.js';
 import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
@@ -34,6 +39,7 @@ export type { Integrator } from './integrate.js';
 export type { Bounds } from './bounds.js';
 export type { WorldSnapshot } from './snapshot.js';
 export type { Vec2, WorldOptions, Limits, GrabOptions, RayCastHit, ColliderOptions, ParticleOptions } from './options.js';
+export type { RigidBodyOptions, Pose, MassInfo, JointOptions, JointType } from './options.js';
 export type { DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions, BodyKind, ConstraintKind } from './options.js';
 export { BODY_KINDS, COLLIDER_SHAPES, DEFAULT_LIMITS } from './options.js';
 
@@ -223,6 +229,7 @@ export class World {
     p.invMass[slot] = mass === Infinity ? 0 : 1 / mass;
     p.radius[slot] = radius;
     p.alive[slot] = 1;
+    p.rc[slot] = 1; // a particle's frame is the world's (angle 0)
     p.flags[slot] = mass === Infinity ? ParticleFlag.Static : 0;
     this.writeVelocity(slot, vx, vy);
     topologyChanged(this.ctx);
@@ -539,6 +546,7 @@ export class World {
       if (ctx.particleIds.isValid(h)) this.removeParticle(h);
     }
     ctx.bodies.remove(handle);
+    ctx.rigidShapes.clear(slot);
     ctx.colliders.kind[slot] = ColliderKind.None;
     ctx.collidersDirty = true;
   }
@@ -569,18 +577,159 @@ export class World {
     return centroid(this.particles, this.bodyParticleIndices(handle));
   }
 
-  /** Adds an impulse spread over a body's particles by mass (a change of the body's velocity by impulse / mass). */
-  applyBodyImpulse(handle: Handle, ix: number, iy: number): void {
+  /**
+   * Changes a body's velocity by impulse / mass at once: spread over its particles by mass, or for a rigid body at a
+   * world point (default its centre of mass), which also turns it.
+   */
+  applyBodyImpulse(handle: Handle, ix: number, iy: number, x?: number, y?: number): void {
     const idx = this.bodyParticleIndices(handle);
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
     this.wake(handle);
-    applyImpulseByMass(this.particles, idx, jx, jy);
+    const p = this.particles;
+    if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) {
+      const i = idx[0];
+      applyImpulseAt(p, i, jx, jy, x === undefined ? p.x[i] : finite('x', x), y === undefined ? p.y[i] : finite('y', y));
+    } else applyImpulseByMass(p, idx, jx, jy);
   }
 
   *bodies(): IterableIterator<Handle> {
     const ids = this.ctx.bodies.ids;
     for (let slot = 0; slot < ids.high; slot++) if (ids.alive[slot]) yield ids.handleOf(slot);
+  }
+
+  // ---- rigid bodies ------------------------------------------------------------------------------------------
+
+  /**
+   * A rigid body (Müller et al. 2020): one row of the particle store at its centre of mass, with an angle and a
+   * moment of inertia from its shape's area and density, colliding by its outline or disc. Returns its body handle;
+   * its one particle (bodyParticleHandles) is its centre of mass.
+   */
+  addRigidBody(o: RigidBodyOptions): Handle {
+    if (o == null || typeof o !== 'object') throw new TypeError(`rigid body options must be an object, got ${String(o)}`);
+    if ((o.points === undefined) === (o.radius === undefined)) throw new TypeError('a rigid body needs either points (an outline) or radius (a disc)');
+    const shape = o.points !== undefined ? polygonShape(o.points) : circleShape(o.radius as number);
+    const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
+    if (o.mass !== undefined && o.density !== undefined) throw new TypeError('give a rigid body either mass or density, not both');
+    const density = o.mass !== undefined ? positive('mass', o.mass) / shape.source.mass : positive('density', o.density ?? 1);
+    const source = withDensity(shape, density);
+    const [x, y, angle] = [finite('x', o.x), finite('y', o.y), finite('angle', o.angle ?? 0)];
+    const [vx, vy, w] = [finite('vx', o.vx ?? 0), finite('vy', o.vy ?? 0), finite('angularVelocity', o.angularVelocity ?? 0)];
+    const collider = resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3);
+    const particle = this.addParticle({ x, y });
+    const i = this.particleIndex(particle);
+    initRigidRow(this.particles, i, source, type, x, y, angle);
+    const body = this.addBody('rigid', [particle], [], { shape: 'none' });
+    this.ctx.rigidShapes.set(handleSlot(body), i, source, type);
+    this.writeCollider(handleSlot(body), collider);
+    if (type !== BodyType.Static) this.setBodyVelocity(body, vx, vy);
+    this.particles.omega[i] = type === BodyType.Static ? 0 : w;
+    return body;
+  }
+
+  /** The rigid body's row and shape; a RangeError naming `what` for any other body. */
+  private rigid(body: Handle, what = 'body'): { i: number; slot: number; source: RigidShapeSource } {
+    const slot = this.ctx.bodies.slotOf(body, what);
+    const source = this.ctx.rigidShapes.source(slot);
+    if (!source) throw new RangeError(`${what} ${body} is not a rigid body (it is a ${this.ctx.bodies.kind[slot]} built of particles)`);
+    return { i: this.ctx.bodies.particles[slot][0], slot, source };
+  }
+
+  /** A rigid body's origin (where its points were placed) and angle. */
+  bodyPose(body: Handle): Pose {
+    const r = this.rigid(body);
+    return poseOf(this.particles, r.i, r.source);
+  }
+
+  /** Moves and turns a rigid body to a pose (its velocities are kept). */
+  setBodyPose(body: Handle, x: number, y: number, angle: number): void {
+    const r = this.rigid(body);
+    setPose(this.particles, r.i, r.source, finite('x', x), finite('y', y), finite('angle', angle));
+    this.wake(body);
+  }
+
+  /** Velocity of a rigid body's centre of mass at the end of the last step (semi-implicit Euler's). */
+  bodyVelocity(body: Handle): Vec2 {
+    const { i } = this.rigid(body);
+    return { x: this.particles.vx[i], y: this.particles.vy[i] };
+  }
+
+  setBodyVelocity(body: Handle, vx: number, vy: number): void {
+    const { i } = this.rigid(body);
+    this.particles.vx[i] = finite('vx', vx);
+    this.particles.vy[i] = finite('vy', vy);
+    this.wake(body);
+  }
+
+  /** Angular velocity (rad/s; positive turns x toward y). */
+  bodyAngularVelocity(body: Handle): number {
+    return this.particles.omega[this.rigid(body).i];
+  }
+
+  setBodyAngularVelocity(body: Handle, w: number): void {
+    const { i } = this.rigid(body);
+    this.particles.omega[i] = finite('angularVelocity', w);
+    this.wake(body);
+  }
+
+  /** A force for the next step at a world point (default the centre of mass), with the torque it makes there. */
+  applyBodyForce(body: Handle, fx: number, fy: number, x?: number, y?: number): void {
+    const { i } = this.rigid(body);
+    const p = this.particles;
+    applyForceAt(p, i, finite('fx', fx), finite('fy', fy), x === undefined ? p.x[i] : finite('x', x), y === undefined ? p.y[i] : finite('y', y));
+    this.wake(body);
+  }
+
+  /** A torque for the next step. */
+  applyBodyTorque(body: Handle, torque: number): void {
+    const { i } = this.rigid(body);
+    this.particles.torque[i] += finite('torque', torque);
+    this.wake(body);
+  }
+
+  /** Mass, moment of inertia about the centre of mass, and that centre now. */
+  bodyMassInfo(body: Handle): MassInfo {
+    const r = this.rigid(body);
+    return { mass: r.source.mass, inertia: r.source.inertia, centerX: this.particles.x[r.i], centerY: this.particles.y[r.i] };
+  }
+
+  bodyType(body: Handle): BodyTypeName {
+    return BODY_TYPES[this.ctx.rigidShapes.type[this.rigid(body).slot]];
+  }
+
+  /** Makes a rigid body dynamic, static (it stops) or kinematic (it keeps its velocities and moves by them). */
+  setBodyType(body: Handle, type: BodyTypeName): void {
+    const r = this.rigid(body);
+    const t = BODY_TYPES.indexOf(oneOf('type', type, BODY_TYPES)) as BodyType;
+    this.wake(body);
+    this.ctx.rigidShapes.set(r.slot, r.i, r.source, t);
+    setType(this.particles, r.i, r.source, t);
+    this.ctx.collidersDirty = true;
+    topologyChanged(this.ctx);
+  }
+
+  /** A joint between two bodies, a body and the world, or a body and a particle (see JointOptions). */
+  addJoint(o: JointOptions): Handle {
+    if (o == null || typeof o !== 'object') throw new TypeError(`joint options must be an object, got ${String(o)}`);
+    const A = this.jointSide(o.a, o.particleA, 'a', 'particleA');
+    const B = this.jointSide(o.b, o.particleB, 'b', 'particleB');
+    if (A.row < 0) throw new TypeError('a joint needs side a: a body (a) or a particle (particleA)');
+    if (A.row === B.row) throw new RangeError('a joint must join two different bodies or particles');
+    return this.added(this.ctx.constraints.add(this.ctx.constraints.joints, jointRow(o, A, B, this.particles)));
+  }
+
+  private jointSide(body: Handle | null | undefined, particle: Handle | undefined, bodyName: string, particleName: string): JointSide {
+    if (body != null && particle !== undefined) throw new TypeError(`give ${bodyName} or ${particleName}, not both`);
+    if (particle !== undefined) {
+      const row = this.ctx.particleIds.slotOf(particle, particleName);
+      return { row, body: this.ctx.sleep.particleBody[row] ?? -1, rigid: false };
+    }
+    if (body == null) return { row: -1, body: -1, rigid: false };
+    const slot = this.ctx.bodies.slotOf(body, bodyName);
+    const rigid = this.ctx.rigidShapes.source(slot) !== undefined;
+    const members = this.ctx.bodies.particles[slot];
+    if (!rigid && members.length !== 1) throw new RangeError(`${bodyName} ${body} is built of ${members.length} particles: join it by one of them (${particleName})`);
+    return { row: members[0], body: slot, rigid };
   }
 
   // ---- pointer drag and queries ------------------------------------------------------------------------------
@@ -662,7 +811,7 @@ export class World {
 
   // ---- determinism -------------------------------------------------------------------------------------------
 
-  /** A hash of the full simulation state (positions, velocities, masses): equal states give equal hashes. */
+  /** A hash of the full simulation state (positions, angles, velocities, masses): equal states give equal hashes. */
   stateHash(): string {
     const p = this.particles;
     return hashColumns([p.x, p.y, p.px, p.py, p.vx, p.vy, p.invMass, p.alive], p.count, [this.stepCount, this.constraintCount]);

@@ -3,17 +3,28 @@
 import type { StepContext } from './context.js';
 import { recordApproachSpeeds } from './contacts.js';
 import { rebuildColliders } from './topology.js';
+import { ColliderKind } from './colliders.js';
+import { RigidShapeKind } from '../rigid/shapes.js';
+import { boundsContacts } from './rigid-narrowphase.js';
+import { ParticleFlag } from '../particles.js';
 
 /** Broad phase then narrow phase: the contacts found act in every substep of the step (speculatively). */
 export function detectCollisions(ctx: StepContext, dt: number): void {
   if (ctx.collidersDirty) rebuildColliders(ctx);
   const c = ctx.colliders;
   ctx.contacts.count = 0;
+  ctx.rigidContacts.count = 0;
   ctx.pairs.count = 0;
   if (c.activeCount === 0) return;
+  const shapes = ctx.rigidShapes;
+  if (shapes.polygonCount > 0) shapes.updateWorld(ctx.particles);
   updateBoundingBoxes(ctx, dt);
   ctx.broadPhase.findPairs(c, ctx.acceptPair, ctx.pairs);
-  ctx.narrowPhase.run(ctx.pairs, c, ctx.particles, ctx.motion, ctx.settings.contactSlop, ctx.contacts);
+  const slop = ctx.settings.contactSlop;
+  ctx.narrowPhase.run(ctx.pairs, c, ctx.particles, ctx.motion, slop, ctx.contacts);
+  ctx.rigidNarrowPhase.run(ctx.pairs, c, shapes, ctx.particles, ctx.motion, slop, ctx.rigidContacts);
+  const bounds = ctx.settings.bounds;
+  if (bounds && ctx.rigidCount > 0) boundsContacts(bounds, shapes, c, ctx.particles, ctx.motion, slop, ctx.settings.boundsFriction, ctx.rigidContacts);
   ctx.anchors.restore(ctx.contacts);
   recordApproachSpeeds(ctx.contacts, ctx.particles);
 }
@@ -22,12 +33,16 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
 export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   const c = ctx.colliders;
   const motion = ctx.motion;
-  const { x, y, vx, vy, radius, invMass } = ctx.particles;
+  const { x, y, vx, vy, radius, invMass, omega, flags } = ctx.particles;
   const gravity = ctx.settings.gravity;
   const g = Math.sqrt(gravity.x ** 2 + gravity.y ** 2) * dt * dt;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
     const idx = c.particles[s];
+    if (c.kind[s] === ColliderKind.Rigid) {
+      rigidBoundingBox(ctx, s, idx[0], dt, g, x, y, vx, vy, omega, radius, invMass, flags);
+      continue;
+    }
     let minX = Infinity;
     let minY = Infinity;
     let maxX = -Infinity;
@@ -67,4 +82,53 @@ export function shouldCollide(ctx: StepContext, a: number, b: number): boolean {
   const ga = c.group[a];
   if (ga !== 0 && ga === c.group[b]) return ga > 0;
   return (c.category[a] & c.mask[b]) !== 0 && (c.category[b] & c.mask[a]) !== 0;
+}
+
+/**
+ * A rigid body's AABB: its world vertices (a disc: centre ± radius), grown by how far any point of it can move this
+ * step: |v|·dt + |ω|·extent·dt, plus gravity's share for a dynamic body. A moving kinematic body is not static for
+ * pair filtering (it must wake and push what it meets).
+ */
+function rigidBoundingBox(
+  ctx: StepContext, s: number, i: number, dt: number, g: number,
+  x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, omega: Float64Array, radius: Float64Array, invMass: Float64Array, flags: Uint8Array,
+): void {
+  const c = ctx.colliders;
+  const shapes = ctx.rigidShapes;
+  let minX: number;
+  let minY: number;
+  let maxX: number;
+  let maxY: number;
+  if (shapes.kind[s] === RigidShapeKind.Circle) {
+    const r = shapes.radius[s];
+    minX = x[i] - r;
+    maxX = x[i] + r;
+    minY = y[i] - r;
+    maxY = y[i] + r;
+  } else {
+    minX = minY = Infinity;
+    maxX = maxY = -Infinity;
+    const { wx, wy } = shapes;
+    const p0 = shapes.partStart[s];
+    const v0 = shapes.partVertexStart[p0];
+    const last = p0 + shapes.partCount[s] - 1;
+    const v1 = shapes.partVertexStart[last] + shapes.partVertexCount[last];
+    for (let v = v0; v < v1; v++) {
+      if (wx[v] < minX) minX = wx[v];
+      if (wx[v] > maxX) maxX = wx[v];
+      if (wy[v] < minY) minY = wy[v];
+      if (wy[v] > maxY) maxY = wy[v];
+    }
+  }
+  const w = omega[i] < 0 ? -omega[i] : omega[i];
+  const speed = Math.sqrt(vx[i] * vx[i] + vy[i] * vy[i]) + w * radius[i];
+  const dynamic = invMass[i] !== 0;
+  const moving = dynamic || ((flags[i] & ParticleFlag.Kinematic) !== 0 && speed > 0);
+  const m = speed * dt + (dynamic ? g : 0);
+  ctx.motion[s] = m;
+  c.isStatic[s] = moving ? 0 : 1;
+  c.minX[s] = minX - m;
+  c.minY[s] = minY - m;
+  c.maxX[s] = maxX + m;
+  c.maxY[s] = maxY + m;
 }

@@ -8,6 +8,8 @@ export const enum ColliderKind {
   Polygon = 1,
   /** Every particle is a circle of its own radius (soft rings, ragdolls, ropes and cloth that collide, balls). */
   Particles = 2,
+  /** A rigid body's shape (polygon parts or a disc) in its own frame, posed by its row (rigid/shapes.ts). */
+  Rigid = 3,
 }
 
 /**

@@ -11,6 +11,9 @@ import { AnchorCache, Contacts } from './contacts.js';
 import { Sleep } from './sleep.js';
 import { CollisionEvents, EventTracker } from './events.js';
 import { shouldCollide } from './collide.js';
+import { RigidNarrowPhase } from './rigid-narrowphase.js';
+import { RigidContacts } from '../rigid/contacts.js';
+import { RigidShapes } from '../rigid/shapes.js';
 
 /**
  * Everything a step works on: the particles, the constraint tables and the bodies (with their handle registries),
@@ -40,6 +43,16 @@ export class StepContext {
   readonly anchors = new AnchorCache();
   /** Per body slot: how far the body may move this step (speculative margin). */
   motion = new Float64Array(16);
+
+  /** Rigid bodies: their shapes (per body slot), this step's contact points, and the narrow phase that finds them. */
+  readonly rigidShapes = new RigidShapes();
+  readonly rigidContacts = new RigidContacts();
+  readonly rigidNarrowPhase = new RigidNarrowPhase();
+  /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */
+  rigidRows = new Int32Array(16);
+  rigidCount = 0;
+  kinematicRows = new Int32Array(16);
+  kinematicCount = 0;
 
   readonly sleep = new Sleep();
   /** Begin/end collision events of the last step. */

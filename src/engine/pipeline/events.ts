@@ -1,5 +1,15 @@
 import { grown } from '../table.js';
-import type { Contacts } from './contacts.js';
+
+/** What events and sleeping read of a contact table (the particle contacts and the rigid ones both have it). */
+export interface ContactPairs {
+  count: number;
+  bodyA: Int32Array;
+  bodyB: Int32Array;
+  touched: Uint8Array;
+  depth: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+}
 import { KeyTable } from './key-table.js';
 
 /**
@@ -46,30 +56,25 @@ export class EventTracker {
   private previous = new KeyTable();
 
   /**
-   * `touched[i]` says whether contact i acted this step; `handleOf` maps a body slot to its handle.
-   * Pairs whose body was removed end silently (their handles are gone).
+   * The contacts of both tables that acted this step (`touched`) give the touching body pairs; `handleOf` maps a
+   * body slot to its handle. Contacts with the world's bounds (body −1) make no events. Pairs whose body was removed
+   * end silently (their handles are gone).
    */
-  update(c: Contacts, touched: Uint8Array, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
+  update(c: ContactPairs, r: ContactPairs, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
     [this.current, this.previous] = [this.previous, this.current];
     const cur = this.current;
-    cur.reset(c.count);
-    for (let i = 0; i < c.count; i++) {
-      if (!touched[i]) continue;
-      const a = c.bodyA[i];
-      const b = c.bodyB[i];
-      const lo = a < b ? a : b;
-      const hi = a < b ? b : a;
-      const key = lo * SLOTS + hi;
-      const slot = cur.insert(key, i);
-      // Keep the deepest contact of the pair for the event's normal and depth.
-      if (c.depth[i] > c.depth[cur.values[slot]]) cur.values[slot] = i;
-    }
+    cur.reset(c.count + r.count);
+    this.collect(c, 0);
+    this.collect(r, 1);
     for (let h = 0; h < cur.keys.length; h++) {
       const key = cur.keys[h];
       if (key === -1 || this.previous.find(key) >= 0) continue;
-      const i = cur.values[h];
-      out.push(0, handleOf(c.bodyA[i]), handleOf(c.bodyB[i]), c.nx[i], c.ny[i], Math.max(0, c.depth[i]));
+      // Which table and row: value = row · 2 + table.
+      const v = cur.values[h];
+      const t = v % 2 === 0 ? c : r;
+      const i = (v - (v % 2)) / 2;
+      out.push(0, handleOf(t.bodyA[i]), handleOf(t.bodyB[i]), t.nx[i], t.ny[i], Math.max(0, t.depth[i]));
     }
     const prev = this.previous;
     for (let h = 0; h < prev.keys.length; h++) {
@@ -79,6 +84,25 @@ export class EventTracker {
       const hi = key - lo * SLOTS;
       if (!alive(lo) || !alive(hi)) continue;
       out.push(1, handleOf(lo), handleOf(hi), 0, 0, 0);
+    }
+  }
+
+  /**
+   * Adds the touching pairs of one table to `current` with their deepest contact (value row · 2 + table). A pair's
+   * contacts are all in one table: the rigid narrow phase takes every pair with a rigid body.
+   */
+  private collect(t: ContactPairs, table: number): void {
+    const cur = this.current;
+    for (let i = 0; i < t.count; i++) {
+      if (!t.touched[i]) continue;
+      const a = t.bodyA[i];
+      const b = t.bodyB[i];
+      if (a < 0 || b < 0) continue;
+      const lo = a < b ? a : b;
+      const hi = a < b ? b : a;
+      const slot = cur.insert(lo * SLOTS + hi, i * 2 + table);
+      const v = cur.values[slot];
+      if (v % 2 === table && t.depth[i] > t.depth[(v - table) / 2]) cur.values[slot] = i * 2 + table;
     }
   }
 

@@ -39,6 +39,8 @@ export class NarrowPhase {
     for (let k = 0; k < pairs.count; k++) {
       let a = pairs.a[k];
       let b = pairs.b[k];
+      // A pair with a rigid body is the rigid narrow phase's (rigid-narrowphase.ts).
+      if (c.kind[a] === ColliderKind.Rigid || c.kind[b] === ColliderKind.Rigid) continue;
       // Polygons first: a polygon body is always A when paired with a particle body.
       if (c.kind[a] === ColliderKind.Particles && c.kind[b] === ColliderKind.Polygon) {
         const t = a;

@@ -1,6 +1,6 @@
 import { grown } from '../table.js';
-import type { ParticleStore } from '../particles.js';
-import type { Contacts } from './contacts.js';
+import { ParticleFlag, type ParticleStore } from '../particles.js';
+import type { ContactPairs } from './events.js';
 
 /**
  * Sleeping: bodies that have all moved slower than `speedThreshold` for `timeToSleep` seconds, together with every
@@ -23,6 +23,8 @@ export class Sleep {
   /** Per particle: owning body slot (−1 for none) and inverse mass parked while asleep. */
   particleBody = new Int32Array(16);
   parkedInvMass = new Float64Array(16);
+  /** A rigid body's inverse inertia, parked like its inverse mass. */
+  parkedInvInertia = new Float64Array(16);
   /** Body pairs joined by constraints that span two bodies. */
   private linksA = new Int32Array(16);
   private linksB = new Int32Array(16);
@@ -36,6 +38,7 @@ export class Sleep {
     }
     this.particleBody = grown(this.particleBody, particleCount);
     this.parkedInvMass = grown(this.parkedInvMass, particleCount);
+    this.parkedInvInertia = grown(this.parkedInvInertia, particleCount);
     this.particleBody.fill(-1, 0, particleCount);
     for (let s = 0; s < slots; s++) {
       const idx = bodyParticles(s);
@@ -73,9 +76,9 @@ export class Sleep {
    * After a step: update each body's still-time, wake sleeping bodies that an awake body touched, group bodies
    * into islands and put islands that have all been still long enough to sleep.
    */
-  update(slots: number, alive: Uint8Array, bodyParticles: (slot: number) => Int32Array, p: ParticleStore, c: Contacts, touched: Uint8Array, dt: number): void {
+  update(slots: number, alive: Uint8Array, bodyParticles: (slot: number) => Int32Array, p: ParticleStore, c: ContactPairs, r: ContactPairs, dt: number): void {
     if (!this.enabled) return;
-    const { x, y, sx, sy, invMass } = p;
+    const { x, y, sx, sy, invMass, angle, sangle, radius, flags } = p;
     // Judged on the motion over the whole step: substep jitter that goes nowhere should not keep a body awake.
     const limit = this.speedThreshold * dt;
     const limit2 = limit * limit;
@@ -87,25 +90,22 @@ export class Sleep {
       let movable = 0;
       for (let k = 0; k < idx.length; k++) {
         const i = idx[k];
-        if (invMass[i] === 0) continue;
+        // A kinematic body counts as moving: it wakes what it touches and never sleeps while it moves.
+        if (invMass[i] === 0 && !(flags[i] & ParticleFlag.Kinematic)) continue;
         movable = 1;
         const dx = x[i] - sx[i];
         const dy = y[i] - sy[i];
-        const d2 = dx * dx + dy * dy;
+        // A turning rigid body moves its farthest point by angle × extent.
+        const turn = (angle[i] - sangle[i]) * radius[i];
+        const d2 = dx * dx + dy * dy + turn * turn;
         if (d2 > fastest) fastest = d2;
       }
       this.dynamic[s] = movable;
       this.sleepTime[s] = movable && fastest < limit2 ? this.sleepTime[s] + dt : 0;
     }
     // Contacts join islands; an awake body touching a sleeping one wakes it.
-    for (let i = 0; i < c.count; i++) {
-      if (!touched[i]) continue;
-      const a = c.bodyA[i];
-      const b = c.bodyB[i];
-      if (this.asleep[a] && !this.asleep[b] && this.dynamic[b]) this.wakeBody(a, bodyParticles(a), p);
-      if (this.asleep[b] && !this.asleep[a] && this.dynamic[a]) this.wakeBody(b, bodyParticles(b), p);
-      if (this.dynamic[a] && this.dynamic[b]) this.union(a, b);
-    }
+    this.joinTouching(c, bodyParticles, p);
+    this.joinTouching(r, bodyParticles, p);
     for (let k = 0; k < this.linkCount; k++) {
       const a = this.linksA[k];
       const b = this.linksB[k];
@@ -130,15 +130,32 @@ export class Sleep {
     }
   }
 
+  private joinTouching(c: ContactPairs, bodyParticles: (slot: number) => Int32Array, p: ParticleStore): void {
+    for (let i = 0; i < c.count; i++) {
+      if (!c.touched[i]) continue;
+      const a = c.bodyA[i];
+      const b = c.bodyB[i];
+      if (a < 0 || b < 0) continue;
+      if (this.asleep[a] && !this.asleep[b] && this.dynamic[b]) this.wakeBody(a, bodyParticles(a), p);
+      if (this.asleep[b] && !this.asleep[a] && this.dynamic[a]) this.wakeBody(b, bodyParticles(b), p);
+      if (this.dynamic[a] && this.dynamic[b]) this.union(a, b);
+    }
+  }
+
   private sleepBody(s: number, idx: Int32Array, p: ParticleStore): void {
     this.asleep[s] = 1;
     for (let k = 0; k < idx.length; k++) {
       const i = idx[k];
+      // A kinematic body keeps moving: it does not sleep (its island's other bodies do).
+      if (p.flags[i] & ParticleFlag.Kinematic) continue;
       this.parkedInvMass[i] = p.invMass[i];
+      this.parkedInvInertia[i] = p.invInertia[i];
       p.invMass[i] = 0;
-      p.vx[i] = p.vy[i] = 0;
+      p.invInertia[i] = 0;
+      p.vx[i] = p.vy[i] = p.omega[i] = 0;
       p.px[i] = p.x[i];
       p.py[i] = p.y[i];
+      p.pangle[i] = p.angle[i];
     }
   }
 
@@ -149,12 +166,14 @@ export class Sleep {
     this.awakeCount++;
     for (let k = 0; k < idx.length; k++) {
       const i = idx[k];
+      if (p.flags[i] & ParticleFlag.Kinematic) continue;
       p.invMass[i] = this.parkedInvMass[i];
+      p.invInertia[i] = this.parkedInvInertia[i];
     }
   }
 
   snapshot(slots: number, particles: number): Float64Array[] {
-    return [this.sleepTime.slice(0, slots), Float64Array.from(this.asleep.subarray(0, slots)), this.parkedInvMass.slice(0, particles), Float64Array.of(this.awakeCount)];
+    return [this.sleepTime.slice(0, slots), Float64Array.from(this.asleep.subarray(0, slots)), this.parkedInvMass.slice(0, particles), Float64Array.of(this.awakeCount), this.parkedInvInertia.slice(0, particles)];
   }
 
   restore(s: Float64Array[]): void {
@@ -165,6 +184,8 @@ export class Sleep {
     this.parkedInvMass = grown(new Float64Array(16), s[2].length);
     this.parkedInvMass.set(s[2]);
     this.awakeCount = s[3][0];
+    this.parkedInvInertia = grown(new Float64Array(16), s[2].length);
+    if (s[4]) this.parkedInvInertia.set(s[4]);
   }
 
   /** Inverse mass a particle has when awake (its parked value while its body sleeps). */

@@ -1,8 +1,9 @@
 // The step, as a short list of named phases over a StepContext (the layout of Box2D v3's b2World_Step):
 //
 //   prepare → detect collisions (bounding boxes, broad phase, narrow phase)
-//   → per substep: accelerate → integrate → place pins → reset multipliers → relax (constraints, grabs, contacts,
-//     bounds) × iterations → derive velocities → contact velocities
+//   → per substep: accelerate → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → reset
+//     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
+//     velocities (linear, angular) → contact velocities (particle, rigid)
 //   → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
@@ -19,6 +20,9 @@ import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
+import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
+import { solveJoints } from '../rigid/joints.js';
+import { solveRigidContacts, solveRigidContactVelocities } from '../rigid/contacts.js';
 
 /** One step of `dt` seconds in `settings.substeps` substeps. */
 export function step(ctx: StepContext, dt: number): void {
@@ -43,7 +47,7 @@ export function step(ctx: StepContext, dt: number): void {
   }
   ctx.anchors.store(ctx.contacts);
   breakLinks(ctx);
-  ctx.eventTracker.update(ctx.contacts, ctx.contacts.touched, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
+  ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
   updateSleep(ctx, dt);
   clearForces(ctx);
   advanceClock(ctx, dt);
@@ -52,15 +56,20 @@ export function step(ctx: StepContext, dt: number): void {
 /** One substep of length h. */
 export function substep(ctx: StepContext, h: number): void {
   const { settings, particles } = ctx;
+  const damp = 1 / (1 + h * settings.damping);
   accelerate(ctx, h);
-  integrate(particles, h, 1 / (1 + h * settings.damping), settings.integrator);
+  integrate(particles, h, damp, settings.integrator);
+  if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, h, damp);
+  if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, h);
   placeRigidPins(ctx.constraints.pins, particles);
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
-  const h2 = h * h;
-  for (let k = 0; k < settings.iterations; k++) relax(ctx, h2);
+  ctx.rigidContacts.beginSubstep(settings.maxPushSpeed * h);
+  for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
   updateVelocities(particles, h, settings.integrator);
+  if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, h);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
+  if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
 }
 
 /**
@@ -96,13 +105,19 @@ export function isSettled(ctx: StepContext): boolean {
   return !ctx.topologyDirty && sleep.enabled && sleep.awakeCount === 0 && ctx.freeMovableParticles === 0 && ctx.constraints.grabs.count === 0;
 }
 
-/** Where each particle starts the step (sleeping judges motion over whole steps, not substep jitter). */
+/**
+ * Where each particle starts the step (sleeping judges motion over whole steps, not substep jitter); rigid bodies'
+ * cos/sin re-derived from their angles (the solvers advance them incrementally within a step).
+ */
 function recordStartPositions(ctx: StepContext): void {
-  const { x, y, sx, sy } = ctx.particles;
-  for (let i = 0, n = ctx.particles.count; i < n; i++) {
+  const p = ctx.particles;
+  const { x, y, sx, sy, angle, sangle } = p;
+  for (let i = 0, n = p.count; i < n; i++) {
     sx[i] = x[i];
     sy[i] = y[i];
+    sangle[i] = angle[i];
   }
+  if (ctx.rigidCount > 0) syncRotation(p, ctx.rigidRows, ctx.rigidCount);
 }
 
 /** Gravity, the user's forces and the springs' forces, as accelerations. */
@@ -121,7 +136,8 @@ function accelerate(ctx: StepContext, h: number): void {
 
 /** XPBD multipliers start each substep at zero. */
 function resetMultipliers(ctx: StepContext): void {
-  const { distances, angles, areas, pins, grabs } = ctx.constraints;
+  const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
+  if (joints.count > 0) joints.beginSubstep();
   distances.lambda.fill(0, 0, distances.count);
   angles.lambda.fill(0, 0, angles.count);
   areas.lambda.fill(0, 0, areas.count);
@@ -131,16 +147,19 @@ function resetMultipliers(ctx: StepContext): void {
   grabs.lambdaY.fill(0, 0, grabs.count);
 }
 
-/** One Gauss–Seidel sweep over every constraint, then the contacts and the bounds. */
-function relax(ctx: StepContext, h2: number): void {
+/** One Gauss–Seidel sweep over every constraint, then the joints, the contacts and the bounds. */
+function relax(ctx: StepContext, h: number): void {
   const p = ctx.particles;
-  const { distances, angles, areas, pins, grabs } = ctx.constraints;
+  const h2 = h * h;
+  const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
   if (distances.count > 0) solveDistances(distances, p, h2);
   if (angles.count > 0) solveAngles(angles, p, h2);
   if (areas.count > 0) solveAreas(areas, p, h2);
   if (pins.count > 0) solveSoftPins(pins, p, h2);
   if (grabs.count > 0) solveGrabs(grabs, p, h2);
+  if (joints.count > 0) solveJoints(joints, p, h);
   if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p);
+  if (ctx.rigidContacts.count > 0) solveRigidContacts(ctx.rigidContacts, p);
   const bounds = ctx.settings.bounds;
   if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction);
 }
@@ -152,13 +171,15 @@ function breakLinks(ctx: StepContext): void {
 }
 
 function updateSleep(ctx: StepContext, dt: number): void {
-  ctx.sleep.update(ctx.bodies.ids.high, ctx.bodies.ids.alive, ctx.bodyParticlesOf, ctx.particles, ctx.contacts, ctx.contacts.touched, dt);
+  ctx.sleep.update(ctx.bodies.ids.high, ctx.bodies.ids.alive, ctx.bodyParticlesOf, ctx.particles, ctx.contacts, ctx.rigidContacts, dt);
 }
 
 /** The user's forces act for one step. */
 function clearForces(ctx: StepContext): void {
-  ctx.particles.fx.fill(0, 0, ctx.particles.count);
-  ctx.particles.fy.fill(0, 0, ctx.particles.count);
+  const p = ctx.particles;
+  p.fx.fill(0, 0, p.count);
+  p.fy.fill(0, 0, p.count);
+  p.torque.fill(0, 0, p.count);
 }
 
 function advanceClock(ctx: StepContext, dt: number): void {

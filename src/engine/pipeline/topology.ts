@@ -3,6 +3,9 @@
 import { GridBroadPhase } from './broadphase.js';
 import type { StepContext } from './context.js';
 import { grown } from '../table.js';
+import { ParticleFlag } from '../particles.js';
+import { ColliderKind } from './colliders.js';
+import { BodyType } from '../rigid/shapes.js';
 
 /**
  * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers floating,
@@ -53,7 +56,10 @@ export function rebuildTopology(ctx: StepContext): void {
     link(g.b[r], g.c[r]);
   }
   for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) link(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+  const j = ctx.constraints.joints;
+  for (let r = 0; r < j.count; r++) if (j.b[r] >= 0) link(j.a[r], j.b[r]);
   sleep.setLinks(links);
+  listRigidRows(ctx);
   let free = 0;
   for (let i = 0; i < p.count; i++) if (p.alive[i] && owner[i] < 0 && p.invMass[i] > 0) free++;
   ctx.freeMovableParticles = free;
@@ -68,7 +74,34 @@ export function rebuildColliders(ctx: StepContext): void {
   const bodies = ctx.bodies;
   const high = bodies.ids.high;
   ctx.motion = grown(ctx.motion, high);
-  ctx.colliders.rebuild(high, (slot) => (bodies.ids.alive[slot] ? { particles: bodies.particles[slot], parts: bodies.partIndices(slot) } : null));
+  const shapes = ctx.rigidShapes;
+  shapes.rebuild(high);
+  // A rigid body collides by its own shape (rigid/shapes.ts), not by parts of particles.
+  ctx.colliders.rebuild(high, (slot) => {
+    if (!bodies.ids.alive[slot]) return null;
+    if (shapes.source(slot)) return { particles: bodies.particles[slot], parts: [] };
+    return { particles: bodies.particles[slot], parts: bodies.partIndices(slot) };
+  });
+  for (let slot = 0; slot < high; slot++) if (shapes.source(slot) && ctx.colliders.kind[slot] !== ColliderKind.None) ctx.colliders.kind[slot] = ColliderKind.Rigid;
   if (ctx.broadPhase instanceof GridBroadPhase) ctx.broadPhase.invalidateCellSize();
   ctx.collidersDirty = false;
+}
+
+/** The rows of the rigid bodies that turn (dynamic, kinematic) and of the kinematic ones. */
+function listRigidRows(ctx: StepContext): void {
+  const shapes = ctx.rigidShapes;
+  const { ids, particles } = ctx.bodies;
+  const p = ctx.particles;
+  ctx.rigidRows = grown(ctx.rigidRows, ids.high);
+  ctx.kinematicRows = grown(ctx.kinematicRows, ids.high);
+  ctx.rigidCount = 0;
+  ctx.kinematicCount = 0;
+  for (let s = 0; s < ids.high; s++) {
+    if (!ids.alive[s] || !shapes.source(s)) continue;
+    const type = shapes.type[s];
+    if (type === BodyType.Static) continue;
+    const i = particles[s][0];
+    ctx.rigidRows[ctx.rigidCount++] = i;
+    if (type === BodyType.Kinematic && p.flags[i] & ParticleFlag.Kinematic) ctx.kinematicRows[ctx.kinematicCount++] = i;
+  }
 }

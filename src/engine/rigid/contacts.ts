@@ -23,7 +23,7 @@ import { turn, type BodyRows } from './rows.js';
 export class RigidContacts extends Table {
   readonly columns = [
     'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN', 'lambdaT',
-    'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth',
+    'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap',
   ] as const;
   a = new Int32Array(16);
   b = new Int32Array(16);
@@ -57,6 +57,8 @@ export class RigidContacts extends Table {
   bodyB = new Int32Array(16);
   /** Depth at detection (negative: a speculative gap). */
   depth = new Float64Array(16);
+  /** Overlap at the last position sweep, before its correction (negative: apart). */
+  gap = new Float64Array(16);
 
   /**
    * The next point's reals, written by the caller before add(): nx, ny, rAx, rAy, rBx, rBy, radA, radB, alpha,
@@ -93,6 +95,7 @@ export class RigidContacts extends Table {
     this.pair[i] = pair;
     this.bodyA[i] = bodyA;
     this.bodyB[i] = bodyB;
+    this.gap[i] = f[11];
   }
 
   /** Start of a substep: no correction yet; old overlaps may shrink by up to `maxPush` more. */
@@ -193,73 +196,176 @@ function pushB(c: RigidContacts, r: BodyRows, i: number, l: number, dx: number, 
   if (iI !== 0) turn(r, ib, iI * rn * l);
 }
 
-/** One Gauss–Seidel sweep over the points: normal, then friction (positions). */
-export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
-  const { x, y, rc, rs, invMass, invInertia } = r;
-  const { nx: NX, ny: NY, rAx, rAy, radA, allowance, lambdaN, lambdaT, slip, friction, touched, approach, restitution } = c;
-  for (let i = 0, n = c.count; i < n; i++) {
-    const ia = c.a[i];
-    const nx = NX[i];
-    const ny = NY[i];
-    // A's material lever and normal lever (a round side pushes through its centre).
-    let cs = rc[ia];
-    let sn = rs[ia];
-    let mAx = cs * rAx[i] - sn * rAy[i];
-    let mAy = sn * rAx[i] + cs * rAy[i];
-    const ra = radA[i];
-    const lAx = ra > 0 ? nx * ra : mAx;
-    const lAy = ra > 0 ? ny * ra : mAy;
-    loadB(c, r, i, nx, ny);
-    const d = (x[ia] + lAx - side[0]) * nx + (y[ia] + lAy - side[1]) * ny - allowance[i];
-    if (d <= 0) continue;
-    if (touched[i] === 0) {
-      touched[i] = 1;
-      // Approach speed for restitution, from the velocities before this substep's corrections.
-      if (restitution[i] > 0 && approach[i] !== approach[i]) approach[i] = relativeNormalSpeed(c, r, i, ia, lAx, lAy, nx, ny);
-    }
-    const imA = invMass[ia];
-    const iIA = invInertia[ia];
-    const rnA = lAx * ny - lAy * nx;
-    const rnB = side[2] * ny - side[3] * nx;
-    const w = imA + iIA * rnA * rnA + weightB(c, r, i, rnB);
-    if (w === 0) continue;
-    const dl = d / w;
-    lambdaN[i] += dl;
-    x[ia] -= imA * dl * nx;
-    y[ia] -= imA * dl * ny;
-    if (iIA !== 0) turn(r, ia, -iIA * rnA * dl);
-    pushB(c, r, i, dl, nx, ny, rnB);
+/** The point being solved: [d, w, rnA, rnB] per point, at offset 0 (point i) and 4 (its partner). */
+const pt = new Float64Array(8);
 
-    // Friction: the material points' tangential drift since the step began.
-    const mu = friction[i];
-    if (mu === 0) continue;
-    cs = rc[ia];
-    sn = rs[ia];
-    mAx = cs * rAx[i] - sn * rAy[i];
-    mAy = sn * rAx[i] + cs * rAy[i];
-    loadB(c, r, i, nx, ny);
-    const tx = -ny;
-    const ty = nx;
-    const drift = (x[ia] + mAx - side[4]) * tx + (y[ia] + mAy - side[5]) * ty - slip[i];
-    const rtA = mAx * ty - mAy * tx;
-    const rtB = side[6] * ty - side[7] * tx;
-    const wt = imA + iIA * rtA * rtA + weightB(c, r, i, rtB);
-    if (wt === 0) continue;
-    const want = drift / wt;
-    const limit = mu * lambdaN[i];
-    const before = lambdaT[i];
-    let total = before + want;
-    if (total > limit) total = limit;
-    else if (total < -limit) total = -limit;
-    const dt = total - before;
-    lambdaT[i] = total;
-    // What friction could not hold has slid: the anchors follow it.
-    slip[i] += (want - dt) * wt;
-    x[ia] -= imA * dt * tx;
-    y[ia] -= imA * dt * ty;
-    if (iIA !== 0) turn(r, ia, -iIA * rtA * dt);
-    pushB(c, r, i, dt, tx, ty, rtB);
+/**
+ * Point i's overlap d (past its allowance), generalised inverse mass w along n and the levers' cross products, into
+ * pt[o..o+3]; also records the overlap as `gap` (the velocity pass looks at it).
+ */
+function measure(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+  const ia = c.a[i];
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  const ra = c.radA[i];
+  let lAx: number;
+  let lAy: number;
+  if (ra > 0) {
+    lAx = nx * ra;
+    lAy = ny * ra;
+  } else {
+    const cs = r.rc[ia];
+    const sn = r.rs[ia];
+    lAx = cs * c.rAx[i] - sn * c.rAy[i];
+    lAy = sn * c.rAx[i] + cs * c.rAy[i];
   }
+  loadB(c, r, i, nx, ny);
+  const d = (r.x[ia] + lAx - side[0]) * nx + (r.y[ia] + lAy - side[1]) * ny - c.allowance[i];
+  c.gap[i] = d;
+  const rnA = lAx * ny - lAy * nx;
+  const rnB = side[2] * ny - side[3] * nx;
+  pt[o] = d;
+  pt[o + 1] = r.invMass[ia] + r.invInertia[ia] * rnA * rnA + weightB(c, r, i, rnB);
+  pt[o + 2] = rnA;
+  pt[o + 3] = rnB;
+}
+
+/** Pushes point i's sides apart by dl along n (levers from pt[o..]). */
+function pushApart(c: RigidContacts, r: BodyRows, i: number, dl: number, o: number): void {
+  const ia = c.a[i];
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  c.lambdaN[i] += dl;
+  const imA = r.invMass[ia];
+  r.x[ia] -= imA * dl * nx;
+  r.y[ia] -= imA * dl * ny;
+  const iIA = r.invInertia[ia];
+  if (iIA !== 0) turn(r, ia, -iIA * pt[o + 2] * dl);
+  pushB(c, r, i, dl, nx, ny, pt[o + 3]);
+}
+
+/** The first time point i acts in a step: remember its approach speed (and its partner's) for restitution. */
+function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
+  c.touched[i] = 1;
+  if (c.restitution[i] > 0 && c.approach[i] !== c.approach[i]) {
+    c.approach[i] = pointNormalSpeed(c, r, i);
+    // A manifold's two points bounce together (a box landing flat may touch with one corner a substep earlier).
+    const j = c.pair[i] === 1 ? i + 1 : i > 0 && c.pair[i - 1] === 1 ? i - 1 : -1;
+    if (j >= 0 && c.approach[j] !== c.approach[j]) c.approach[j] = pointNormalSpeed(c, r, j);
+  }
+}
+
+/**
+ * One Gauss–Seidel sweep over the points: the normal correction, then friction. The two points of a manifold
+ * between rigid bodies (or a rigid body and the world) take their normal corrections together by a 2×2 solve
+ * (Box2D's block solver, on positions): one after the other, a deep first point would turn the body about the
+ * second and throw it sideways.
+ */
+export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
+  for (let i = 0, n = c.count; i < n; i++) {
+    if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
+      solvePair(c, r, i);
+      friction(c, r, i);
+      friction(c, r, i + 1);
+      i++;
+      continue;
+    }
+    measure(c, r, i, 0);
+    const d = pt[0];
+    if (d <= 0 || pt[1] === 0) continue;
+    if (c.touched[i] === 0) firstTouch(c, r, i);
+    pushApart(c, r, i, d / pt[1], 0);
+    friction(c, r, i);
+  }
+}
+
+function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
+  measure(c, r, i, 0);
+  measure(c, r, i + 1, 4);
+  const d0 = pt[0];
+  const d1 = pt[4];
+  if (d0 <= 0 && d1 <= 0) return;
+  if (d0 > 0 && c.touched[i] === 0) firstTouch(c, r, i);
+  if (d1 > 0 && c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
+  if (d0 > 0 && d1 > 0) {
+    const ia = c.a[i];
+    const ib = c.b[i];
+    const k00 = pt[1];
+    const k11 = pt[5];
+    let k01 = r.invMass[ia] + r.invInertia[ia] * pt[2] * pt[6];
+    if (ib >= 0) k01 += r.invMass[ib] + r.invInertia[ib] * pt[3] * pt[7];
+    const det = k00 * k11 - k01 * k01;
+    if (det > 1e-9 * k00 * k11) {
+      const l0 = (k11 * d0 - k01 * d1) / det;
+      const l1 = (k00 * d1 - k01 * d0) / det;
+      if (l0 >= 0 && l1 >= 0) {
+        pushApart(c, r, i, l0, 0);
+        pushApart(c, r, i + 1, l1, 4);
+        return;
+      }
+    }
+  }
+  // One point overlapping, or the block would pull: one after the other.
+  if (d0 > 0 && pt[1] > 0) pushApart(c, r, i, d0 / pt[1], 0);
+  measure(c, r, i + 1, 4);
+  if (pt[4] > 0 && pt[5] > 0) {
+    if (c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
+    pushApart(c, r, i + 1, pt[4] / pt[5], 4);
+  }
+}
+
+/**
+ * Friction of point i (after its normal correction this sweep): the material points' tangential drift since the
+ * step began is undone up to Coulomb's μ·λn; what cannot be held slides, and the anchors follow (slip).
+ */
+function friction(c: RigidContacts, r: BodyRows, i: number): void {
+  const mu = c.friction[i];
+  const ln = c.lambdaN[i];
+  if (mu === 0 || ln <= 0) return;
+  const ia = c.a[i];
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  const cs = r.rc[ia];
+  const sn = r.rs[ia];
+  const mAx = cs * c.rAx[i] - sn * c.rAy[i];
+  const mAy = sn * c.rAx[i] + cs * c.rAy[i];
+  loadB(c, r, i, nx, ny);
+  const tx = -ny;
+  const ty = nx;
+  const drift = (r.x[ia] + mAx - side[4]) * tx + (r.y[ia] + mAy - side[5]) * ty - c.slip[i];
+  const rtA = mAx * ty - mAy * tx;
+  const rtB = side[6] * ty - side[7] * tx;
+  const imA = r.invMass[ia];
+  const iIA = r.invInertia[ia];
+  const wt = imA + iIA * rtA * rtA + weightB(c, r, i, rtB);
+  if (wt === 0) return;
+  const want = drift / wt;
+  const limit = mu * ln;
+  const before = c.lambdaT[i];
+  let total = before + want;
+  if (total > limit) total = limit;
+  else if (total < -limit) total = -limit;
+  const dt = total - before;
+  c.lambdaT[i] = total;
+  c.slip[i] += (want - dt) * wt;
+  r.x[ia] -= imA * dt * tx;
+  r.y[ia] -= imA * dt * ty;
+  if (iIA !== 0) turn(r, ia, -iIA * rtA * dt);
+  pushB(c, r, i, dt, tx, ty, rtB);
+}
+
+/** Normal speed of point i's B side relative to its A side now (negative when approaching). */
+function pointNormalSpeed(c: RigidContacts, r: BodyRows, i: number): number {
+  const ia = c.a[i];
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  const ra = c.radA[i];
+  const cs = r.rc[ia];
+  const sn = r.rs[ia];
+  const lAx = ra > 0 ? nx * ra : cs * c.rAx[i] - sn * c.rAy[i];
+  const lAy = ra > 0 ? ny * ra : sn * c.rAx[i] + cs * c.rAy[i];
+  loadB(c, r, i, nx, ny);
+  return relativeNormalSpeed(c, r, i, ia, lAx, lAy, nx, ny);
 }
 
 /** Normal speed of B's contact point relative to A's (negative when approaching). */
@@ -291,10 +397,9 @@ const vel = new Float64Array(14);
 
 /**
  * Normal speed, weight and levers of point i into vel[o..o+5], and with `withTarget` its target speed into vel[o+6]
- * (which uses up a pending bounce); false when the point did not act this substep.
+ * (which uses up a pending bounce).
  */
-function loadVelocity(c: RigidContacts, r: BodyRows, i: number, o: number, withTarget: boolean): boolean {
-  if (c.lambdaN[i] <= 0) return false;
+function loadVelocity(c: RigidContacts, r: BodyRows, i: number, o: number, withTarget: boolean): void {
   const ia = c.a[i];
   const nx = c.nx[i];
   const ny = c.ny[i];
@@ -312,7 +417,7 @@ function loadVelocity(c: RigidContacts, r: BodyRows, i: number, o: number, withT
   vel[o + 3] = rnB;
   vel[o + 4] = lAx;
   vel[o + 5] = lAy;
-  if (!withTarget) return true;
+  if (!withTarget) return;
   // Target normal speed: bounce once per impact (approach recorded when the point first acted), else stop.
   let target = 0;
   const e = c.restitution[i];
@@ -322,7 +427,6 @@ function loadVelocity(c: RigidContacts, r: BodyRows, i: number, o: number, withT
     c.approach[i] = 0;
   }
   vel[o + 6] = target;
-  return true;
 }
 
 /** Applies a normal impulse P (per unit mass weights) to point i's two sides. */
@@ -358,41 +462,55 @@ function applyNormalImpulse(c: RigidContacts, r: BodyRows, i: number, P: number,
  * (−e × approach for an impact, 0 otherwise), so pushing an overlap out does not leave bodies flying apart at
  * depth / h. The two points of a manifold between two rigid bodies (or a rigid body and the world) are solved
  * together by a 2×2 system: solved one after the other, the second would undo part of the first through the
- * rotation they share, and a box dropped flat would bounce crooked.
+ * rotation they share, and a box dropped flat would bounce crooked. A point whose partner acted while it was itself
+ * still within a substep's approach of touching (a box landing flat by a hair's tilt) joins it.
  */
-export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows): void {
+export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
   const n = c.count;
   for (let i = 0; i < n; i++) {
-    const first = loadVelocity(c, r, i, 0, true);
     if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
-      const second = loadVelocity(c, r, i + 1, 7, true);
-      if (first && second) {
-        // K P = target − vn, K_jk = 1/mA + 1/mB + (rAj × n)(rAk × n)/IA + (rBj × n)(rBk × n)/IB.
-        const ia = c.a[i];
-        const ib = c.b[i];
-        const k00 = vel[1];
-        const k11 = vel[8];
-        let k01 = r.invMass[ia] + r.invInertia[ia] * vel[2] * vel[9];
-        if (ib >= 0) k01 += r.invMass[ib] + r.invInertia[ib] * vel[3] * vel[10];
-        const b0 = vel[6] - vel[0];
-        const b1 = vel[13] - vel[7];
-        const det = k00 * k11 - k01 * k01;
-        if (det > 1e-9 * k00 * k11) {
-          const P0 = (k11 * b0 - k01 * b1) / det;
-          const P1 = (k00 * b1 - k01 * b0) / det;
-          applyNormalImpulse(c, r, i, P0, vel[2], vel[3]);
-          applyNormalImpulse(c, r, i + 1, P1, vel[9], vel[10]);
-          i++;
-          continue;
-        }
-      }
-      // One point acting (or the two are dependent): one after the other, the second's speed measured again after
-      // the first's impulse (its target stays).
-      if (first && vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
-      if (second && loadVelocity(c, r, i + 1, 7, false) && vel[8] > 0) applyNormalImpulse(c, r, i + 1, (vel[13] - vel[7]) / vel[8], vel[9], vel[10]);
+      solvePairVelocity(c, r, i, h);
       i++;
       continue;
     }
-    if (first && vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
+    if (c.lambdaN[i] <= 0) continue;
+    loadVelocity(c, r, i, 0, true);
+    if (vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
+  }
+}
+
+function solvePairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number): void {
+  const acted0 = c.lambdaN[i] > 0;
+  const acted1 = c.lambdaN[i + 1] > 0;
+  if (!acted0 && !acted1) return;
+  loadVelocity(c, r, i, 0, false);
+  loadVelocity(c, r, i + 1, 7, false);
+  const use0 = acted0 || (vel[0] < 0 && c.gap[i] > 2 * vel[0] * h);
+  const use1 = acted1 || (vel[7] < 0 && c.gap[i + 1] > 2 * vel[7] * h);
+  if (use0) loadVelocity(c, r, i, 0, true);
+  if (use1) loadVelocity(c, r, i + 1, 7, true);
+  if (use0 && use1) {
+    // K P = target − vn, K_jk = 1/mA + 1/mB + (rAj × n)(rAk × n)/IA + (rBj × n)(rBk × n)/IB.
+    const ia = c.a[i];
+    const ib = c.b[i];
+    const k00 = vel[1];
+    const k11 = vel[8];
+    let k01 = r.invMass[ia] + r.invInertia[ia] * vel[2] * vel[9];
+    if (ib >= 0) k01 += r.invMass[ib] + r.invInertia[ib] * vel[3] * vel[10];
+    const b0 = vel[6] - vel[0];
+    const b1 = vel[13] - vel[7];
+    const det = k00 * k11 - k01 * k01;
+    if (det > 1e-9 * k00 * k11) {
+      applyNormalImpulse(c, r, i, (k11 * b0 - k01 * b1) / det, vel[2], vel[3]);
+      applyNormalImpulse(c, r, i + 1, (k00 * b1 - k01 * b0) / det, vel[9], vel[10]);
+      return;
+    }
+  }
+  // One point (or two dependent ones): one after the other, the second's speed measured again after the first.
+  if (use0 && vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
+  if (use1) {
+    const target = vel[13];
+    loadVelocity(c, r, i + 1, 7, false);
+    if (vel[8] > 0) applyNormalImpulse(c, r, i + 1, (target - vel[7]) / vel[8], vel[9], vel[10]);
   }
 }
