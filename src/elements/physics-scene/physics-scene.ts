@@ -7,7 +7,7 @@ import type { DrawHook } from '../../render/renderer.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import { CollisionEventsController } from './collisions.js';
-import { changedParams, ConfigController, type SceneConfig } from './config.js';
+import { changedParams, ConfigController } from './config.js';
 import { firePhysicsEvent } from './events.js';
 import { MarkupSync } from './markup.js';
 import { PointerDragController } from './pointer.js';
@@ -95,10 +95,13 @@ export class PhysicsSceneElement extends LitElement {
 
   /** The loading message is shown. */
   @state() private loading = true;
+
+  /** @internal What is wrong: physics-error, warnings, the error box. */
   private readonly problems = new ProblemsController(this, {
     box: () => this.renderRoot?.querySelector<HTMLElement>('.error') ?? null,
     elementOf: (key) => this.markup.elementOf(key),
   });
+  /** @internal The engine from start to stop, and ready. */
   private readonly session: EngineSession = new EngineSession(this, {
     connect: () => this.connect(),
     scene: {
@@ -121,23 +124,27 @@ export class PhysicsSceneElement extends LitElement {
     failed: (message) => this.problems.report(this, '', '', message),
     refused: (e) => this.problems.refused(e),
   });
+  /** @internal The scene's attributes, checked once per update. */
   private readonly settings = new ConfigController(this, { problems: this.problems });
+  /** @internal The canvas. */
   private readonly stage = new StageController(this, {
     source: () => this.session.shown,
-    view: () => ({ ...this.config, debug: this.debug, hook: this.drawHook }),
+    view: () => ({ ...this.settings.config, debug: this.debug, hook: this.drawHook }),
   });
+  /** @internal Child elements → engine bodies and links. */
   private readonly markup = new MarkupSync({
     container: () => this.bodyContainer,
     engine: this.session,
     problems: this.problems,
     styles: this.stage,
   });
+  /** @internal Snapshots, the stall probe, restarts. */
   private readonly recovery: RecoveryController = new RecoveryController(this, {
     session: this.session,
     connect: () => this.connect(),
     scene: {
       describe: () => this.describe(),
-      limits: () => ({ maxRestarts: this.config.maxRestarts, timestep: this.config.timestep, callTimeout: PhysicsSceneElement.callTimeout }),
+      limits: () => ({ ...this.settings.config, callTimeout: PhysicsSceneElement.callTimeout }),
       grab: () => this.pointer.grab,
       lost: () => {
         this.pointer.cancel();
@@ -148,11 +155,14 @@ export class PhysicsSceneElement extends LitElement {
       refused: (e) => this.problems.refused(e),
     },
   });
+  /** @internal On screen, page visible, reduced motion, Space. */
   private readonly visibility = new VisibilityController(this, { changed: () => this.syncRunning(), label: () => this.defaultLabel });
+  /** @internal Drag and throw. */
   private readonly pointer = new PointerDragController(this, {
     engine: () => this.session.engine,
     toWorld: (x, y) => this.clientToWorld(x, y),
   });
+  /** @internal physics-collision events. */
   private readonly collisions = new CollisionEventsController(this, {
     always: () => this.collisionEvents,
     elementOf: (key) => this.markup.elementOf(key),
@@ -371,7 +381,8 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   protected override updated(changed: PropertyValues): void {
-    this.style.setProperty('--physics-scene-aspect', `${this.config.width} / ${this.config.height}`);
+    const { width, height } = this.settings.config;
+    this.style.setProperty('--physics-scene-aspect', `${width} / ${height}`);
     if (changed.has('worker') && changed.get('worker') !== undefined && this.session.engine) {
       this.stop();
       void this.session.start();
@@ -384,10 +395,6 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   // ---- wiring ------------------------------------------------------------------------------------------------
-
-  private get config(): SceneConfig {
-    return this.settings.config;
-  }
 
   private params(): HostParams {
     return this.settings.params(this.collisions.wanted);
@@ -403,7 +410,7 @@ export class PhysicsSceneElement extends LitElement {
   /** Starts an engine whose events, complaints and death reach the controllers. */
   private connect(): Promise<Engine> {
     return startEngine({
-      worker: this.config.worker,
+      worker: this.settings.config.worker,
       timeout: PhysicsSceneElement.callTimeout,
       createWorker: PhysicsSceneElement.workerFactory ?? undefined,
       onEvents: this.collisions.dispatch,
