@@ -2,23 +2,24 @@
 // boundary only while someone listens.
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsCollisionDetail, PhysicsSceneElement } from '../../src/index.js';
-import { mount, stepUntil, unmount, waitFor } from './helpers.js';
+import { mount, stepUntil, unmount } from './helpers.js';
 
 describe('<physics-scene> collision events', () => {
   let scene: PhysicsSceneElement | null = null;
   afterEach(() => unmount(scene));
 
   it('fires physics-collision with the two body elements, the normal and the depth, only while listened to', async () => {
-    scene = await mount('width="10" height="10" gravity="0 20"', `
+    // Paused until the listener is in place: a running crate could land before the engine was asked for events.
+    scene = await mount('width="10" height="10" gravity="0 20" paused', `
       <physics-box id="floor" x="5" y="9.5" width="10" height="1" static></physics-box>
       <physics-box id="crate" x="5" y="6" width="1" height="1"></physics-box>`);
     const quiet = await scene.diagnostics();
     expect([quiet.events, quiet.eventsSent]).to.deep.equal([false, 0]);
     const seen: PhysicsCollisionDetail[] = [];
-    const listener = (e: Event) => seen.push((e as CustomEvent<PhysicsCollisionDetail>).detail);
+    const listener = (e: CustomEvent<PhysicsCollisionDetail>) => seen.push(e.detail);
     scene.addEventListener('physics-collision', listener);
     expect((await scene.diagnostics()).events).to.equal(true);
-    await waitFor(() => seen.length > 0, 'a collision');
+    await stepUntil(scene, () => seen.length > 0, 'a collision');
     const floor = scene.querySelector('#floor');
     const crate = scene.querySelector('#crate');
     const hit = seen[0];

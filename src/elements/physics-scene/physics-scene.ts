@@ -427,6 +427,7 @@ export class PhysicsSceneElement extends LitElement {
     if (this.session.setRunning(running)) this.runningChanged(running);
   }
 
+  /** The engine is ended (the scene left the page, or its worker attribute changed): each concern back to its start. */
   private stop(): void {
     this.session.stop();
     this.recovery.reset();
