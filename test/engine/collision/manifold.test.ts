@@ -84,6 +84,40 @@ describe('contact manifold', () => {
     expect([...m.alpha].map((a) => Math.round(a * 1e12) / 1e12).sort()).to.deep.equal([0.4, 0.6]);
   });
 
+  it('near-parallel faces: whichever face is the reference, the contacts are the same corners on the same edge', () => {
+    // A plank resting 0.2 deep on a narrow post, tilted by ±θ: level, the faces tie and the post's top is the
+    // reference; tilted either way the plank's bottom is the face of least penetration. From one step to the next the
+    // reference face switches, but the contacts must not jump: the post's two top corners on the plank's bottom edge.
+    const post = polygon([0, 0, 1, 0, 1, 1, 0, 1]);
+    const plankAt = (theta: number) => {
+      const c = Math.cos(theta);
+      const s = Math.sin(theta);
+      return polygon([[-2.5, -0.5], [2.5, -0.5], [2.5, 0.5], [-2.5, 0.5]].flatMap(([x, y]) => [0.5 + x * c - y * s, 1.3 + x * s + y * c]));
+    };
+    const level = new Manifold();
+    expect(polygonManifold(post, plankAt(0), level)).to.equal(true);
+    const m = new Manifold();
+    const references = new Set<string>();
+    for (const theta of [0, -1e-6, -1e-9, -1e-12, 1e-12, 1e-9, 1e-6]) {
+      const plank = plankAt(theta);
+      expect(polygonManifold(post, plank, m)).to.equal(true);
+      expect(m.count).to.equal(2);
+      references.add(m.normalX === 0 ? 'post' : 'plank');
+      for (let k = 0; k < 2; k++) {
+        // The same feature (the two may come in the other order), with its point, depth and α moved by the tilt only.
+        const j = m.vertex[0] === level.vertex[k] ? 0 : 1;
+        expect([m.incident[j], m.vertex[j], m.edge[j]]).to.deep.equal([level.incident[k], level.vertex[k], level.edge[k]]);
+        expect(m.pointX[j]).to.be.closeTo(level.pointX[k], 3 * Math.abs(theta) + 1e-12);
+        expect(m.pointY[j]).to.be.closeTo(level.pointY[k], 3 * Math.abs(theta) + 1e-12);
+        expect(m.depth[j]).to.be.closeTo(level.depth[k], 3 * Math.abs(theta) + 1e-12);
+        expect(m.alpha[j]).to.be.closeTo(level.alpha[k], 3 * Math.abs(theta) + 1e-12);
+      }
+      expect(checkFeatures(post, plank, m, 1e-12)).to.equal('');
+    }
+    // Both faces did serve as the reference (the post's normal is exactly (0, 1), the plank's is tilted).
+    expect([...references].sort()).to.deep.equal(['plank', 'post']);
+  });
+
   it('with a margin, reports speculative contacts of shapes a little apart (negative depth)', () => {
     const a = polygon([0, 0, 1, 0, 1, 1, 0, 1]);
     const b = polygon([0, 1.05, 1, 1.05, 1, 2, 0, 2]);
