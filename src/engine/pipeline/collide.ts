@@ -25,6 +25,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   ctx.rigidNarrowPhase.run(ctx.pairs, c, shapes, ctx.particles, ctx.motion, slop, ctx.rigidContacts);
   const bounds = ctx.settings.bounds;
   if (bounds && ctx.rigidCount > 0) boundsContacts(bounds, shapes, c, ctx.particles, ctx.motion, slop, ctx.settings.boundsFriction, ctx.rigidContacts);
+  ctx.rigidAnchors.restore(ctx.rigidContacts, slop);
   ctx.anchors.restore(ctx.contacts);
   recordApproachSpeeds(ctx.contacts, ctx.particles);
 }

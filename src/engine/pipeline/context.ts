@@ -12,7 +12,7 @@ import { Sleep } from './sleep.js';
 import { CollisionEvents, EventTracker } from './events.js';
 import { shouldCollide } from './collide.js';
 import { RigidNarrowPhase } from './rigid-narrowphase.js';
-import { RigidContacts } from '../rigid/contacts.js';
+import { RigidAnchorCache, RigidContacts } from '../rigid/contacts.js';
 import { RigidShapes } from '../rigid/shapes.js';
 
 /**
@@ -48,9 +48,13 @@ export class StepContext {
   readonly rigidShapes = new RigidShapes();
   readonly rigidContacts = new RigidContacts();
   readonly rigidNarrowPhase = new RigidNarrowPhase();
+  /** Friction anchors of last step's rigid contact points, by feature. */
+  readonly rigidAnchors = new RigidAnchorCache();
   /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */
   rigidRows = new Int32Array(16);
   rigidCount = 0;
+  /** Relaxation sweeps so far: rigid contacts alternate their order with its parity. */
+  sweep = 0;
   kinematicRows = new Int32Array(16);
   kinematicCount = 0;
 

@@ -6,7 +6,7 @@ import type { Bounds } from '../bounds.js';
 import { ColliderKind, type Colliders } from './colliders.js';
 import type { PairList } from './broadphase.js';
 import { collideCircles, collidePolygonCircle, collidePolygons, ContactManifold, type PolygonRef } from '../rigid/collide.js';
-import type { RigidContacts } from '../rigid/contacts.js';
+import { anchorKey, type RigidContacts } from '../rigid/contacts.js';
 import { RigidShapeKind, type RigidShapes } from '../rigid/shapes.js';
 import { grown } from '../table.js';
 
@@ -158,7 +158,7 @@ export class RigidNarrowPhase {
       const e = m.edgeB[k];
       const i0 = vs[start + e];
       const i1 = vs[start + (e + 1 === count ? 0 : e + 1)];
-      this.point(p, k, ia, radA, 0, m.alphaB[k], out);
+      this.point(p, k, ia, radA, 0, m.alphaB[k], 0, out);
       out.add(ia, i0, i1, a, b, m.count === 2 && k === 0 ? 1 : 0);
     }
   }
@@ -167,7 +167,7 @@ export class RigidNarrowPhase {
   private emit(p: ParticleStore, ia: number, ib: number, a: number, b: number, radA: number, radB: number, out: RigidContacts): void {
     const m = this.manifold;
     for (let k = 0; k < m.count; k++) {
-      this.point(p, k, ia, radA, radB, 0, out);
+      this.point(p, k, ia, radA, radB, 0, anchorKey(a, b, m.feature[k]), out);
       // B's anchor in B's frame (a particle's frame is the world's: cos 1, sin 0).
       const f = out.next;
       const dx = m.pBx[k] - p.x[ib];
@@ -181,7 +181,7 @@ export class RigidNarrowPhase {
   }
 
   /** Point k's reals shared by every kind of B into out.next: normal, A's anchor in A's frame, radii, α, material, depth. */
-  private point(p: ParticleStore, k: number, ia: number, radA: number, radB: number, alpha: number, out: RigidContacts): void {
+  private point(p: ParticleStore, k: number, ia: number, radA: number, radB: number, alpha: number, key: number, out: RigidContacts): void {
     const m = this.manifold;
     const f = out.next;
     const dx = m.pAx[k] - p.x[ia];
@@ -200,6 +200,7 @@ export class RigidNarrowPhase {
     f[9] = this.pair[1];
     f[10] = this.pair[2];
     f[11] = m.depth[k];
+    f[12] = key;
   }
 }
 
@@ -228,13 +229,13 @@ export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders
       if (shapes.kind[s] === RigidShapeKind.Circle) {
         const r = shapes.radius[s];
         const depth = p.x[i] * nx + p.y[i] * ny + r - level;
-        if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, r * nx, r * ny, r, depth, friction, c.restitution[s]);
+        if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, r * nx, r * ny, r, depth, friction, c.restitution[s], wall);
         continue;
       }
       for (let q = shapes.partStart[s], qEnd = q + shapes.partCount[s]; q < qEnd; q++) {
         for (let v = shapes.partVertexStart[q], vEnd = v + shapes.partVertexCount[q]; v < vEnd; v++) {
           const depth = shapes.wx[v] * nx + shapes.wy[v] * ny - level;
-          if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, shapes.wx[v] - p.x[i], shapes.wy[v] - p.y[i], 0, depth, friction, c.restitution[s]);
+          if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, shapes.wx[v] - p.x[i], shapes.wy[v] - p.y[i], 0, depth, friction, c.restitution[s], ((v - shapes.partVertexStart[shapes.partStart[s]]) & 8191) * 4 + wall);
         }
       }
       // Two points on one wall (a box lying on the floor) are solved together in the velocity pass.
@@ -247,7 +248,7 @@ export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders
  * One point of a body (row i, slot s) against a wall with normal n (from the body into the wall): A's point is at
  * world offset (ox, oy) from its centre, `depth` past the wall; the wall's point is A's pushed back onto the wall.
  */
-function wallPoint(out: RigidContacts, p: ParticleStore, i: number, s: number, nx: number, ny: number, ox: number, oy: number, radA: number, depth: number, friction: number, restitution: number): void {
+function wallPoint(out: RigidContacts, p: ParticleStore, i: number, s: number, nx: number, ny: number, ox: number, oy: number, radA: number, depth: number, friction: number, restitution: number, feature: number): void {
   const f = out.next;
   const ca = p.rc[i];
   const sa = p.rs[i];
@@ -263,5 +264,6 @@ function wallPoint(out: RigidContacts, p: ParticleStore, i: number, s: number, n
   f[9] = friction;
   f[10] = restitution;
   f[11] = depth;
+  f[12] = anchorKey(s, -1, feature);
   out.add(i, -1, -1, s, -1, 0);
 }

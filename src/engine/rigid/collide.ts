@@ -21,6 +21,11 @@ export class ContactManifold {
   /** B's edge (vertex k to k + 1) the point lies on and the fraction along it; edge −1 for a circle. */
   edgeB = new Int32Array(2);
   alphaB = new Float64Array(2);
+  /**
+   * Which features made each point (reference face, incident edge, which end of the clip, which side was the
+   * reference), the same from step to step while the bodies keep touching the same way: friction anchors persist by it.
+   */
+  feature = new Int32Array(2);
 }
 
 /** A convex polygon as views into vertex and normal arrays: vertices [start, start + count). */
@@ -159,6 +164,7 @@ function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, margin: nu
     const sep = (wx - v1x) * nx + (wy - v1y) * ny;
     if (sep > margin) continue;
     const j = out.count++;
+    out.feature[j] = (flip ? 32768 : 0) + (e & 127) * 256 + (inc & 127) * 2 + k;
     // Q: the incident point projected onto the reference face.
     const qx = wx - sep * nx;
     const qy = wy - sep * ny;
@@ -245,6 +251,7 @@ export function collidePolygonCircle(P: PolygonRef, cx: number, cy: number, r: n
   const sy = cy - r * ny;
   out.count = 1;
   out.depth[0] = depth;
+  out.feature[0] = edge * 2 + (alpha === 0 || alpha === 1 ? 1 : 0);
   if (circleIsA) {
     out.nx = -nx;
     out.ny = -ny;
@@ -288,5 +295,6 @@ export function collideCircles(ax: number, ay: number, ra: number, bx: number, b
   out.pBy[0] = by - rb * ny;
   out.edgeB[0] = -1;
   out.alphaB[0] = 0;
+  out.feature[0] = 0;
   return true;
 }

@@ -1,4 +1,5 @@
 import { Table } from '../table.js';
+import { KeyTable } from '../pipeline/key-table.js';
 import { turn, type BodyRows } from './rows.js';
 
 /**
@@ -23,7 +24,7 @@ import { turn, type BodyRows } from './rows.js';
 export class RigidContacts extends Table {
   readonly columns = [
     'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN', 'lambdaT',
-    'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap',
+    'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
   ] as const;
   a = new Int32Array(16);
   b = new Int32Array(16);
@@ -59,13 +60,18 @@ export class RigidContacts extends Table {
   depth = new Float64Array(16);
   /** Overlap at the last position sweep, before its correction (negative: apart). */
   gap = new Float64Array(16);
+  /** Normal and tangential corrections summed over the step so far (friction's Coulomb limit compares these). */
+  impulseN = new Float64Array(16);
+  impulseT = new Float64Array(16);
+  /** Which bodies and features made the point (the same while they keep touching the same way); see anchorKey. */
+  feature = new Float64Array(16);
 
   /**
    * The next point's reals, written by the caller before add(): nx, ny, rAx, rAy, rBx, rBy, radA, radB, alpha,
-   * friction, restitution, depth. (An array rather than arguments: doubles passed to a call that is not inlined are
+   * friction, restitution, depth, feature key. (An array rather than arguments: doubles passed to a call that is not inlined are
    * boxed, and the narrow phase adds thousands of points a step.)
    */
-  readonly next = new Float64Array(12);
+  readonly next = new Float64Array(13);
 
   add(a: number, b: number, b2: number, bodyA: number, bodyB: number, pair: number): void {
     if (this.count === this.a.length) this.reserve(1);
@@ -89,6 +95,8 @@ export class RigidContacts extends Table {
     this.allowance[i] = f[11] > 0 ? f[11] : 0;
     this.lambdaN[i] = 0;
     this.lambdaT[i] = 0;
+    this.impulseN[i] = 0;
+    this.impulseT[i] = 0;
     this.slip[i] = 0;
     this.approach[i] = NaN;
     this.touched[i] = 0;
@@ -96,6 +104,7 @@ export class RigidContacts extends Table {
     this.bodyA[i] = bodyA;
     this.bodyB[i] = bodyB;
     this.gap[i] = f[11];
+    this.feature[i] = f[12];
   }
 
   /** Start of a substep: no correction yet; old overlaps may shrink by up to `maxPush` more. */
@@ -236,6 +245,7 @@ function pushApart(c: RigidContacts, r: BodyRows, i: number, dl: number, o: numb
   const nx = c.nx[i];
   const ny = c.ny[i];
   c.lambdaN[i] += dl;
+  c.impulseN[i] += dl;
   const imA = r.invMass[ia];
   r.x[ia] -= imA * dl * nx;
   r.y[ia] -= imA * dl * ny;
@@ -261,22 +271,36 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
  * (Box2D's block solver, on positions): one after the other, a deep first point would turn the body about the
  * second and throw it sideways.
  */
-export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
-  for (let i = 0, n = c.count; i < n; i++) {
+export function solveRigidContacts(c: RigidContacts, r: BodyRows, backward: boolean): void {
+  const n = c.count;
+  // Alternate sweeps run in opposite orders (symmetric Gauss–Seidel): one order every time would bias a pile
+  // towards the side solved last, and a pyramid would creep sideways.
+  if (backward) {
+    for (let i = n - 1; i >= 0; i--) {
+      if (i > 0 && c.pair[i - 1] === 1 && c.b2[i - 1] < 0 && c.b2[i] < 0) {
+        solvePair(c, r, i - 1);
+        frictionPair(c, r, i - 1);
+        i--;
+      } else solvePoint(c, r, i);
+    }
+    return;
+  }
+  for (let i = 0; i < n; i++) {
     if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
       solvePair(c, r, i);
-      friction(c, r, i);
-      friction(c, r, i + 1);
+      frictionPair(c, r, i);
       i++;
-      continue;
-    }
-    measure(c, r, i, 0);
-    const d = pt[0];
-    if (d <= 0 || pt[1] === 0) continue;
-    if (c.touched[i] === 0) firstTouch(c, r, i);
-    pushApart(c, r, i, d / pt[1], 0);
-    friction(c, r, i);
+    } else solvePoint(c, r, i);
   }
+}
+
+function solvePoint(c: RigidContacts, r: BodyRows, i: number): void {
+  measure(c, r, i, 0);
+  const d = pt[0];
+  if (d <= 0 || pt[1] === 0) return;
+  if (c.touched[i] === 0) firstTouch(c, r, i);
+  pushApart(c, r, i, d / pt[1], 0);
+  friction(c, r, i);
 }
 
 function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
@@ -314,14 +338,11 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
   }
 }
 
-/**
- * Friction of point i (after its normal correction this sweep): the material points' tangential drift since the
- * step began is undone up to Coulomb's μ·λn; what cannot be held slides, and the anchors follow (slip).
- */
-function friction(c: RigidContacts, r: BodyRows, i: number): void {
-  const mu = c.friction[i];
-  const ln = c.lambdaN[i];
-  if (mu === 0 || ln <= 0) return;
+/** Friction of the point being solved: [drift, wt, rtA, rtB] per point, at offset 0 (point i) and 4 (its partner). */
+const fr = new Float64Array(8);
+
+/** Point i's tangential drift since the step began (less what has slid), weight and levers, into fr[o..o+3]. */
+function measureFriction(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   const ia = c.a[i];
   const nx = c.nx[i];
   const ny = c.ny[i];
@@ -332,26 +353,87 @@ function friction(c: RigidContacts, r: BodyRows, i: number): void {
   loadB(c, r, i, nx, ny);
   const tx = -ny;
   const ty = nx;
-  const drift = (r.x[ia] + mAx - side[4]) * tx + (r.y[ia] + mAy - side[5]) * ty - c.slip[i];
   const rtA = mAx * ty - mAy * tx;
   const rtB = side[6] * ty - side[7] * tx;
+  fr[o] = (r.x[ia] + mAx - side[4]) * tx + (r.y[ia] + mAy - side[5]) * ty - c.slip[i];
+  fr[o + 1] = r.invMass[ia] + r.invInertia[ia] * rtA * rtA + weightB(c, r, i, rtB);
+  fr[o + 2] = rtA;
+  fr[o + 3] = rtB;
+}
+
+/** Moves point i's sides by dt along the tangent (A back, B forward; levers from fr[o..]). */
+function pushAlong(c: RigidContacts, r: BodyRows, i: number, dt: number, o: number): void {
+  const ia = c.a[i];
+  const tx = -c.ny[i];
+  const ty = c.nx[i];
+  c.lambdaT[i] += dt;
   const imA = r.invMass[ia];
+  r.x[ia] -= imA * dt * tx;
+  r.y[ia] -= imA * dt * ty;
   const iIA = r.invInertia[ia];
-  const wt = imA + iIA * rtA * rtA + weightB(c, r, i, rtB);
-  if (wt === 0) return;
-  const want = drift / wt;
-  const limit = mu * ln;
-  const before = c.lambdaT[i];
+  if (iIA !== 0) turn(r, ia, -iIA * fr[o + 2] * dt);
+  pushB(c, r, i, dt, tx, ty, fr[o + 3]);
+}
+
+/**
+ * Friction of point i (after its normal correction this sweep): the material points' tangential drift since the
+ * step began is undone within Coulomb's limit, μ times the normal correction of the step so far; what cannot be
+ * held slides, and the anchors follow (slip).
+ */
+function friction(c: RigidContacts, r: BodyRows, i: number): void {
+  const mu = c.friction[i];
+  if (mu === 0 || c.lambdaN[i] <= 0) return;
+  measureFriction(c, r, i, 0);
+  if (fr[1] === 0) return;
+  holdWithin(c, r, i, fr[0] / fr[1], fr[1], 0);
+}
+
+/** Applies the tangential correction `want` to point i as far as Coulomb allows; the rest becomes slip. */
+function holdWithin(c: RigidContacts, r: BodyRows, i: number, want: number, wt: number, o: number): void {
+  const limit = c.friction[i] * c.impulseN[i];
+  const before = c.impulseT[i];
   let total = before + want;
   if (total > limit) total = limit;
   else if (total < -limit) total = -limit;
   const dt = total - before;
-  c.lambdaT[i] = total;
+  c.impulseT[i] = total;
   c.slip[i] += (want - dt) * wt;
-  r.x[ia] -= imA * dt * tx;
-  r.y[ia] -= imA * dt * ty;
-  if (iIA !== 0) turn(r, ia, -iIA * rtA * dt);
-  pushB(c, r, i, dt, tx, ty, rtB);
+  pushAlong(c, r, i, dt, o);
+}
+
+/**
+ * Friction of a manifold's two points as one constraint at their midpoint, with Coulomb's limit on their summed
+ * normal corrections. In 2D the two points of a face contact slide together (a turn moves them along the normal, not
+ * along the face), so two tangential constraints would be one twice over: solved one after the other, the first
+ * would saturate while the second still held, record a slide that did not happen, and a pile would creep sideways
+ * step after step.
+ */
+function frictionPair(c: RigidContacts, r: BodyRows, i: number): void {
+  const mu = c.friction[i];
+  if (mu === 0 || (c.lambdaN[i] <= 0 && c.lambdaN[i + 1] <= 0)) return;
+  measureFriction(c, r, i, 0);
+  measureFriction(c, r, i + 1, 4);
+  // The midpoint's drift and levers are the points' means (cross products are linear in the lever).
+  // (Both points carry the manifold's slip, so the mean of their drifts is the midpoint's.)
+  const drift = 0.5 * (fr[0] + fr[4]);
+  const rtA = 0.5 * (fr[2] + fr[6]);
+  const rtB = 0.5 * (fr[3] + fr[7]);
+  const ia = c.a[i];
+  const wt = r.invMass[ia] + r.invInertia[ia] * rtA * rtA + weightB(c, r, i, rtB);
+  if (wt === 0) return;
+  const want = drift / wt;
+  const limit = mu * (c.impulseN[i] + c.impulseN[i + 1]);
+  const before = c.impulseT[i];
+  let total = before + want;
+  if (total > limit) total = limit;
+  else if (total < -limit) total = -limit;
+  const dt = total - before;
+  c.impulseT[i] = total;
+  c.slip[i] += (want - dt) * wt;
+  c.slip[i + 1] = c.slip[i];
+  fr[2] = rtA;
+  fr[3] = rtB;
+  pushAlong(c, r, i, dt, 0);
 }
 
 /** Normal speed of point i's B side relative to its A side now (negative when approaching). */
@@ -512,5 +594,95 @@ function solvePairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number):
     const target = vel[13];
     loadVelocity(c, r, i + 1, 7, false);
     if (vel[8] > 0) applyNormalImpulse(c, r, i + 1, (target - vel[7]) / vel[8], vel[9], vel[10]);
+  }
+}
+
+/** A point's feature key: its two body slots (B −1, the world, as 2²² − 1) and the manifold's feature bits. */
+export function anchorKey(bodyA: number, bodyB: number, feature: number): number {
+  return ((bodyA * 4194304 + (bodyB < 0 ? 4194303 : bodyB)) * 65536 + feature) % 9007199254740991;
+}
+
+/**
+ * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
+ * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
+ * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
+ * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
+ */
+export class RigidAnchorCache {
+  private readonly table = new KeyTable();
+  private rA = new Float64Array(64);
+  private rB = new Float64Array(64);
+
+  /** Remembers the anchors of every point that acted and of rigid, particle or world B (not particle edges). */
+  store(c: RigidContacts, r: BodyRows): void {
+    this.table.reset(c.count);
+    if (this.rA.length < 2 * c.count) {
+      this.rA = new Float64Array(4 * c.count);
+      this.rB = new Float64Array(4 * c.count);
+    }
+    let n = 0;
+    for (let i = 0; i < c.count; i++) {
+      if (!c.touched[i] || c.b2[i] >= 0) continue;
+      const slot = this.table.insert(c.feature[i], n);
+      if (this.table.values[slot] !== n) continue;
+      // B's anchor moves along the tangent by what slid this step: that much is no longer held back.
+      const tx = -c.ny[i];
+      const ty = c.nx[i];
+      const ib = c.b[i];
+      let bx = c.rBx[i];
+      let by = c.rBy[i];
+      if (ib >= 0) {
+        const cb = r.rc[ib];
+        const sb = r.rs[ib];
+        bx = r.x[ib] + cb * c.rBx[i] - sb * c.rBy[i];
+        by = r.y[ib] + sb * c.rBx[i] + cb * c.rBy[i];
+      }
+      bx += c.slip[i] * tx;
+      by += c.slip[i] * ty;
+      if (ib >= 0) {
+        const cb = r.rc[ib];
+        const sb = r.rs[ib];
+        const dx = bx - r.x[ib];
+        const dy = by - r.y[ib];
+        bx = cb * dx + sb * dy;
+        by = -sb * dx + cb * dy;
+      }
+      this.rA[2 * n] = c.rAx[i];
+      this.rA[2 * n + 1] = c.rAy[i];
+      this.rB[2 * n] = bx;
+      this.rB[2 * n + 1] = by;
+      n++;
+    }
+  }
+
+  /** Gives each new point the anchors its feature held last step, when they are within `reach` of the fresh ones. */
+  restore(c: RigidContacts, reach: number): void {
+    const reach2 = reach * reach;
+    for (let i = 0; i < c.count; i++) {
+      if (c.b2[i] >= 0) continue;
+      const slot = this.table.find(c.feature[i]);
+      if (slot < 0) continue;
+      const k = this.table.values[slot];
+      const dax = this.rA[2 * k] - c.rAx[i];
+      const day = this.rA[2 * k + 1] - c.rAy[i];
+      if (dax * dax + day * day > reach2) continue;
+      const dbx = this.rB[2 * k] - c.rBx[i];
+      const dby = this.rB[2 * k + 1] - c.rBy[i];
+      if (dbx * dbx + dby * dby > reach2) continue;
+      c.rAx[i] = this.rA[2 * k];
+      c.rAy[i] = this.rA[2 * k + 1];
+      c.rBx[i] = this.rB[2 * k];
+      c.rBy[i] = this.rB[2 * k + 1];
+    }
+  }
+
+  snapshot(): { keys: Float64Array; values: Float64Array; rA: Float64Array; rB: Float64Array } {
+    return { ...this.table.snapshot(), rA: this.rA.slice(), rB: this.rB.slice() };
+  }
+
+  restoreSnapshot(s: { keys: Float64Array; values: Float64Array; rA: Float64Array; rB: Float64Array }): void {
+    this.table.restore(s);
+    this.rA = s.rA.slice();
+    this.rB = s.rB.slice();
   }
 }

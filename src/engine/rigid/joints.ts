@@ -26,7 +26,7 @@ export type JointType = (typeof JOINT_KINDS)[number];
 export class Joints extends Table {
   readonly columns = [
     'kind', 'a', 'b', 'rAx', 'rAy', 'rBx', 'rBy', 'compliance', 'damping', 'refAngle', 'lower', 'upper', 'limit', 'motor', 'motorSpeed',
-    'maxMotorTorque', 'axisX', 'axisY', 'lambda', 'lambdaAngle', 'lambdaMotor', 'slot', 'bodyA', 'bodyB',
+    'maxMotorTorque', 'axisX', 'axisY', 'lambda', 'lambdaY', 'lambdaAngle', 'lambdaMotor', 'slot', 'bodyA', 'bodyB',
   ] as const;
   kind = new Uint8Array(16);
   a = new Int32Array(16);
@@ -52,7 +52,9 @@ export class Joints extends Table {
   /** Prismatic axis in A's frame (unit). */
   axisX = new Float64Array(16);
   axisY = new Float64Array(16);
+  /** Multipliers of this substep: distance (or the point's x) and the point's y, angle and motor. */
   lambda = new Float64Array(16);
+  lambdaY = new Float64Array(16);
   lambdaAngle = new Float64Array(16);
   lambdaMotor = new Float64Array(16);
   /** Constraint registry slot (the handle's), and the body slots of the two sides (−1: world). */
@@ -62,6 +64,7 @@ export class Joints extends Table {
 
   beginSubstep(): void {
     this.lambda.fill(0, 0, this.count);
+    this.lambdaY.fill(0, 0, this.count);
     this.lambdaAngle.fill(0, 0, this.count);
     this.lambdaMotor.fill(0, 0, this.count);
   }
@@ -130,6 +133,51 @@ function correct(j: Joints, r: BodyRows, i: number, c: number, nx: number, ny: n
   push(r, b, -dl, nx, ny, rnB);
 }
 
+/**
+ * Makes the two anchors meet: the 2×2 effective-mass system of both directions at once (Box2D's revolute point
+ * constraint), (K + α̃)·Δλ = −Δ − α̃·λ with K = Σ 1/m·I + 1/I·[r⊥ r⊥ᵀ]. Projected along the error direction alone, a
+ * light body on a long lever (a pendulum's bob) would turn instead of swing and the anchors would part.
+ */
+function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number, alphaT: number): void {
+  const ex = at[2] - at[6];
+  const ey = at[3] - at[7];
+  if (ex === 0 && ey === 0 && alphaT === 0) return;
+  const mA = r.invMass[a];
+  const iA = r.invInertia[a];
+  const lax = at[0];
+  const lay = at[1];
+  let k11 = mA + iA * lay * lay + alphaT;
+  let k12 = -iA * lax * lay;
+  let k22 = mA + iA * lax * lax + alphaT;
+  let mB = 0;
+  let iB = 0;
+  const lbx = at[4];
+  const lby = at[5];
+  if (b >= 0) {
+    mB = r.invMass[b];
+    iB = r.invInertia[b];
+    k11 += mB + iB * lby * lby;
+    k12 -= iB * lbx * lby;
+    k22 += mB + iB * lbx * lbx;
+  }
+  const det = k11 * k22 - k12 * k12;
+  if (!(det > 0)) return;
+  const rx = -ex - alphaT * j.lambda[i];
+  const ry = -ey - alphaT * j.lambdaY[i];
+  const px = (k22 * rx - k12 * ry) / det;
+  const py = (k11 * ry - k12 * rx) / det;
+  j.lambda[i] += px;
+  j.lambdaY[i] += py;
+  r.x[a] += mA * px;
+  r.y[a] += mA * py;
+  if (iA !== 0) turn(r, a, iA * (lax * py - lay * px));
+  if (b >= 0) {
+    r.x[b] -= mB * px;
+    r.y[b] -= mB * py;
+    if (iB !== 0) turn(r, b, -iB * (lbx * py - lby * px));
+  }
+}
+
 /** Turns A and B apart so the relative angle θB − θA changes by −e (one-sided limits pass the violated bound). */
 function correctAngle(r: BodyRows, a: number, b: number, e: number): number {
   const iA = r.invInertia[a];
@@ -172,10 +220,7 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
         }
       }
       loadAnchors(j, r, i);
-      const dx = at[2] - at[6];
-      const dy = at[3] - at[7];
-      const c = Math.sqrt(dx * dx + dy * dy);
-      if (c > 1e-12) correct(j, r, i, c, dx / c, dy / c, alphaT, 0, 0);
+      correctPoint(j, r, i, a, b, alphaT);
       continue;
     }
     // Distance: only outside [lower, upper]; a soft one is a damped spring.
