@@ -14,6 +14,8 @@ import { MAX_SLOTS } from './handles.js';
 import { GridBroadPhase, makeBroadPhase } from './pipeline/broadphase.js';
 import type { StepContext } from './pipeline/context.js';
 import { rebuildTopology } from './pipeline/topology.js';
+import type { RigidShapesSnapshot } from './rigid/shapes.js';
+import type { RigidAnchorCache } from './rigid/contacts.js';
 
 /** What a snapshot holds of a part, and what it leaves out (field → why). */
 export interface FieldList {
@@ -32,7 +34,7 @@ export const FIELDS = {
   },
   /** In the order restore() puts them back (the snapshot's own keys, too). */
   context: {
-    snapshotted: ['settings', 'time', 'stepCount', 'accumulator', 'particles', 'particleIds', 'constraints', 'bodies', 'colliders', 'anchors', 'sleep', 'broadPhase'],
+    snapshotted: ['settings', 'time', 'stepCount', 'accumulator', 'particles', 'particleIds', 'constraints', 'bodies', 'colliders', 'anchors', 'sleep', 'broadPhase', 'rigidShapes', 'rigidAnchors'],
     notSnapshotted: {
       alpha: "the last advance()'s interpolation fraction: set again by the next advance()",
       pairs: PER_STEP,
@@ -53,7 +55,21 @@ export const FIELDS = {
       bodyHandleOf: CALLBACK,
       bodyAlive: CALLBACK,
       bodyParticlesOf: CALLBACK,
+      rigidContacts: `${PER_STEP} (cleared by restore())`,
+      rigidNarrowPhase: SCRATCH,
+      rigidRows: 'rebuilt from the bodies by restore()',
+      rigidCount: 'rebuilt from the bodies by restore()',
+      kinematicRows: 'rebuilt from the bodies by restore()',
+      kinematicCount: 'rebuilt from the bodies by restore()',
     },
+  },
+  rigidShapes: {
+    snapshotted: ['sources', 'rows', 'type'],
+    notSnapshotted: Object.fromEntries(
+      ['kind', 'row', 'radius', 'partStart', 'partCount', 'partVertexStart', 'partVertexCount', 'partsUsed', 'lx', 'ly', 'lnx', 'lny', 'verticesUsed', 'polygons', 'polygonCount'].map((f) => [f, 'rebuilt from the sources by restore()']).concat(
+        ['wx', 'wy', 'wnx', 'wny'].map((f) => [f, PER_STEP]),
+      ),
+    ),
   },
   colliders: {
     snapshotted: ['kind', 'friction', 'restitution', 'category', 'mask', 'group', 'ringLength'],
@@ -64,7 +80,7 @@ export const FIELDS = {
     ),
   },
   sleep: {
-    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'awakeCount', 'speedThreshold', 'timeToSleep'],
+    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'parkedInvInertia', 'awakeCount', 'speedThreshold', 'timeToSleep'],
     notSnapshotted: {
       enabled: 'settings.sleeping',
       particleBody: 'rebuilt from the bodies by restore()',
@@ -98,7 +114,7 @@ export const FIELDS = {
     notSnapshotted: {},
   },
   constraints: {
-    snapshotted: ['ids', 'kind', 'row', 'distances', 'angles', 'pins', 'springs', 'areas', 'grabs'],
+    snapshotted: ['ids', 'kind', 'row', 'distances', 'angles', 'pins', 'springs', 'areas', 'grabs', 'joints'],
     notSnapshotted: { tables: 'the same tables, indexed by kind' },
   },
   handles: {
@@ -118,6 +134,7 @@ export function describedParts(ctx: StepContext): [keyof typeof FIELDS, object][
   const parts: [keyof typeof FIELDS, object][] = [
     ['context', ctx],
     ['colliders', ctx.colliders],
+    ['rigidShapes', ctx.rigidShapes],
     ['sleep', ctx.sleep],
     ['bodies', ctx.bodies],
     ['constraints', ctx.constraints],
@@ -146,6 +163,8 @@ export interface WorldSnapshot extends Record<Snapshotted, unknown> {
   anchors: { keys: Float64Array; values: Float64Array };
   sleep: Fields;
   broadPhase: Fields;
+  rigidShapes: RigidShapesSnapshot;
+  rigidAnchors: ReturnType<RigidAnchorCache['snapshot']>;
 }
 
 export function snapshotContext(ctx: StepContext): WorldSnapshot {
@@ -176,6 +195,8 @@ export function snapshotContext(ctx: StepContext): WorldSnapshot {
     anchors: ctx.anchors.snapshot(),
     sleep: saveFields(ctx.sleep, FIELDS.sleep.snapshotted),
     broadPhase: grid ? saveFields(grid, FIELDS.grid.snapshotted) : {},
+    rigidShapes: ctx.rigidShapes.snapshot(ctx.bodies.ids.high),
+    rigidAnchors: ctx.rigidAnchors.snapshot(),
   };
 }
 
@@ -196,11 +217,14 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   ctx.colliders.ensureBodies(ctx.bodies.ids.high);
   loadFields(ctx.colliders, FIELDS.colliders.snapshotted, s.colliders);
   ctx.anchors.restoreSnapshot(s.anchors);
+  ctx.rigidShapes.restore(s.rigidShapes);
+  ctx.rigidAnchors.restoreSnapshot(s.rigidAnchors);
 
   const distances = ctx.constraints.distances;
   ctx.hasBreakableLinks = distances.breakStrain.some((v) => v > 0);
   ctx.pairs.count = 0;
   ctx.contacts.count = 0;
+  ctx.rigidContacts.count = 0;
   ctx.events.count = 0;
   ctx.breaks.count = 0;
   ctx.eventTracker.clear();

@@ -53,8 +53,6 @@ export class StepContext {
   /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */
   rigidRows = new Int32Array(16);
   rigidCount = 0;
-  /** Relaxation sweeps so far: rigid contacts alternate their order with its parity. */
-  sweep = 0;
   kinematicRows = new Int32Array(16);
   kinematicCount = 0;
 

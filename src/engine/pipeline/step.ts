@@ -66,7 +66,7 @@ export function substep(ctx: StepContext, h: number): void {
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
   ctx.rigidContacts.beginSubstep(settings.maxPushSpeed * h);
-  for (let k = 0; k < settings.iterations; k++) relax(ctx, h, false);
+  for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
   updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, h);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
@@ -149,7 +149,7 @@ function resetMultipliers(ctx: StepContext): void {
 }
 
 /** One Gauss–Seidel sweep over every constraint, then the joints, the contacts and the bounds. */
-function relax(ctx: StepContext, h: number, backward: boolean): void {
+function relax(ctx: StepContext, h: number): void {
   const p = ctx.particles;
   const h2 = h * h;
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
@@ -160,7 +160,7 @@ function relax(ctx: StepContext, h: number, backward: boolean): void {
   if (grabs.count > 0) solveGrabs(grabs, p, h2);
   if (joints.count > 0) solveJoints(joints, p, h);
   if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p);
-  if (ctx.rigidContacts.count > 0) solveRigidContacts(ctx.rigidContacts, p, backward);
+  if (ctx.rigidContacts.count > 0) solveRigidContacts(ctx.rigidContacts, p);
   const bounds = ctx.settings.bounds;
   if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction);
 }

@@ -271,20 +271,8 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
  * (Box2D's block solver, on positions): one after the other, a deep first point would turn the body about the
  * second and throw it sideways.
  */
-export function solveRigidContacts(c: RigidContacts, r: BodyRows, backward: boolean): void {
+export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
   const n = c.count;
-  // Alternate sweeps run in opposite orders (symmetric Gauss–Seidel): one order every time would bias a pile
-  // towards the side solved last, and a pyramid would creep sideways.
-  if (backward) {
-    for (let i = n - 1; i >= 0; i--) {
-      if (i > 0 && c.pair[i - 1] === 1 && c.b2[i - 1] < 0 && c.b2[i] < 0) {
-        solvePair(c, r, i - 1);
-        frictionPair(c, r, i - 1);
-        i--;
-      } else solvePoint(c, r, i);
-    }
-    return;
-  }
   for (let i = 0; i < n; i++) {
     if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
       solvePair(c, r, i);
