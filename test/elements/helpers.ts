@@ -82,6 +82,11 @@ export async function steppedDrag(scene: PhysicsSceneElement, from: [number, num
   }
 }
 
+/** Waits until the body element's live pose has reached the page (frames travel apart from the answers to calls). */
+export async function simulated(scene: PhysicsSceneElement, body: Element): Promise<void> {
+  await waitFor(() => scene.poseOf(body) !== null, `<${body.localName}> simulated`);
+}
+
 /** Steps a paused scene `chunk` steps at a time until `condition` holds; fails with `what` after `most` steps. */
 export async function stepUntil(scene: PhysicsSceneElement, condition: () => boolean | Promise<boolean>, what: string, most = 600, chunk = 5): Promise<void> {
   for (let taken = 0; !(await condition()); taken += chunk) {

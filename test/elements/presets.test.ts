@@ -1,7 +1,7 @@
 // <cloth-sim> and <ragdoll-sim>: one tag each, bodies generated in their shadow root by <physics-scene>'s machinery.
 import { expect } from '@open-wc/testing';
 import { ClothSimElement, RagdollSimElement, type PhysicsClothElement, type PhysicsErrorDetail, type PhysicsRagdollElement, type PhysicsSceneElement } from '../../src/index.js';
-import { colourDistance, drawn, pointerAt, rgb, stepUntil, steppedDrag, unmount, waitFor } from './helpers.js';
+import { colourDistance, drawn, pointerAt, rgb, simulated, stepUntil, steppedDrag, unmount, waitFor } from './helpers.js';
 
 /** Mounts `<tag attrs>` in a 480 × 300 container; waits for `ready` unless told not to. */
 async function mountSim<T extends PhysicsSceneElement>(tag: string, attrs = '', ready = true): Promise<T> {
@@ -58,6 +58,7 @@ describe('<cloth-sim>', () => {
     sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" spacing="1" pins="top" paused');
     const cloth = clothOf(sim);
     // Top-left corner at ((16 − 7) / 2, 0.8) = (4.5, 0.8): the bottom-middle particle hangs at (7.5, 5.8).
+    await simulated(sim, cloth);
     const x0 = cloth.x;
     expect(x0).to.be.closeTo(8, 1e-6);
     await steppedDrag(sim, [7.5, 5.8], [11.5, 5.8], 12, 2);
@@ -182,6 +183,7 @@ describe('<ragdoll-sim>', () => {
     // No gravity and no obstacles: the ragdoll stands where it spawned until the pointer takes its pelvis.
     sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'count="1" obstacles="none" gravity="0 0" paused');
     const [doll] = dollsOf(sim);
+    await simulated(sim, doll);
     const x0 = doll.x;
     const y0 = doll.y;
     await steppedDrag(sim, [x0, y0], [x0 + 5, y0 + 2], 12, 2);
