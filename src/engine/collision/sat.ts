@@ -39,50 +39,46 @@ function polygonPolygon(a: Shape, b: Shape, out: Penetration): boolean {
   const sepB = sep.value;
   if (sepB >= 0) return miss(out);
   if (sepA === -Infinity && sepB === -Infinity) return miss(out); // two points: no area to overlap
+  // The facet of least penetration (A's on a tie; B's normal points from B to A), and the other shape's deepest
+  // vertex, depth below it: the point is midway, B's vertex moved along the normal, A's against it.
+  const facetOfB = sepB > sepA;
+  const depth = facetOfB ? -sepB : -sepA;
+  const nx = facetOfB ? -sep.nx : nax;
+  const ny = facetOfB ? -sep.ny : nay;
+  const v = facetOfB ? sep.vertex : vb;
+  const vx = facetOfB ? ax : bx;
+  const vy = facetOfB ? ay : by;
+  const half = facetOfB ? -0.5 * depth : 0.5 * depth;
   out.hit = true;
-  if (sepA >= sepB) {
-    // Facet of A: B's deepest vertex sits depth below it.
-    const depth = -sepA;
-    out.normalX = nax;
-    out.normalY = nay;
-    out.depth = depth;
-    if (onFace(bx, by, m, vb, -nax, -nay)) {
-      // B meets A's face with a face of its own: the middle of where the two faces overlap.
-      faceEnds(ax, ay, n, edgeA, edgeA + 1 === n ? 0 : edgeA + 1, nax, nay);
-      const a0 = face.first;
-      const a1 = face.last;
-      faceEnds(bx, by, m, vb, vb, -nax, -nay);
-      faceMidpoint(a0, a1, face.first, face.last, nax, nay);
-      out.pointX = 0.5 * (mid.ax + mid.bx);
-      out.pointY = 0.5 * (mid.ay + mid.by);
-    } else {
-      out.pointX = bx[vb] + 0.5 * depth * nax;
-      out.pointY = by[vb] + 0.5 * depth * nay;
-    }
-  } else {
-    // Facet of B (normal m points from B to A): A's deepest vertex sits depth below it.
-    const depth = -sepB;
-    const va = sep.vertex;
-    const edgeB = sep.edge;
-    const nx = -sep.nx;
-    const ny = -sep.ny;
-    out.normalX = nx;
-    out.normalY = ny;
-    out.depth = depth;
-    if (onFace(ax, ay, n, va, nx, ny)) {
-      faceEnds(bx, by, m, edgeB, edgeB + 1 === m ? 0 : edgeB + 1, -nx, -ny);
-      const b0 = face.first;
-      const b1 = face.last;
-      faceEnds(ax, ay, n, va, va, nx, ny);
-      faceMidpoint(face.first, face.last, b0, b1, nx, ny);
-      out.pointX = 0.5 * (mid.ax + mid.bx);
-      out.pointY = 0.5 * (mid.ay + mid.by);
-    } else {
-      out.pointX = ax[va] - 0.5 * depth * nx;
-      out.pointY = ay[va] - 0.5 * depth * ny;
-    }
-  }
+  out.normalX = nx;
+  out.normalY = ny;
+  out.depth = depth;
+  out.pointX = vx[v] + half * nx;
+  out.pointY = vy[v] + half * ny;
+  faceToFace(out, n, m, facetOfB ? v : edgeA, facetOfB ? sep.edge : v, facetOfB);
   return true;
+}
+
+/**
+ * Whether the shapes meet face to face: the deepest vertex has a neighbour on the facet's line too. Then the contact
+ * point is taken from the middle of where the two faces overlap: A's (n vertices) through vertex or edge `a`, B's (m
+ * vertices) through vertex or edge `b`; `facetOfB` says which of them is the facet's edge. (A call of its own keeps
+ * polygonPolygon small enough to be inlined.)
+ */
+function faceToFace(out: Penetration, n: number, m: number, a: number, b: number, facetOfB: boolean): void {
+  const nx = out.normalX;
+  const ny = out.normalY;
+  if (!(facetOfB ? onFace(ax, ay, n, a, nx, ny) : onFace(bx, by, m, b, nx, ny))) return;
+  // The facet's edge runs on to the next vertex; the other face starts as its single deepest vertex.
+  const aEnd = facetOfB ? a : a + 1 === n ? 0 : a + 1;
+  const bEnd = facetOfB ? (b + 1 === m ? 0 : b + 1) : b;
+  faceEnds(ax, ay, n, a, aEnd, nx, ny);
+  const a0 = face.first;
+  const a1 = face.last;
+  faceEnds(bx, by, m, b, bEnd, nx, ny);
+  faceMidpoint(a0, a1, face.first, face.last, nx, ny);
+  out.pointX = 0.5 * (mid.ax + mid.bx);
+  out.pointY = 0.5 * (mid.ay + mid.by);
 }
 
 /** Polygon (or segment) P against circle C; `flip` when C is shape A. */

@@ -45,10 +45,14 @@ export function load(a: Shape, b: Shape): void {
 export const FACE_TOLERANCE = 1e-10;
 const FACE_ROUNDING = 16 * Number.EPSILON;
 
-/** (dx, dy) from a face's vertex to vertex (x, y) runs along the face line of unit normal (nx, ny), within tolerance. */
-function onFaceLine(dx: number, dy: number, x: number, y: number, nx: number, ny: number): boolean {
+/**
+ * (dx, dy) from a face's vertex runs along the face line of unit normal ±(nx, ny), within tolerance; `rounding` is
+ * FACE_ROUNDING times that vertex's coordinate magnitude (the other's is the same to within |dx| + |dy|, which the
+ * relative term already allows many times over).
+ */
+function onFaceLine(dx: number, dy: number, rounding: number, nx: number, ny: number): boolean {
   const d = nx * dx + ny * dy;
-  const tol = FACE_TOLERANCE * (Math.abs(dx) + Math.abs(dy)) + FACE_ROUNDING * (Math.abs(x) + Math.abs(y));
+  const tol = FACE_TOLERANCE * (Math.abs(dx) + Math.abs(dy)) + rounding;
   return d <= tol && d >= -tol;
 }
 
@@ -57,22 +61,23 @@ export const face = { first: 0, last: 0 };
 
 /**
  * The face of polygon P (n vertices, counter-clockwise; a segment has 2) through vertices first..last (an edge, or a
- * single vertex with first === last) whose outward normal is (nx, ny), grown over the neighbouring vertices on its
+ * single vertex with first === last) whose outward normal is ±(nx, ny), grown over the neighbouring vertices on its
  * line (measured from vertex `first`): the whole collinear run, into face.first/last. At most all n vertices.
  */
 export function faceEnds(px: Float64Array, py: Float64Array, n: number, first: number, last: number, nx: number, ny: number): void {
   const x0 = px[first];
   const y0 = py[first];
+  const rounding = FACE_ROUNDING * (Math.abs(x0) + Math.abs(y0));
   let size = last >= first ? last - first + 1 : last + n - first + 1;
   while (size < n) {
     const k = first === 0 ? n - 1 : first - 1;
-    if (!onFaceLine(px[k] - x0, py[k] - y0, px[k], py[k], nx, ny)) break;
+    if (!onFaceLine(px[k] - x0, py[k] - y0, rounding, nx, ny)) break;
     first = k;
     size++;
   }
   while (size < n) {
     const k = last + 1 === n ? 0 : last + 1;
-    if (!onFaceLine(px[k] - x0, py[k] - y0, px[k], py[k], nx, ny)) break;
+    if (!onFaceLine(px[k] - x0, py[k] - y0, rounding, nx, ny)) break;
     last = k;
     size++;
   }
@@ -80,12 +85,15 @@ export function faceEnds(px: Float64Array, py: Float64Array, n: number, first: n
   face.last = last;
 }
 
-/** Whether vertex v of polygon P (n vertices) has a neighbour on the line through it with normal (nx, ny): a face. */
+/** Whether vertex v of polygon P (n vertices) has a neighbour on the line through it with normal ±(nx, ny): a face. */
 export function onFace(px: Float64Array, py: Float64Array, n: number, v: number, nx: number, ny: number): boolean {
   if (n < 2) return false;
+  const x = px[v];
+  const y = py[v];
+  const rounding = FACE_ROUNDING * (Math.abs(x) + Math.abs(y));
   const prev = v === 0 ? n - 1 : v - 1;
   const next = v + 1 === n ? 0 : v + 1;
-  return onFaceLine(px[prev] - px[v], py[prev] - py[v], px[prev], py[prev], nx, ny) || onFaceLine(px[next] - px[v], py[next] - py[v], px[next], py[next], nx, ny);
+  return onFaceLine(px[prev] - x, py[prev] - y, rounding, nx, ny) || onFaceLine(px[next] - x, py[next] - y, rounding, nx, ny);
 }
 
 /** Result registers of faceMidpoint: a point of A's outline and the point of B's outline opposite it. */
@@ -153,7 +161,7 @@ export function maxSeparation(px: Float64Array, py: Float64Array, n: number, qx:
     const s = min - (nx * px[i] + ny * py[i]);
     // Exact ties (a square against itself) go to the larger normal (x, then y), not to the first edge in the list,
     // so the answer does not depend on which vertex a polygon's list starts from.
-    if (s > best || (s === best && (nx > bnx || (nx === bnx && ny > bny)))) {
+    if (s >= best && (s > best || nx > bnx || (nx === bnx && ny > bny))) {
       best = s;
       bestEdge = i;
       bestVertex = arg;
