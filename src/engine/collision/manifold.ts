@@ -93,7 +93,7 @@ function clip(
     const cx = ey * inv;
     const cy = -ex * inv;
     const d = cx * nx + cy * ny;
-    if (d < minDot || (d === minDot && (cx > inx || (cx === inx && cy > iny)))) {
+    if (d <= minDot && (d < minDot || cx > inx || (cx === inx && cy > iny))) {
       minDot = d;
       i1 = k;
       inx = cx;
