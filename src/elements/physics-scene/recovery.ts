@@ -6,15 +6,19 @@
 // scene gives up: the last state stays drawn and the error box says why.
 //
 // A snapshot is a structured clone of the engine's tables: well under a millisecond for the scenes an embed runs and a
-// few milliseconds for the largest, so once a second keeps its cost negligible. A snapshot alone would rewind up to a
-// second; the page also holds the newest frame, so after a restart the particles are moved to where they were last
-// drawn (velocities from the two newest frames) and the scene resumes from what the user saw.
+// few milliseconds for the largest, so once a second keeps its cost negligible; a scene whose snapshots take longer
+// gets them less often (at most 5% of the time). A snapshot alone would rewind up to a second; the page also holds the
+// newest frame, so after a restart the particles are moved to where they were last drawn (velocities from the two
+// newest frames) and the scene resumes from what the user saw. While a snapshot is being taken the worker does not
+// step: that is not a stall (its answer is a sign of life; a worker that died meanwhile fails that call instead).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { FramePatch, HostError, HostScene, HostSnapshot } from '../../worker/protocol.js';
 import type { Engine, EngineFactory, EngineSession } from './session.js';
 
-/** Milliseconds between snapshots while the scene steps. */
+/** Milliseconds between snapshots while the scene steps (at least). */
 const SNAPSHOT_EVERY = 1000;
+/** The share of the time snapshots may take: a snapshot that took t ms is followed by the next one t / share ms later. */
+const SNAPSHOT_SHARE = 0.05;
 /** How often the keeper looks at the step counter (ms). */
 const KEEPER_TICK = 250;
 /** Restarts count within this window (ms); more than `max-restarts` in it and the scene gives up. */
@@ -77,6 +81,8 @@ export class RecoveryController implements ReactiveController {
   private watchStep = -1;
   private watchAt = 0;
   private snapAt = 0;
+  /** Milliseconds from one snapshot to the next, from how long the last one took. */
+  private snapEvery = SNAPSHOT_EVERY;
   private snapping = false;
   private readonly clock: Clock;
 
@@ -103,6 +109,7 @@ export class RecoveryController implements ReactiveController {
     this.saved = null;
     this.restarts = [];
     this.stopped = false;
+    this.snapEvery = SNAPSHOT_EVERY;
     this.watch(false);
   }
 
@@ -134,13 +141,17 @@ export class RecoveryController implements ReactiveController {
     const engine = session.live;
     if (!engine || engine.mode !== 'worker' || this.snapping) return;
     this.snapping = true;
-    this.snapAt = this.clock.now();
+    const asked = (this.snapAt = this.clock.now());
     const grab = this.options.scene.grab();
     engine.api
       .snapshot()
       .then(
         (snapshot) => {
-          if (engine === session.engine) this.saved = { engine, snapshot, grab };
+          if (engine !== session.engine) return;
+          this.saved = { engine, snapshot, grab };
+          const now = this.clock.now();
+          this.snapEvery = Math.max(SNAPSHOT_EVERY, (now - asked) / SNAPSHOT_SHARE);
+          this.watchAt = now;
         },
         () => {},
       )
@@ -245,12 +256,12 @@ export class RecoveryController implements ReactiveController {
     if (step !== this.watchStep) {
       this.watchStep = step;
       this.watchAt = now;
-      if (now - this.snapAt >= SNAPSHOT_EVERY) this.keepSnapshot();
+      if (now - this.snapAt >= this.snapEvery) this.keepSnapshot();
       return;
     }
     const limits = this.options.scene.limits();
     const stall = Math.max(STALL_AFTER, 3000 * limits.timestep);
-    if (now - this.watchAt < stall) return;
+    if (this.snapping || now - this.watchAt < stall) return;
     // No step for a while although the scene runs: terminated or hung? One probe; no answer declares it dead.
     this.watchAt = now;
     const timeout = Math.min(PROBE_TIMEOUT, limits.callTimeout);

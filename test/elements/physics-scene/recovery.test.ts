@@ -6,7 +6,7 @@ import { RecoveryController } from '../../../src/elements/physics-scene/recovery
 import { EngineSession } from '../../../src/elements/physics-scene/session.js';
 import type { BodyDescription } from '../../../src/engine/index.js';
 import type { FramePatch, HostScene, HostSnapshot } from '../../../src/worker/protocol.js';
-import { FakeClock, FakeEngine, makeHost, settle, SNAPSHOT, type FakeHost } from './fakes.js';
+import { deferred, FakeClock, FakeEngine, makeHost, settle, SNAPSHOT, type FakeHost } from './fakes.js';
 
 const box = (x: number): BodyDescription => ({ type: 'box', x, y: 1, width: 1, height: 1 }) as BodyDescription;
 
@@ -119,6 +119,8 @@ describe('RecoveryController', () => {
     const r = await started({ callTimeout: 800 });
     const [engine] = r.engines;
     r.clock.advance(10000, () => engine.latestStep++);
+    // The snapshot asked for on the way answers.
+    await settle();
     expect(engine.probes).to.deep.equal([]);
     // Frozen: nothing for 1.5 s (the keeper looks every 250 ms), then a probe, then another 1.5 s later.
     r.clock.advance(1499);
@@ -136,6 +138,41 @@ describe('RecoveryController', () => {
     expect(engine.probes).to.deep.equal([]);
     r.clock.advance(1);
     expect(engine.probes.map((p) => [p.reason, p.timeout])).to.deep.equal([['no new frame for 3000 ms while running and no answer to a probe within 1000 ms', 1000]]);
+  });
+
+  it('a snapshot still being taken is no stall: no probe while it is pending; its answer is a sign of life', async () => {
+    const r = await started();
+    const [engine] = r.engines;
+    const answer = deferred<HostSnapshot>();
+    engine.answers.snapshot = () => answer.promise;
+    // Paused and running again: a snapshot of the paused state is asked for, and takes long (a very large scene).
+    r.setRunning(false);
+    r.setRunning(true);
+    r.clock.advance(10000);
+    expect(engine.probes).to.deep.equal([]);
+    answer.resolve(SNAPSHOT);
+    await settle();
+    // Measured from the answer: 1.5 s more without a step, then the probe.
+    r.clock.advance(1499);
+    expect(engine.probes).to.deep.equal([]);
+    r.clock.advance(1);
+    expect(engine.probes.length).to.equal(1);
+  });
+
+  it('a slow snapshot spaces out the next ones (at most 5% of the time): one that took 2 s, the next 40 s later', async () => {
+    const r = await started();
+    const [engine] = r.engines;
+    const answer = deferred<HostSnapshot>();
+    engine.answers.snapshot = () => answer.promise;
+    r.clock.advance(1000, () => engine.latestStep++);
+    expect(engine.argsOf('snapshot').length).to.equal(2);
+    r.clock.advance(2000, () => engine.latestStep++);
+    answer.resolve(SNAPSHOT);
+    await settle();
+    r.clock.advance(37999, () => engine.latestStep++);
+    expect(engine.argsOf('snapshot').length).to.equal(2);
+    r.clock.advance(1, () => engine.latestStep++);
+    expect(engine.argsOf('snapshot').length).to.equal(3);
   });
 
   it('a dead worker: reported once, a new engine restores the last snapshot under the last drawn frame, the scene resumes', async () => {
