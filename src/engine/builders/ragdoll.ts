@@ -14,6 +14,9 @@ export interface RagdollOptions extends BodyOptions {
   jointCompliance?: number;
 }
 
+/** The figure's height when none is given. */
+export const RAGDOLL_HEIGHT = 1.8;
+
 /** Joint names in particle order. */
 export const RAGDOLL_JOINTS = ['head', 'neck', 'pelvis', 'elbowL', 'handL', 'elbowR', 'handR', 'kneeL', 'footL', 'kneeR', 'footR'] as const;
 
@@ -57,7 +60,7 @@ const LIMITS: [number, number, number, number, number][] = [
 export function createRagdoll(world: World, o: RagdollOptions): Built {
   const x = finite('x', o?.x);
   const y = finite('y', o.y);
-  const height = positive('height', o.height ?? 1.8);
+  const height = positive('height', o.height ?? RAGDOLL_HEIGHT);
   const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70);
   const compliance = complianceOf('jointCompliance', o.jointCompliance);
   return transactional(world, (particles, constraints) => {

@@ -1,0 +1,20 @@
+// The host's descriptor of every body type (the engine's BODY_TYPES): a new type is one module here and one in
+// src/render/bodies/, and the compiler asks for both.
+import type { BodyType } from '../../../engine/index.js';
+import type { BodyDescriptor } from './descriptor.js';
+import { box } from './box.js';
+import { circle } from './circle.js';
+import { cloth } from './cloth.js';
+import { polygon } from './polygon.js';
+import { ragdoll } from './ragdoll.js';
+import { rope } from './rope.js';
+import { softbody } from './softbody.js';
+
+export type { BodyDescriptor, PoseBasis } from './descriptor.js';
+
+const DESCRIPTORS: { readonly [T in BodyType]: BodyDescriptor<T> } = { box, circle, polygon, rope, cloth, softbody, ragdoll };
+
+/** The descriptor of a body type the engine built (so a valid one). */
+export function descriptorOf(type: BodyType): BodyDescriptor {
+  return DESCRIPTORS[type] as BodyDescriptor;
+}

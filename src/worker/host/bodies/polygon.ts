@@ -1,0 +1,5 @@
+// A polygon: its outline's particles held rigid; its pose is the described origin, turning with its first edge.
+import type { BodyDescriptor } from './descriptor.js';
+import { RIGID } from './pose.js';
+
+export const polygon: BodyDescriptor<'polygon'> = { grip: 'soft', pose: RIGID };

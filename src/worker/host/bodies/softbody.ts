@@ -1,0 +1,18 @@
+// A soft body: a ring of particles; the 'springs' model adds a hub particle after the ring (createSoftBody), which
+// is neither drawn nor part of the outline a press inside the ring grabs.
+import type { BodyDescriptor, DescriptionOf } from './descriptor.js';
+import { CENTROID } from './pose.js';
+
+/** The ring's particles (all but the springs model's hub, the last one). */
+function ring(d: DescriptionOf<'softbody'>, indices: Int32Array): Int32Array {
+  return d.model === 'springs' ? indices.subarray(0, indices.length - 1) : indices;
+}
+
+export const softbody: BodyDescriptor<'softbody'> = {
+  grip: 'firm',
+  pose: CENTROID,
+  describe(t, d, body) {
+    t.ring = ring(d, body.indices).length;
+  },
+  outline: ring,
+};

@@ -1,0 +1,146 @@
+// Frame and topology encoding. A topology (which bodies, their particles and drawing facts, the links' ends) goes out
+// when what is built changed; a frame (Float64Array, layout F/HEADER in protocol.ts) every time the state is published:
+// header, particle positions, a pose per body and, in debug mode, bounding boxes and contacts.
+import { handleSlot } from '../../engine/handles.js';
+import { F, HEADER, MAX_CONTACTS, POSE, frameLength, type TopologyBody } from '../protocol.js';
+import type { Publisher } from '../publishers.js';
+import type { BodyRecord, Bindings } from './bindings.js';
+import { writePose } from './bodies/pose.js';
+import type { HostOutput } from './output.js';
+
+export class FrameEncoder {
+  /** Frames written, and frames skipped because the publisher had no free buffer. */
+  published = 0;
+  skipped = 0;
+  /** Topologies sent. Frames carry it: a frame is drawn only with its own topology. */
+  #version = 0;
+  #stale = true;
+  /** Bodies in topology order, the order of poses in a frame. */
+  #order: BodyRecord[] = [];
+  #seq = 0;
+
+  readonly #bindings: Bindings;
+  readonly #publisher: Publisher;
+  readonly #output: Pick<HostOutput, 'topology'>;
+
+  constructor(bindings: Bindings, publisher: Publisher, output: Pick<HostOutput, 'topology'>) {
+    this.#bindings = bindings;
+    this.#publisher = publisher;
+    this.#output = output;
+  }
+
+  /** What is built changed: the next publish sends a new topology first. */
+  invalidate(): void {
+    this.#stale = true;
+  }
+
+  /** The version of the topology in force, or -1 while a change is not published yet. */
+  get topology(): number {
+    return this.#stale ? -1 : this.#version;
+  }
+
+  /** Bodies in the newest topology. */
+  get bodyCount(): number {
+    return this.#order.length;
+  }
+
+  /** Writes the current state as one frame (after a new topology, when stale). */
+  publish(running: boolean, debug: boolean): void {
+    if (this.#stale) this.#topologyNow();
+    const w = this.#bindings.world;
+    const p = w.particles;
+    const n = p.count;
+    const bodies = this.#order;
+    const b = bodies.length;
+    const c = debug ? Math.min(MAX_CONTACTS, w.contacts.count) : 0;
+    const f = this.#publisher.begin(frameLength(n, b, c, debug));
+    if (!f) {
+      this.skipped++;
+      return;
+    }
+    f[F.seq] = ++this.#seq;
+    f[F.topology] = this.#version;
+    f[F.stepCount] = w.stepCount;
+    f[F.time] = w.time;
+    f[F.particles] = n;
+    f[F.bodies] = b;
+    f[F.contacts] = c;
+    f[F.debug] = debug ? 1 : 0;
+    f[F.cellSize] = debug ? w.gridCellSize : 0;
+    f[F.running] = running ? 1 : 0;
+    f[F.stamp] = performance.now();
+    const { x, y } = p;
+    let o = HEADER;
+    for (let i = 0; i < n; i++) {
+      f[o++] = x[i];
+      f[o++] = y[i];
+    }
+    for (let k = 0; k < b; k++, o += POSE) {
+      const r = bodies[k];
+      writePose(r.descriptor!.pose, f, o, r.indices, x, y, r.basis);
+    }
+    if (debug) this.#writeDebug(f, o, c);
+    this.#publisher.commit();
+    this.published++;
+  }
+
+  #topologyNow(): void {
+    this.#stale = false;
+    this.#version++;
+    const w = this.#bindings.world;
+    this.#order = this.#bindings.built();
+    const bodies = this.#order.map((r): TopologyBody => {
+      const t: TopologyBody = { key: r.key, type: r.desc.type, kind: w.bodyKindOf(r.handle!), indices: r.indices.slice() };
+      r.descriptor!.describe?.(t, r.desc, { world: w, handle: r.handle!, indices: r.indices });
+      return t;
+    });
+    const active = this.#bindings.activeLinks();
+    const links = new Float64Array(active.length * 2);
+    active.forEach((l, k) => {
+      links[2 * k] = l.pa;
+      links[2 * k + 1] = l.pb;
+    });
+    this.#output.topology({ version: this.#version, bodies, links });
+  }
+
+  /** Per body its bounding box, then the contacts (point and normal). */
+  #writeDebug(f: Float64Array, o: number, contacts: number): void {
+    const w = this.#bindings.world;
+    const { x, y, radius } = w.particles;
+    const col = w.colliders;
+    for (let k = 0; k < this.#order.length; k++) {
+      const r = this.#order[k];
+      // The particles' box; the collider's box (grown by this step's motion) when it is current, i.e. holds it.
+      let x0 = Infinity;
+      let y0 = Infinity;
+      let x1 = -Infinity;
+      let y1 = -Infinity;
+      for (let q = 0; q < r.indices.length; q++) {
+        const i = r.indices[q];
+        if (x[i] - radius[i] < x0) x0 = x[i] - radius[i];
+        if (y[i] - radius[i] < y0) y0 = y[i] - radius[i];
+        if (x[i] + radius[i] > x1) x1 = x[i] + radius[i];
+        if (y[i] + radius[i] > y1) y1 = y[i] + radius[i];
+      }
+      const slot = handleSlot(r.handle!);
+      if (col.kind[slot] !== 0 && col.minX[slot] <= x0 && col.minY[slot] <= y0 && col.maxX[slot] >= x1 && col.maxY[slot] >= y1) {
+        x0 = col.minX[slot];
+        y0 = col.minY[slot];
+        x1 = col.maxX[slot];
+        y1 = col.maxY[slot];
+      }
+      f[o++] = x0;
+      f[o++] = y0;
+      f[o++] = x1;
+      f[o++] = y1;
+    }
+    const ct = w.contacts;
+    for (let k = 0; k < contacts; k++) {
+      const v = ct.v[k];
+      f[o++] = x[v];
+      f[o++] = y[v];
+      f[o++] = ct.nx[k];
+      f[o++] = ct.ny[k];
+    }
+  }
+}

@@ -1,0 +1,47 @@
+// Snapshot and restore of the whole host (world, records, params), and the frame overlay of a restart: the snapshot
+// holds the full state (constraints, contacts, sleep) as of up to a second ago; the page's newest frame holds where
+// every particle was drawn last. Laying the frame over the restored world resumes from what the user saw.
+import type { World, WorldSnapshot } from '../../engine/index.js';
+import type { FramePatch, HostSnapshot } from '../protocol.js';
+import type { Bindings } from './bindings.js';
+import { copyParams, type HostSettings } from './settings.js';
+
+/** `topology`: the version of the topology in force (-1 while a change is unpublished), to match frames against. */
+export function takeSnapshot(b: Bindings, settings: HostSettings, topology: number): HostSnapshot {
+  return { world: b.world.snapshot(), ...b.snapshot(), params: copyParams(settings.params), topology };
+}
+
+/** Puts the snapshot back; with a frame of the snapshot's topology, the frame's positions and velocities on top. */
+export function restoreSnapshot(b: Bindings, settings: HostSettings, s: HostSnapshot, frame?: FramePatch | null): void {
+  settings.params = copyParams(s.params);
+  b.world.restore(s.world as WorldSnapshot);
+  b.restore(s);
+  if (frame) overlay(b.world, s, frame);
+}
+
+/**
+ * Moves the particles to where the frame drew them (velocities from the two newest frames, else the snapshot's).
+ * Only when the frame has the snapshot's topology (same particles in the same slots) and is not older than it.
+ */
+function overlay(w: World, s: HostSnapshot, f: FramePatch): void {
+  const p = w.particles;
+  const n = p.count;
+  if (s.topology === undefined || s.topology < 0 || f.topology !== s.topology || f.positions.length !== 2 * n) return;
+  if (f.stepCount < w.stepCount || (f.velocities && f.velocities.length !== 2 * n)) return;
+  for (let i = 0; i < n; i++) {
+    if (!p.alive[i] || p.invMass[i] === 0) continue;
+    const x = f.positions[2 * i];
+    const y = f.positions[2 * i + 1];
+    if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+    p.x[i] = p.px[i] = p.qx[i] = p.sx[i] = x;
+    p.y[i] = p.py[i] = p.qy[i] = p.sy[i] = y;
+    if (f.velocities && Number.isFinite(f.velocities[2 * i]) && Number.isFinite(f.velocities[2 * i + 1])) {
+      p.vx[i] = f.velocities[2 * i];
+      p.vy[i] = f.velocities[2 * i + 1];
+    }
+  }
+  w.stepCount = f.stepCount;
+  w.time = f.time;
+  // Bodies asleep in the snapshot may have been moving in the frame.
+  w.wakeAll();
+}
