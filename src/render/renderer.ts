@@ -2,19 +2,15 @@
 // two newest published frames, the world's viewBox is fitted into the element's box keeping its aspect ratio
 // (like SVG's preserveAspectRatio="xMidYMid meet"), and bodies are drawn in batches: one canvas path per style.
 import p5 from 'p5';
-import { F, HEADER, POSE, type Topology, type TopologyBody } from '../worker/protocol.js';
+import { F, HEADER, aabbOffset, poseOffset, type Topology } from '../worker/protocol.js';
 import type { FrameStore } from '../worker/client.js';
 import { track } from '../worker/resources.js';
+import { PAINTERS, type BodyPainter, type BodyStyle, type Pen } from './bodies/index.js';
+import { disc } from './bodies/painter.js';
+
+export type { BodyStyle } from './bodies/index.js';
 
 p5.disableFriendlyErrors = true;
-
-export interface BodyStyle {
-  /** CSS colour or null for none. */
-  fill: string | null;
-  stroke: string | null;
-  /** Stroke width in CSS pixels. */
-  lineWidth: number;
-}
 
 /** What a custom drawing hook receives each frame. */
 export interface DrawView {
@@ -44,21 +40,12 @@ export interface FrameSource {
   poll(): void;
 }
 
-/** Ragdoll bones as particle pairs (the builder's order: head, neck, pelvis, elbows, hands, knees, feet). */
-const RAGDOLL_BONES = [0, 1, 1, 2, 1, 3, 3, 4, 1, 5, 5, 6, 2, 7, 7, 8, 2, 9, 9, 10];
-
+/** Bodies drawn together: one painter batch, one style (see bodies/painter.ts). */
 interface Group {
   style: BodyStyle;
+  painter: BodyPainter;
+  /** Places in the topology's bodies. */
   bodies: number[];
-  /** 'shape': closed outlines and discs; 'line': polylines; 'cloth'; 'ragdoll'. */
-  kind: 'shape' | 'line' | 'cloth' | 'ragdoll';
-}
-
-function shapeKind(b: TopologyBody): Group['kind'] {
-  if (b.type === 'rope') return 'line';
-  if (b.type === 'cloth') return 'cloth';
-  if (b.type === 'ragdoll') return 'ragdoll';
-  return 'shape';
 }
 
 let firstColorMethods: Map<string, unknown> | null = null;
@@ -238,13 +225,13 @@ export class SceneRenderer {
   private rebuildGroups(t: Topology): void {
     const byKey = new Map<string, Group>();
     this.groups = [];
-    t.bodies.forEach((b, k) => {
-      const style = this.styles.get(b.key) ?? { fill: '#888888', stroke: null, lineWidth: 1 };
-      const kind = shapeKind(b);
-      const id = `${kind}|${style.fill}|${style.stroke}|${style.lineWidth}`;
+    t.bodies.forEach((body, k) => {
+      const style = this.styles.get(body.key) ?? { fill: '#888888', stroke: null, lineWidth: 1 };
+      const painter = PAINTERS[body.type];
+      const id = `${painter.batch}|${style.fill}|${style.stroke}|${style.lineWidth}`;
       let g = byKey.get(id);
       if (!g) {
-        g = { style, bodies: [], kind };
+        g = { style, painter, bodies: [] };
         byKey.set(id, g);
         this.groups.push(g);
       }
@@ -322,140 +309,27 @@ export class SceneRenderer {
   /** World → canvas pixels of particle i at the interpolated position (bound once, no allocation per frame). */
   private readonly X = (i: number): number => this.offsetX + this.positions[2 * i] * this.scale;
   private readonly Y = (i: number): number => this.offsetY + this.positions[2 * i + 1] * this.scale;
+  /** What painters draw with, updated each frame. */
+  private readonly pen: Pen = { ctx: null!, X: this.X, Y: this.Y, scale: 1, topology: null!, frame: null!, poseAt: 0 };
 
   private drawBodies(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {
-    const s = this.scale;
-    const X = this.X;
-    const Y = this.Y;
+    const { X, Y, pen } = this;
+    pen.ctx = ctx;
+    pen.scale = this.scale;
+    pen.topology = t;
+    pen.frame = f;
+    pen.poseAt = poseOffset(f[F.particles]);
     ctx.lineJoin = 'round';
     ctx.lineCap = 'round';
-    for (const g of this.groups) {
-      const { fill, stroke, lineWidth } = g.style;
-      ctx.beginPath();
-      if (g.kind === 'shape') {
-        for (const k of g.bodies) {
-          const b = t.bodies[k];
-          const idx = b.indices;
-          if (b.type === 'circle') {
-            const i = idx[0];
-            const r = (b.radius ?? 0.5) * s;
-            ctx.moveTo(X(i) + r, Y(i));
-            ctx.arc(X(i), Y(i), r, 0, Math.PI * 2);
-            // A spoke shows the rotation of rigid shapes; a lone particle has none to show.
-            continue;
-          }
-          const n = b.ring ?? idx.length;
-          ctx.moveTo(X(idx[0]), Y(idx[0]));
-          for (let q = 1; q < n; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
-          ctx.closePath();
-        }
-        if (fill) {
-          ctx.fillStyle = fill;
-          ctx.fill();
-        }
-        if (stroke) {
-          ctx.strokeStyle = stroke;
-          ctx.lineWidth = lineWidth;
-          ctx.stroke();
-        }
-      } else if (g.kind === 'line') {
-        let width = lineWidth;
-        for (const k of g.bodies) {
-          const b = t.bodies[k];
-          const idx = b.indices;
-          width = Math.max(width, 2 * (b.radius ?? 0) * s);
-          ctx.moveTo(X(idx[0]), Y(idx[0]));
-          for (let q = 1; q < idx.length; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
-        }
-        ctx.strokeStyle = stroke ?? fill ?? '#000';
-        ctx.lineWidth = width;
-        ctx.stroke();
-      } else if (g.kind === 'cloth') {
-        // torn[n]: bit 1 = the link from grid node n to its right neighbour broke, bit 2 = the link down broke.
-        if (fill) {
-          for (const k of g.bodies) {
-            const b = t.bodies[k];
-            const idx = b.indices;
-            const cols = b.columns ?? 2;
-            const rows = b.rows ?? 2;
-            const torn = b.torn;
-            for (let r = 0; r + 1 < rows; r++) {
-              for (let c = 0; c + 1 < cols; c++) {
-                const n = r * cols + c;
-                if (torn && (torn[n] | (torn[n + cols] & 1) | (torn[n + 1] & 2)) !== 0) continue;
-                ctx.moveTo(X(idx[n]), Y(idx[n]));
-                ctx.lineTo(X(idx[n + 1]), Y(idx[n + 1]));
-                ctx.lineTo(X(idx[n + cols + 1]), Y(idx[n + cols + 1]));
-                ctx.lineTo(X(idx[n + cols]), Y(idx[n + cols]));
-                ctx.closePath();
-              }
-            }
-          }
-          ctx.fillStyle = fill;
-          ctx.fill();
-        }
-        if (stroke) {
-          ctx.beginPath();
-          for (const k of g.bodies) {
-            const b = t.bodies[k];
-            const idx = b.indices;
-            const cols = b.columns ?? 2;
-            const rows = b.rows ?? 2;
-            const torn = b.torn;
-            // Rows then columns as polylines, lifting the pen over broken links.
-            for (const [lines, steps, along, bit] of [[rows, cols, 1, 1], [cols, rows, cols, 2]] as const) {
-              for (let l = 0; l < lines; l++) {
-                let n = along === 1 ? l * cols : l;
-                ctx.moveTo(X(idx[n]), Y(idx[n]));
-                for (let q = 1; q < steps; q++, n += along) {
-                  const next = n + along;
-                  if (torn && torn[n] & bit) ctx.moveTo(X(idx[next]), Y(idx[next]));
-                  else ctx.lineTo(X(idx[next]), Y(idx[next]));
-                }
-              }
-            }
-          }
-          ctx.strokeStyle = stroke;
-          ctx.lineWidth = lineWidth;
-          ctx.stroke();
-        }
-      } else {
-        // Ragdolls: bones as thick strokes, heads as discs.
-        let width = 2;
-        for (const k of g.bodies) {
-          const b = t.bodies[k];
-          const idx = b.indices;
-          width = Math.max(width, (b.radius ?? 0.1) * 0.7 * s);
-          for (let q = 0; q < RAGDOLL_BONES.length; q += 2) {
-            ctx.moveTo(X(idx[RAGDOLL_BONES[q]]), Y(idx[RAGDOLL_BONES[q]]));
-            ctx.lineTo(X(idx[RAGDOLL_BONES[q + 1]]), Y(idx[RAGDOLL_BONES[q + 1]]));
-          }
-        }
-        ctx.strokeStyle = stroke ?? fill ?? '#333';
-        ctx.lineWidth = width;
-        ctx.stroke();
-        ctx.beginPath();
-        for (const k of g.bodies) {
-          const b = t.bodies[k];
-          const head = b.indices[0];
-          const r = (b.radius ?? 0.1) * s;
-          ctx.moveTo(X(head) + r, Y(head));
-          ctx.arc(X(head), Y(head), r, 0, Math.PI * 2);
-        }
-        ctx.fillStyle = fill ?? stroke ?? '#333';
-        ctx.fill();
-      }
-    }
+    for (const g of this.groups) g.painter.draw(pen, g.bodies, g.style);
     // Joints and springs: thin lines between the particles they hold.
     if (t.links.length > 0) {
       ctx.beginPath();
       for (let k = 0; k < t.links.length; k += 2) {
         const a = t.links[k];
         const b = t.links[k + 1];
-        if (a === b) {
-          ctx.moveTo(X(a) + 3, Y(a));
-          ctx.arc(X(a), Y(a), 3, 0, Math.PI * 2);
-        } else {
+        if (a === b) disc(pen, a, 3);
+        else {
           ctx.moveTo(X(a), Y(a));
           ctx.lineTo(X(b), Y(b));
         }
@@ -490,7 +364,7 @@ export class SceneRenderer {
       ctx.stroke();
     }
     // AABBs.
-    let o = HEADER + 2 * n + POSE * b;
+    let o = aabbOffset(n, b);
     ctx.beginPath();
     for (let k = 0; k < b && k < t.bodies.length; k++) {
       const x0 = f[o++];

@@ -5,7 +5,7 @@ import * as Comlink from 'comlink';
 import { EngineHost } from './engine-host.js';
 import { TripleBuffer } from './triple-buffer.js';
 import { TripleBufferPublisher } from './publishers.js';
-import { F, HEADER, POSE, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
+import { F, HEADER, POSE, frameLength, poseOffset, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
 import type { WorkerEndpoint } from './engine.worker.js';
 import { track } from './resources.js';
 
@@ -75,9 +75,7 @@ export class FrameStore {
 }
 
 function frameSize(f: Float64Array): number {
-  const n = f[F.particles];
-  const b = f[F.bodies];
-  return HEADER + 2 * n + POSE * b + (f[F.debug] ? 4 * b + 4 * f[F.contacts] : 0);
+  return frameLength(f[F.particles], f[F.bodies], f[F.contacts], f[F.debug] === 1);
 }
 
 export class EngineClient {
@@ -321,7 +319,7 @@ export class EngineClient {
     if (!t || this.frames.received === 0 || f[F.topology] !== t.version) return null;
     const k = t.bodies.findIndex((b) => b.key === key);
     if (k < 0) return null;
-    const o = HEADER + 2 * f[F.particles] + POSE * k;
+    const o = poseOffset(f[F.particles]) + POSE * k;
     return [f[o], f[o + 1], f[o + 2]];
   }
 

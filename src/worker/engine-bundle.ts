@@ -7,5 +7,7 @@ import './engine.worker.js';
 export { EngineHost } from './engine-host.js';
 export { TripleBufferPublisher, TransferPublisher } from './publishers.js';
 export { TripleBuffer } from './triple-buffer.js';
+// The renderer draws a ragdoll's bones as the builder joins them.
+export { RAGDOLL_BONES } from '../engine/index.js';
 // The page's comlink too (one copy in the single-file build).
 export * as __comlink from 'comlink';

@@ -1,0 +1,100 @@
+// The painters of src/render/bodies/ on a recording context: what each body type draws, batched by style.
+import { expect } from '@open-wc/testing';
+import { BODY_TYPES, RAGDOLL_BONES, RAGDOLL_JOINTS } from '../../src/engine/index.js';
+import { PAINTERS, type Pen } from '../../src/render/bodies/index.js';
+import type { Topology, TopologyBody } from '../../src/worker/protocol.js';
+
+type Call = [string, ...number[]];
+
+/** A 2D context that records path calls and the style set at each fill and stroke. */
+function recorder() {
+  const calls: Call[] = [];
+  const paints: { op: 'fill' | 'stroke'; style: string; width: number }[] = [];
+  const state = { fillStyle: '', strokeStyle: '', lineWidth: 0 };
+  const ctx = {
+    ...Object.fromEntries(['beginPath', 'moveTo', 'lineTo', 'arc', 'closePath'].map((name) => [name, (...args: number[]) => calls.push([name, ...args])])),
+    fill: () => paints.push({ op: 'fill', style: state.fillStyle, width: state.lineWidth }),
+    stroke: () => paints.push({ op: 'stroke', style: state.strokeStyle, width: state.lineWidth }),
+  };
+  for (const key of Object.keys(state) as (keyof typeof state)[]) {
+    Object.defineProperty(ctx, key, { get: () => state[key], set: (v) => (state[key] = v as never) });
+  }
+  return { ctx: ctx as unknown as CanvasRenderingContext2D, calls, paints };
+}
+
+/** Draws the topology's bodies k in one style with their type's painter; particle i is at (i, 10·i) pixels. */
+function paint(topology: Topology, ks: number[], style = { fill: '#f00', stroke: '#00f', lineWidth: 1.5 }, scale = 20) {
+  const r = recorder();
+  const pen: Pen = { ctx: r.ctx, X: (i) => i, Y: (i) => 10 * i, scale, topology, frame: new Float64Array(0), poseAt: 0 };
+  PAINTERS[topology.bodies[ks[0]].type].draw(pen, ks, style);
+  return r;
+}
+
+const points = (calls: Call[], name: string) => calls.filter((c) => c[0] === name).map((c) => c[1]);
+
+describe('body painters', () => {
+  it('every body type has one', () => {
+    expect(Object.keys(PAINTERS).sort()).to.deep.equal([...BODY_TYPES].sort());
+  });
+
+  it('shapes of one style are one path, one fill and one stroke: boxes and rings as loops, balls as discs', () => {
+    const bodies: TopologyBody[] = [
+      { key: 1, type: 'box', kind: 'rigid', indices: Int32Array.of(0, 1, 2, 3) },
+      { key: 2, type: 'circle', kind: 'particle', indices: Int32Array.of(4), radius: 0.5 },
+      // A springs-model soft body: 5 ring particles, then its hub (9), which is not on the outline.
+      { key: 3, type: 'softbody', kind: 'soft', indices: Int32Array.of(5, 6, 7, 8, 9), ring: 4 },
+      { key: 4, type: 'polygon', kind: 'rigid', indices: Int32Array.of(10, 11, 12) },
+    ];
+    expect(new Set([1, 2, 3].map((k) => PAINTERS[bodies[k].type].batch))).to.deep.equal(new Set([PAINTERS.box.batch]));
+    const { calls, paints } = paint({ version: 1, bodies, links: new Float64Array(0) }, [0, 1, 2, 3]);
+    expect(calls.filter((c) => c[0] === 'beginPath').length).to.equal(1);
+    expect(paints).to.deep.equal([{ op: 'fill', style: '#f00', width: 0 }, { op: 'stroke', style: '#00f', width: 1.5 }]);
+    expect(points(calls, 'moveTo')).to.deep.equal([0, 4 + 10, 5, 10]);
+    expect(points(calls, 'lineTo')).to.deep.equal([1, 2, 3, 6, 7, 8, 11, 12]);
+    expect(calls.filter((c) => c[0] === 'closePath').length).to.equal(3);
+    // The ball: a disc of radius · scale around its particle.
+    expect(calls.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', 4, 40, 0.5 * 20, 0, Math.PI * 2]]);
+  });
+
+  it('ropes are polylines as thick as their particles, at least the style\'s width', () => {
+    const bodies: TopologyBody[] = [
+      { key: 1, type: 'rope', kind: 'rope', indices: Int32Array.of(0, 1, 2), radius: 0.1 },
+      { key: 2, type: 'rope', kind: 'rope', indices: Int32Array.of(3, 4), radius: 0 },
+    ];
+    const t = { version: 1, bodies, links: new Float64Array(0) };
+    const thick = paint(t, [0, 1]);
+    expect(points(thick.calls, 'moveTo')).to.deep.equal([0, 3]);
+    expect(points(thick.calls, 'lineTo')).to.deep.equal([1, 2, 4]);
+    expect(thick.paints).to.deep.equal([{ op: 'stroke', style: '#00f', width: 2 * 0.1 * 20 }]);
+    expect(paint(t, [1]).paints[0].width).to.equal(1.5);
+  });
+
+  it('ragdolls: the builder\'s bones as strokes, the head as a disc', () => {
+    const indices = Int32Array.from({ length: RAGDOLL_JOINTS.length }, (_, i) => 20 + i);
+    const bodies: TopologyBody[] = [{ key: 1, type: 'ragdoll', kind: 'ragdoll', indices, radius: 0.1 }];
+    const { calls, paints } = paint({ version: 1, bodies, links: new Float64Array(0) }, [0]);
+    const segments = calls.filter((c) => c[0] === 'lineTo').map((c, q) => [points(calls, 'moveTo')[q] - 20, c[1] - 20]);
+    expect(segments).to.deep.equal(RAGDOLL_BONES.map(([a, b]) => [a, b]));
+    expect(calls.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', 20, 200, 0.1 * 20, 0, Math.PI * 2]]);
+    expect(paints.map((p) => [p.op, p.width])).to.deep.equal([['stroke', 2], ['fill', 2]]);
+  });
+
+  it('a torn cloth leaves out the cells and links that tore', () => {
+    // 3 × 3 grid on particles 0…8; the link from node 0 to its right neighbour broke.
+    const bodies: TopologyBody[] = [{ key: 1, type: 'cloth', kind: 'cloth', indices: Int32Array.from({ length: 9 }, (_, i) => i), columns: 3, rows: 3, torn: Uint8Array.of(1, 0, 0, 0, 0, 0, 0, 0, 0) }];
+    const t = { version: 1, bodies, links: new Float64Array(0) };
+    const { calls, paints } = paint(t, [0]);
+    expect(paints.map((p) => p.op)).to.deep.equal(['fill', 'stroke']);
+    const fillPass = calls.slice(0, calls.findIndex((c, q) => q > 0 && c[0] === 'beginPath'));
+    // Cells at nodes 1, 3 and 4; the one at node 0 touches the broken link.
+    expect(fillPass.filter((c) => c[0] === 'closePath').length).to.equal(3);
+    expect(points(fillPass, 'moveTo')).to.deep.equal([1, 3, 4]);
+    // Grid lines: the pen lifts over 0 → 1 (a moveTo to 1 instead of a lineTo).
+    const strokePass = calls.slice(fillPass.length);
+    expect(points(strokePass, 'moveTo')).to.deep.equal([0, 1, 3, 6, 0, 1, 2]);
+    expect(points(strokePass, 'lineTo').length).to.equal(12 - 1);
+    // Whole: four cells.
+    const whole = paint({ ...t, bodies: [{ ...bodies[0], torn: undefined }] }, [0]);
+    expect(whole.calls.filter((c) => c[0] === 'closePath').length).to.equal(4);
+  });
+});
