@@ -10,9 +10,9 @@ const args = [
 ];
 
 export default {
-  // .test.html files are pages of their own (their URL can carry "transfer", see below). The engine's tests need no
-  // browser: they run in Node (npm run test:engine, .mocharc.json).
-  files: ['test/**/*.test.ts', 'test/**/*.test.html', '!test/engine/**'],
+  // .test.html files are pages of their own (their URL can carry "transfer", see below). The engine's and the worker
+  // host's tests need no browser: they run in Node (npm run test:engine, .mocharc.json).
+  files: ['test/**/*.test.ts', 'test/**/*.test.html', '!test/engine/**', '!test/worker/host/**'],
   nodeResolve: true,
   // Cross-origin isolation everywhere except for test files whose name says "transfer": those run without it, so
   // both ways of publishing state (SharedArrayBuffer, transferred ArrayBuffer) are exercised.
