@@ -1,0 +1,154 @@
+// EngineClient against a fake worker: a MessageChannel whose far end runs the worker's own endpoint (comlink, the
+// frame port, the host) on this page. What the client does with answers, frames, silence and errors, without a real
+// worker.
+import { expect } from '@open-wc/testing';
+import * as Comlink from 'comlink';
+import { EngineClient, EngineStoppedError, TimeoutError, WorkerDiedError } from '../../src/worker/client.js';
+import { workerEndpoint } from '../../src/worker/engine.worker.js';
+import type { HostScene, Topology } from '../../src/worker/protocol.js';
+import { waitFor } from '../elements/helpers.js';
+
+/** Looks like a Worker to the client. `mute` drops every message from then on (a hung worker). */
+class FakeWorker extends EventTarget {
+  mute = false;
+  terminated = false;
+  readonly port: MessagePort;
+
+  constructor(answer: boolean) {
+    super();
+    const channel = new MessageChannel();
+    this.port = channel.port1;
+    this.port.onmessage = (e) => {
+      if (!this.mute) this.dispatchEvent(new MessageEvent('message', { data: e.data }));
+    };
+    if (answer) Comlink.expose(workerEndpoint(), channel.port2);
+  }
+
+  postMessage(data: unknown, transfer: Transferable[] = []): void {
+    if (!this.mute) this.port.postMessage(data, transfer);
+  }
+
+  terminate(): void {
+    this.terminated = true;
+    this.port.close();
+  }
+}
+
+const SCENE: HostScene = {
+  world: {},
+  params: { gravity: { x: 0, y: 10 } },
+  bodies: [
+    { key: 1, desc: { type: 'circle', x: 2, y: 1, radius: 0.5 } },
+    { key: 2, desc: { type: 'box', x: 5, y: 1, width: 1, height: 1 } },
+  ],
+  links: [],
+};
+
+describe('EngineClient (fake worker)', () => {
+  const clients: EngineClient[] = [];
+  afterEach(() => clients.splice(0).forEach((c) => c.dispose()));
+
+  async function start(worker: FakeWorker, options: Parameters<typeof EngineClient.start>[0] = {}) {
+    const client = await EngineClient.start({ createWorker: () => worker as unknown as Worker, timeout: 2000, ...options });
+    clients.push(client);
+    return client;
+  }
+
+  it('drives the host behind the worker: answers, topology and frames on the frame port, poses by key', async () => {
+    const topologies: Topology[] = [];
+    const client = await start(new FakeWorker(true), { onTopology: (t) => topologies.push(t) });
+    expect([client.mode, client.transport]).to.deep.equal(['worker', 'shared']);
+    expect(await client.api.load(SCENE)).to.deep.equal([]);
+    await client.synced(0);
+    expect(topologies.map((t) => t.bodies.map((b) => b.key))).to.deep.equal([[1, 2]]);
+    expect(client.pose(1)).to.deep.equal([2, 1, 0]);
+    expect(client.pose(99)).to.equal(null);
+    // Half a second of free fall: y = 1 + g t² / 2 up to the integrator's error.
+    expect(await client.api.step(30)).to.equal(30);
+    await client.synced(30);
+    expect(client.latestStep).to.equal(30);
+    expect(client.pose(1)![1]).to.be.closeTo(1 + 0.5 * 10 * 0.5 ** 2, 0.05);
+    // The same calls on the main thread give the same state.
+    const main = await EngineClient.start({ worker: 'none' });
+    clients.push(main);
+    await main.api.load(SCENE);
+    await main.api.step(30);
+    expect([main.mode, main.transport]).to.deep.equal(['main', 'direct']);
+    expect(await main.api.stateHash()).to.equal(await client.api.stateHash());
+    expect((await client.api.diagnostics()).stepCount).to.equal(30);
+  });
+
+  it('lastFrame() holds the newest positions and, from the two newest frames, velocities', async () => {
+    const client = await start(new FakeWorker(true));
+    await client.api.load(SCENE);
+    await client.synced(0);
+    expect(client.lastFrame()!.velocities).to.equal(null);
+    await client.api.step(10);
+    await client.api.step(1);
+    await client.synced(11);
+    const f = client.lastFrame()!;
+    expect([f.stepCount, f.positions.length]).to.deep.equal([11, 2 * 5]);
+    expect(f.positions[1]).to.equal(client.pose(1)![1]);
+    // Falling: about g·t downward at t = 11/60 s, nothing sideways.
+    expect(f.velocities![0]).to.equal(0);
+    expect(f.velocities![1]).to.be.closeTo(10 * 11 / 60, 0.2);
+  });
+
+  it('a worker that never answers at start: the main thread instead, and onError says why', async () => {
+    const worker = new FakeWorker(false);
+    const errors: string[] = [];
+    const client = await start(worker, { timeout: 100, onError: (m) => errors.push(m) });
+    expect(client.mode).to.equal('main');
+    expect(errors).to.deep.equal(['engine worker failed, running on the main thread instead: the worker did not answer within 100 ms']);
+    expect(worker.terminated).to.equal(true);
+    expect(await client.api.load(SCENE)).to.deep.equal([]);
+  });
+
+  it('a call without an answer fails with a TimeoutError naming it; the worker is declared dead, once', async () => {
+    const worker = new FakeWorker(true);
+    const deaths: string[] = [];
+    const client = await start(worker, { timeout: 1000, onDeath: (r) => deaths.push(r) });
+    await client.api.load(SCENE);
+    worker.mute = true;
+    const step = client.api.step(1);
+    const hash = client.api.stateHash();
+    const [a, b] = await Promise.allSettled([step, hash]);
+    expect(a.status === 'rejected' && a.reason).to.be.instanceOf(TimeoutError);
+    expect((a as PromiseRejectedResult).reason.message).to.equal('step() did not answer within 1000 ms');
+    expect(b.status === 'rejected' && b.reason).to.be.instanceOf(Error);
+    expect(deaths).to.deep.equal(['step() did not answer within 1000 ms']);
+    expect([client.alive, client.died, worker.terminated]).to.deep.equal([false, 'step() did not answer within 1000 ms', true]);
+    let late: unknown = null;
+    await client.api.step(1).catch((e) => (late = e));
+    expect(late).to.be.instanceOf(WorkerDiedError);
+  });
+
+  it('an error in the worker fails pending calls with WorkerDiedError and is reported once', async () => {
+    const worker = new FakeWorker(true);
+    const deaths: string[] = [];
+    const client = await start(worker, { onDeath: (r) => deaths.push(r) });
+    await client.api.load(SCENE);
+    worker.mute = true;
+    const pending = client.api.step(5).catch((e) => e);
+    worker.dispatchEvent(new ErrorEvent('error', { message: 'boom', cancelable: true }));
+    worker.dispatchEvent(new ErrorEvent('error', { message: 'again', cancelable: true }));
+    const error = await pending;
+    expect(error).to.be.instanceOf(WorkerDiedError);
+    expect(error.message).to.equal('step(): no answer, the engine worker died (uncaught error in the worker: boom)');
+    expect(deaths).to.deep.equal(['uncaught error in the worker: boom']);
+    expect(worker.terminated).to.equal(true);
+  });
+
+  it('dispose(): pending and later calls fail with EngineStoppedError', async () => {
+    const worker = new FakeWorker(true);
+    const client = await start(worker);
+    await client.api.load(SCENE);
+    worker.mute = true;
+    const pending = client.api.step(1).catch((e) => e);
+    client.dispose();
+    expect(await pending).to.be.instanceOf(EngineStoppedError);
+    expect(await client.api.step(1).catch((e) => e)).to.be.instanceOf(EngineStoppedError);
+    expect(worker.terminated).to.equal(true);
+    await waitFor(() => !client.alive, 'disposed');
+  });
+});
