@@ -156,10 +156,12 @@ export type RigidMaterial = Omit<ColliderOptions, 'shape' | 'parts'>;
 
 /** A rigid body: a shape (an outline or a disc) with a pose, velocities, a type and a material. */
 export interface RigidBodyOptions extends RigidMaterial {
-  /** Outline in body coordinates, any simple polygon (a concave one collides as convex parts). Give points or radius. */
+  /** Outline in body coordinates, any simple polygon (a concave one collides as convex parts). Give points, radius or outlines. */
   points?: Vec2[];
   /** A disc of this radius about the body's origin. */
   radius?: number;
+  /** Several outlines making one body (a drum's wall, a table), instead of points or radius. */
+  outlines?: Vec2[][];
   /** Where the body's origin goes, and its rotation (radians). */
   x: number;
   y: number;
@@ -214,10 +216,10 @@ export interface JointOptions {
   anchorB?: Vec2;
   /** Prismatic: the direction B slides along, in world coordinates now (it turns with A). Default (1, 0). */
   axis?: Vec2;
-  /** Revolute: limits of B's angle relative to A from where they are now (radians; both to enable). */
+  /** Revolute: limits of A's angle relative to B (the world's angle is 0), from where they are now (radians). */
   lowerAngle?: number;
   upperAngle?: number;
-  /** Revolute: a motor turning B relative to A at this speed (rad/s), with at most `maxMotorTorque`. */
+  /** Revolute: a motor turning A relative to B at this speed (rad/s, positive turns x toward y), with at most `maxMotorTorque`. */
   motorSpeed?: number;
   maxMotorTorque?: number;
   /** Prismatic: translation limits along the axis; distance: length limits (a rope: lower 0). */
@@ -230,6 +232,8 @@ export interface JointOptions {
   damping?: number;
   /** Softness of the point or distance constraint (inverse stiffness); 0 = rigid (default). */
   compliance?: number;
+  /** Whether the two joined bodies still collide with each other. Default false. */
+  collideConnected?: boolean;
 }
 
 export type BodyKind = 'particle' | 'rope' | 'cloth' | 'rigid' | 'soft' | 'ragdoll' | 'custom';

@@ -56,6 +56,7 @@ export const FIELDS = {
       bodyAlive: CALLBACK,
       bodyParticlesOf: CALLBACK,
       rigidContacts: `${PER_STEP} (cleared by restore())`,
+      jointedPairs: 'rebuilt from the joints by restore()',
       rigidNarrowPhase: SCRATCH,
       rigidRows: 'rebuilt from the bodies by restore()',
       rigidCount: 'rebuilt from the bodies by restore()',

@@ -28,7 +28,7 @@ import type { Limits, ParticleOptions, PinOptions, RayCastHit, SpringOptions, Ve
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { JointOptions, MassInfo, Pose, RigidBodyOptions } from './options.js';
-import { circleShape, polygonShape, withDensity } from './rigid/outline.js';
+import { circleShape, compoundShape, polygonShape, withDensity } from './rigid/outline.js';
 import { BODY_TYPES, BodyType, type BodyTypeName, type RigidShapeSource } from './rigid/shapes.js';
 import { applyForceAt, applyImpulseAt, initRigidRow, poseOf, setPose, setType } from './rigid/bodies.js';
 import { jointRow, type JointSide } from './rigid/joint-setup.js';
@@ -607,8 +607,8 @@ export class World {
    */
   addRigidBody(o: RigidBodyOptions): Handle {
     if (o == null || typeof o !== 'object') throw new TypeError(`rigid body options must be an object, got ${String(o)}`);
-    if ((o.points === undefined) === (o.radius === undefined)) throw new TypeError('a rigid body needs either points (an outline) or radius (a disc)');
-    const shape = o.points !== undefined ? polygonShape(o.points) : circleShape(o.radius as number);
+    if ([o.points, o.radius, o.outlines].filter((v) => v !== undefined).length !== 1) throw new TypeError('a rigid body needs one of points (an outline), radius (a disc) or outlines');
+    const shape = o.points !== undefined ? polygonShape(o.points) : o.outlines !== undefined ? compoundShape(o.outlines) : circleShape(o.radius as number);
     const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
     if (o.mass !== undefined && o.density !== undefined) throw new TypeError('give a rigid body either mass or density, not both');
     const density = o.mass !== undefined ? positive('mass', o.mass) / shape.source.mass : positive('density', o.density ?? 1);
@@ -722,14 +722,14 @@ export class World {
     if (body != null && particle !== undefined) throw new TypeError(`give ${bodyName} or ${particleName}, not both`);
     if (particle !== undefined) {
       const row = this.ctx.particleIds.slotOf(particle, particleName);
-      return { row, body: this.ctx.sleep.particleBody[row] ?? -1, rigid: false };
+      return { row, rigid: false };
     }
-    if (body == null) return { row: -1, body: -1, rigid: false };
+    if (body == null) return { row: -1, rigid: false };
     const slot = this.ctx.bodies.slotOf(body, bodyName);
     const rigid = this.ctx.rigidShapes.source(slot) !== undefined;
     const members = this.ctx.bodies.particles[slot];
     if (!rigid && members.length !== 1) throw new RangeError(`${bodyName} ${body} is built of ${members.length} particles: join it by one of them (${particleName})`);
-    return { row: members[0], body: slot, rigid };
+    return { row: members[0], rigid };
   }
 
   // ---- pointer drag and queries ------------------------------------------------------------------------------

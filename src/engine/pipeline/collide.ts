@@ -2,7 +2,7 @@
 // narrow phase (contact features) → last step's friction anchors and the approach speeds for restitution.
 import type { StepContext } from './context.js';
 import { recordApproachSpeeds } from './contacts.js';
-import { rebuildColliders } from './topology.js';
+import { pairKey, rebuildColliders } from './topology.js';
 import { ColliderKind } from './colliders.js';
 import { RigidShapeKind } from '../rigid/shapes.js';
 import { boundsContacts } from './rigid-narrowphase.js';
@@ -80,6 +80,7 @@ export function shouldCollide(ctx: StepContext, a: number, b: number): boolean {
   const c = ctx.colliders;
   const asleep = ctx.sleep.asleep;
   if ((c.isStatic[a] || asleep[a]) && (c.isStatic[b] || asleep[b])) return false;
+  if (ctx.jointedPairs.size > 0 && ctx.jointedPairs.find(pairKey(a, b)) >= 0) return false;
   const ga = c.group[a];
   if (ga !== 0 && ga === c.group[b]) return ga > 0;
   return (c.category[a] & c.mask[b]) !== 0 && (c.category[b] & c.mask[a]) !== 0;
@@ -133,3 +134,4 @@ function rigidBoundingBox(
   c.maxX[s] = maxX + m;
   c.maxY[s] = maxY + m;
 }
+

@@ -9,6 +9,7 @@ import { PairList, type BroadPhase } from './broadphase.js';
 import { NarrowPhase } from './narrowphase.js';
 import { AnchorCache, Contacts } from './contacts.js';
 import { Sleep } from './sleep.js';
+import { KeyTable } from './key-table.js';
 import { CollisionEvents, EventTracker } from './events.js';
 import { shouldCollide } from './collide.js';
 import { RigidNarrowPhase } from './rigid-narrowphase.js';
@@ -50,6 +51,8 @@ export class StepContext {
   readonly rigidNarrowPhase = new RigidNarrowPhase();
   /** Friction anchors of last step's rigid contact points, by feature. */
   readonly rigidAnchors = new RigidAnchorCache();
+  /** Body pairs joined by a joint that does not let them collide (rebuilt with the topology). */
+  readonly jointedPairs = new KeyTable();
   /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */
   rigidRows = new Int32Array(16);
   rigidCount = 0;

@@ -56,8 +56,19 @@ export function rebuildTopology(ctx: StepContext): void {
     link(g.b[r], g.c[r]);
   }
   for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) link(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+  // Joints: their bodies (from their rows), sleeping links, and the jointed pairs that do not collide.
   const j = ctx.constraints.joints;
-  for (let r = 0; r < j.count; r++) if (j.b[r] >= 0) link(j.a[r], j.b[r]);
+  const jointed = ctx.jointedPairs;
+  jointed.reset(j.count);
+  for (let r = 0; r < j.count; r++) {
+    const a = owner[j.a[r]];
+    const b = j.b[r] >= 0 ? owner[j.b[r]] : -1;
+    j.bodyA[r] = a;
+    j.bodyB[r] = b;
+    if (a < 0 || b < 0 || a === b) continue;
+    links.push([a, b]);
+    if (j.collide[r] === 0) jointed.insert(pairKey(a, b), 1);
+  }
   sleep.setLinks(links);
   listRigidRows(ctx);
   let free = 0;
@@ -104,4 +115,9 @@ function listRigidRows(ctx: StepContext): void {
     ctx.rigidRows[ctx.rigidCount++] = i;
     if (type === BodyType.Kinematic && p.flags[i] & ParticleFlag.Kinematic) ctx.kinematicRows[ctx.kinematicCount++] = i;
   }
+}
+
+/** A key for an unordered pair of body slots. */
+export function pairKey(a: number, b: number): number {
+  return a < b ? a * 4194304 + b : b * 4194304 + a;
 }

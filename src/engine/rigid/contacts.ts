@@ -536,17 +536,18 @@ function applyNormalImpulse(c: RigidContacts, r: BodyRows, i: number, P: number,
  * still within a substep's approach of touching (a box landing flat by a hair's tilt) joins it.
  */
 export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
-  const n = c.count;
-  for (let i = 0; i < n; i++) {
+  for (let i = 0, n = c.count; i < n; i++) {
     if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
       solvePairVelocity(c, r, i, h);
       i++;
-      continue;
-    }
-    if (c.lambdaN[i] <= 0) continue;
-    loadVelocity(c, r, i, 0, true);
-    if (vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
+    } else pointVelocity(c, r, i);
   }
+}
+
+function pointVelocity(c: RigidContacts, r: BodyRows, i: number): void {
+  if (c.lambdaN[i] <= 0) return;
+  loadVelocity(c, r, i, 0, true);
+  if (vel[1] > 0) applyNormalImpulse(c, r, i, (vel[6] - vel[0]) / vel[1], vel[2], vel[3]);
 }
 
 function solvePairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number): void {

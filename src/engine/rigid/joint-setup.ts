@@ -6,16 +6,15 @@ import { finite, nonNegative, oneOf, positive } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
 import { JointKind } from './joints.js';
 
-/** A joint's side: a row of the particle store (−1: the world) and its body slot (−1: none). */
+/** A joint's side: a row of the particle store (−1: the world). */
 export interface JointSide {
   row: number;
-  body: number;
   /** True for a rigid body (turns; its anchor may be off its centre); false for a particle or the world. */
   rigid: boolean;
 }
 
 /** The values of a Joints row. */
-export type JointRow = Record<'kind' | 'a' | 'b' | 'rAx' | 'rAy' | 'rBx' | 'rBy' | 'compliance' | 'damping' | 'refAngle' | 'lower' | 'upper' | 'limit' | 'motor' | 'motorSpeed' | 'maxMotorTorque' | 'axisX' | 'axisY' | 'bodyA' | 'bodyB', number>;
+export type JointRow = Record<'kind' | 'a' | 'b' | 'rAx' | 'rAy' | 'rBx' | 'rBy' | 'compliance' | 'damping' | 'refAngle' | 'lower' | 'upper' | 'limit' | 'motor' | 'motorSpeed' | 'maxMotorTorque' | 'axisX' | 'axisY' | 'bodyA' | 'bodyB' | 'collide', number>;
 
 function vec(name: string, v: unknown): Vec2 {
   if (v == null || typeof v !== 'object') throw new TypeError(`${name} must be a point {x, y}, got ${String(v)}`);
@@ -45,7 +44,8 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   const angleB = B.row < 0 ? 0 : p.angle[B.row];
   const row: JointRow = {
     kind: 0, a: A.row, b: B.row, rAx: 0, rAy: 0, rBx: 0, rBy: 0, compliance: nonNegative('compliance', o.compliance ?? 0), damping: 0,
-    refAngle: angleB - angleA, lower: 0, upper: 0, limit: 0, motor: 0, motorSpeed: 0, maxMotorTorque: 0, axisX: 1, axisY: 0, bodyA: A.body, bodyB: B.body,
+    refAngle: angleA - angleB, lower: 0, upper: 0, limit: 0, motor: 0, motorSpeed: 0, maxMotorTorque: 0, axisX: 1, axisY: 0, bodyA: -1, bodyB: -1,
+    collide: o.collideConnected ? 1 : 0,
   };
   const aCentre = centre(p, A, { x: 0, y: 0 });
   // A particle side is held at the particle itself: that is the natural default anchor.

@@ -26,7 +26,7 @@ export type JointType = (typeof JOINT_KINDS)[number];
 export class Joints extends Table {
   readonly columns = [
     'kind', 'a', 'b', 'rAx', 'rAy', 'rBx', 'rBy', 'compliance', 'damping', 'refAngle', 'lower', 'upper', 'limit', 'motor', 'motorSpeed',
-    'maxMotorTorque', 'axisX', 'axisY', 'lambda', 'lambdaY', 'lambdaAngle', 'lambdaMotor', 'slot', 'bodyA', 'bodyB',
+    'maxMotorTorque', 'axisX', 'axisY', 'lambda', 'lambdaY', 'lambdaAngle', 'lambdaMotor', 'slot', 'bodyA', 'bodyB', 'collide',
   ] as const;
   kind = new Uint8Array(16);
   a = new Int32Array(16);
@@ -40,7 +40,7 @@ export class Joints extends Table {
   compliance = new Float64Array(16);
   /** Damping coefficient of a soft distance joint (force per unit of relative speed along it). */
   damping = new Float64Array(16);
-  /** Rest angle of B relative to A (θB − θA) for weld, prismatic and revolute limits. */
+  /** Rest angle of A relative to B (θA − θB; B's angle is 0 for the world) for weld, prismatic and revolute limits. */
   refAngle = new Float64Array(16);
   /** Limits: relative angle (revolute), translation along the axis (prismatic), length (distance). */
   lower = new Float64Array(16);
@@ -61,6 +61,8 @@ export class Joints extends Table {
   slot = new Int32Array(16);
   bodyA = new Int32Array(16);
   bodyB = new Int32Array(16);
+  /** 1: the two bodies still collide with each other (by default jointed bodies do not). */
+  collide = new Uint8Array(16);
 
   beginSubstep(): void {
     this.lambda.fill(0, 0, this.count);
@@ -178,21 +180,20 @@ function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number, a
   }
 }
 
-/** Turns A and B apart so the relative angle θB − θA changes by −e (one-sided limits pass the violated bound). */
-function correctAngle(r: BodyRows, a: number, b: number, e: number): number {
+/** Turns A and B so the relative angle θA − θB changes by −e (one-sided limits pass the violated bound). */
+function correctAngle(r: BodyRows, a: number, b: number, e: number): void {
   const iA = r.invInertia[a];
   const iB = b < 0 ? 0 : r.invInertia[b];
   const w = iA + iB;
-  if (w === 0) return 0;
+  if (w === 0) return;
   const dl = -e / w;
-  if (iA !== 0) turn(r, a, -iA * dl);
-  if (iB !== 0) turn(r, b, iB * dl);
-  return dl;
+  if (iA !== 0) turn(r, a, iA * dl);
+  if (iB !== 0) turn(r, b, -iB * dl);
 }
 
-/** Relative angle θB − θA (the world's angle is 0). */
+/** Relative angle θA − θB (the world's angle is 0). */
 function relativeAngle(r: BodyRows, a: number, b: number): number {
-  return (b < 0 ? 0 : r.angle[b]) - r.angle[a];
+  return r.angle[a] - (b < 0 ? 0 : r.angle[b]);
 }
 
 /** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
@@ -254,11 +255,11 @@ function anchorMotion(r: BodyRows, i: number, o: number, nx: number, ny: number)
 }
 
 /**
- * A motor drives the relative angle at `motorSpeed`: this substep's relative turn should be h·speed. The correction
- * is capped at the torque limit (|λ| ≤ τmax·h² over the substep).
+ * A motor turns A relative to B at `motorSpeed`: this substep's relative turn should be h·speed. The correction is
+ * capped at the torque limit (|λ| ≤ τmax·h² over the substep).
  */
 function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number, h: number): void {
-  const turned = (b < 0 ? 0 : r.angle[b] - r.pangle[b]) - (r.angle[a] - r.pangle[a]);
+  const turned = r.angle[a] - r.pangle[a] - (b < 0 ? 0 : r.angle[b] - r.pangle[b]);
   const e = turned - h * j.motorSpeed[i];
   const iA = r.invInertia[a];
   const iB = b < 0 ? 0 : r.invInertia[b];
@@ -271,8 +272,8 @@ function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number, h: 
   else if (total < -cap) total = -cap;
   const dl = total - before;
   j.lambdaMotor[i] = total;
-  if (iA !== 0) turn(r, a, -iA * dl);
-  if (iB !== 0) turn(r, b, iB * dl);
+  if (iA !== 0) turn(r, a, iA * dl);
+  if (iB !== 0) turn(r, b, -iB * dl);
 }
 
 /** Prismatic: no relative turn, B's anchor on A's axis line, and within [lower, upper] along it when limited. */

@@ -2,7 +2,7 @@
 // origin) and its mass properties. Setup-time code (it allocates).
 import { decompose } from '../collision/decompose.js';
 import { finite, positive } from '../validate.js';
-import { circleMass, polygonMass, type MassProperties } from './mass.js';
+import { circleMass, combineMass, polygonMass, type MassProperties } from './mass.js';
 import { cleanOutline, RigidShapeKind, type RigidShapeSource } from './shapes.js';
 
 /** A shape at density 1 (mass = area); withDensity() scales it. */
@@ -27,30 +27,52 @@ function sourceOf(kind: RigidShapeKind, parts: Float64Array[], radius: number, u
  * is the origin.
  */
 export function polygonShape(points: readonly { x: number; y: number }[]): RigidShape {
+  return compoundShape([points], 'points');
+}
+
+/**
+ * A body of several outlines (each any simple polygon, given in the body's coordinates; they may touch or overlap,
+ * overlaps count twice in the mass): a drum's wall, a table of legs and top. Convex parts of all of them, around the
+ * centre of mass of all of them.
+ */
+export function compoundShape(outlines: readonly (readonly { x: number; y: number }[])[], name = 'outlines'): RigidShape {
+  if (!Array.isArray(outlines) || outlines.length === 0) throw new RangeError(`${name} must be a non-empty list of outlines, got ${String(outlines)}`);
+  const pieces = outlines.map((points, k) => outlinePieces(points, outlines.length === 1 && name === 'points' ? 'points' : `${name}[${k}]`));
+  const unit = combineMass(pieces.map((p) => p.unit));
+  const flat = pieces.flatMap((p) =>
+    p.parts.map((part) => {
+      const out = new Float64Array(part.length * 2);
+      part.forEach((q, k) => {
+        out[2 * k] = q.x - unit.centroidX;
+        out[2 * k + 1] = q.y - unit.centroidY;
+      });
+      return out;
+    }),
+  );
+  return { source: sourceOf(RigidShapeKind.Polygon, flat, 0, unit) };
+}
+
+/** One outline's convex parts (cleaned) and its mass properties at density 1. */
+function outlinePieces(points: readonly { x: number; y: number }[], name: string): { parts: { x: number; y: number }[][]; unit: MassProperties } {
   if (!Array.isArray(points) || points.length < 3) {
-    throw new RangeError(`points must be a list of at least 3 points, got ${Array.isArray(points) ? points.length : String(points)}`);
+    throw new RangeError(`${name} must be a list of at least 3 points, got ${Array.isArray(points) ? points.length : String(points)}`);
   }
-  const xs = points.map((p, k) => finite(`points[${k}].x`, p?.x));
-  const ys = points.map((p, k) => finite(`points[${k}].y`, p?.y));
+  const xs = points.map((p, k) => finite(`${name}[${k}].x`, p?.x));
+  const ys = points.map((p, k) => finite(`${name}[${k}].y`, p?.y));
   const clean = cleanOutline(xs, ys);
   const unit = polygonMass(clean.xs, clean.ys, 1);
   if (!(unit.area > 0) || !Number.isFinite(unit.area) || !Number.isFinite(unit.inertia)) {
-    throw new RangeError(`points must enclose a finite, non-zero area, got area ${unit.area}`);
+    throw new RangeError(`${name} must enclose a finite, non-zero area, got area ${unit.area}`);
   }
-  const cx = unit.centroidX;
-  const cy = unit.centroidY;
   const outline = clean.xs.map((x, k) => ({ x, y: clean.ys[k] }));
   const parts = isConvex(clean.xs, clean.ys) ? [outline] : decompose(outline).map((part) => part.map((k) => outline[k]));
-  const flat = parts.map((part) => {
-    const c = cleanOutline(part.map((p) => p.x), part.map((p) => p.y));
-    const out = new Float64Array(c.xs.length * 2);
-    c.xs.forEach((x, k) => {
-      out[2 * k] = x - cx;
-      out[2 * k + 1] = c.ys[k] - cy;
-    });
-    return out;
-  });
-  return { source: sourceOf(RigidShapeKind.Polygon, flat, 0, unit) };
+  return {
+    parts: parts.map((part) => {
+      const c = cleanOutline(part.map((p) => p.x), part.map((p) => p.y));
+      return c.xs.map((x, k) => ({ x, y: c.ys[k] }));
+    }),
+    unit,
+  };
 }
 
 /** A disc's shape: radius r about the centre of mass. */

@@ -1,0 +1,368 @@
+// Rigid bodies against analytic answers: a disc rolling down a slope, a box holding or sliding on it, bounce heights
+// e²·h, a fast box stopped dead by a thin wall, a domino's toppling time, a revolute pendulum's period, stacks and a
+// pyramid that stand (a heavy box placed on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
+// colliding with rigid bodies.
+import { expect } from 'chai';
+import { createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
+
+const g = 9.81;
+const box = (hw: number, hh: number): Vec2[] => [
+  { x: -hw, y: -hh },
+  { x: hw, y: -hh },
+  { x: hw, y: hh },
+  { x: -hw, y: hh },
+];
+
+function steps(world: World, n: number, each?: (k: number) => void): void {
+  for (let k = 1; k <= n; k++) {
+    world.step();
+    each?.(k);
+  }
+}
+
+/** A 40-wide static slab whose top face passes through the origin at angle θ (descending to the right, y down). */
+function slope(world: World, theta: number, friction: number): { t: Vec2; n: Vec2 } {
+  const t = { x: Math.cos(theta), y: Math.sin(theta) };
+  const n = { x: Math.sin(theta), y: -Math.cos(theta) };
+  world.addRigidBody({ points: box(20, 0.5), x: -0.5 * n.x, y: -0.5 * n.y, angle: theta, type: 'static', friction });
+  return { t, n };
+}
+
+describe('rigid bodies: motion on a slope', () => {
+  const theta = (20 * Math.PI) / 180;
+
+  it('a solid disc rolls (1/3)·g·sinθ·t² in 2 s within 2%, with ω·r = v within 2%', () => {
+    const world = new World({ sleeping: false });
+    const { t, n } = slope(world, theta, 1);
+    const r = 0.5;
+    const start = { x: -10 * t.x + r * n.x, y: -10 * t.y + r * n.y };
+    const disc = world.addRigidBody({ radius: r, x: start.x, y: start.y, friction: 1 });
+    steps(world, 120);
+    const p = world.bodyPose(disc);
+    const along = (p.x - start.x) * t.x + (p.y - start.y) * t.y;
+    const expected = (g * Math.sin(theta) * 4) / 3;
+    const v = world.bodyVelocity(disc);
+    const speed = v.x * t.x + v.y * t.y;
+    const spin = world.bodyAngularVelocity(disc) * r;
+    console.log(`      disc on 20°: ${along.toFixed(4)} m (analytic ${expected.toFixed(4)}), v ${speed.toFixed(3)}, ω·r ${spin.toFixed(3)}`);
+    expect(along).to.be.closeTo(expected, 0.02 * expected);
+    expect(spin).to.be.closeTo(speed, 0.02 * speed);
+    // It stays on the surface.
+    expect((p.x - start.x) * n.x + (p.y - start.y) * n.y).to.be.closeTo(0, 1e-3);
+  });
+
+  it('a box holds with μ above tanθ and slides ½·g·(sinθ − μ·cosθ)·t² below it, within 2%', () => {
+    const moved = (mu: number) => {
+      const world = new World({ sleeping: false });
+      const { t, n } = slope(world, theta, mu);
+      const start = { x: -10 * t.x + 0.5 * n.x, y: -10 * t.y + 0.5 * n.y };
+      const b = world.addRigidBody({ points: box(0.5, 0.5), x: start.x, y: start.y, angle: theta, friction: mu });
+      steps(world, 120);
+      const p = world.bodyPose(b);
+      return (p.x - start.x) * t.x + (p.y - start.y) * t.y;
+    };
+    expect(Math.abs(moved(0.5))).to.be.lessThan(1e-4);
+    const slid = moved(0.2);
+    const expected = 0.5 * g * (Math.sin(theta) - 0.2 * Math.cos(theta)) * 4;
+    console.log(`      box on 20°, μ 0.2: ${slid.toFixed(4)} m (analytic ${expected.toFixed(4)})`);
+    expect(slid).to.be.closeTo(expected, 0.02 * expected);
+  });
+});
+
+describe('rigid bodies: impacts', () => {
+  it('a box dropped flat from h bounces to e²·h within 0.05·h for e in {0, 0.25, 0.5, 0.75, 1}, without turning', () => {
+    const h = 2;
+    for (const e of [0, 0.25, 0.5, 0.75, 1]) {
+      const world = new World({ sleeping: false });
+      world.addRigidBody({ points: box(10, 0.5), x: 0, y: 0.5, type: 'static' });
+      const b = world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -h - 0.5, restitution: e });
+      let peak = Infinity;
+      let bounced = false;
+      let fell = false;
+      steps(world, 240, () => {
+        const v = world.bodyVelocity(b).y;
+        if (v > 0.5) fell = true;
+        if (fell && v < 0) bounced = true;
+        if (bounced) peak = Math.min(peak, world.bodyPose(b).y);
+      });
+      const height = bounced ? -(peak + 0.5) : 0;
+      expect(height, `e = ${e}`).to.be.closeTo(e * e * h, 0.05 * h);
+      expect(Math.abs(world.bodyPose(b).angle), `e = ${e}: turned`).to.be.lessThan(1e-6);
+    }
+  });
+
+  it('with e = 0 a box at 300 u/s is stopped by a 0.1-thick wall and leaves it at < 0.5 u/s, not through it', () => {
+    const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
+    world.addRigidBody({ points: box(0.05, 2), x: 10, y: 0, type: 'static' });
+    const b = world.addRigidBody({ points: box(0.25, 0.25), x: 0, y: 0, vx: 300 });
+    steps(world, 60);
+    const p = world.bodyPose(b);
+    const v = world.bodyVelocity(b);
+    expect(p.x).to.be.closeTo(9.7, 1e-3);
+    expect(Math.hypot(v.x, v.y)).to.be.lessThan(0.5);
+    expect(Math.abs(p.angle)).to.be.lessThan(1e-6);
+  });
+});
+
+describe('rigid bodies: mass properties and rotation', () => {
+  it("a box's inertia is m(w² + h²)/12; an L-shaped polygon's centroid and inertia are the exact integrals", () => {
+    const world = new World();
+    const b = world.addRigidBody({ points: box(1, 0.25), x: 3, y: 4, angle: 0.7, density: 2 });
+    const m = world.bodyMassInfo(b);
+    expect(m.mass).to.be.closeTo(2 * 2 * 0.5, 1e-12);
+    expect(m.inertia).to.be.closeTo((m.mass * (4 + 0.25)) / 12, 1e-12);
+    expect([m.centerX, m.centerY]).to.deep.equal([3, 4]);
+    // L: [0,2]×[0,1] ∪ [0,1]×[1,2], area 3, centroid (5/6, 5/6), I = 11/6 at density 1.
+    const L = world.addRigidBody({ points: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, { x: 0, y: 2 }], x: 10, y: 0 });
+    const l = world.bodyMassInfo(L);
+    expect(l.mass).to.be.closeTo(3, 1e-12);
+    expect(l.inertia).to.be.closeTo(11 / 6, 1e-12);
+    expect(l.centerX).to.be.closeTo(10 + 5 / 6, 1e-12);
+    expect(l.centerY).to.be.closeTo(5 / 6, 1e-12);
+    // The pose is the origin the points were given about, not the centroid.
+    expect(world.bodyPose(L)).to.deep.equal({ x: 10, y: 0, angle: 0 });
+  });
+
+  it('a domino tipped past balance topples in the analytic time of a block pivoting on its edge, within 3%', () => {
+    const world = new World({ sleeping: false });
+    world.addRigidBody({ points: box(5, 0.5), x: 0, y: 0.5, type: 'static', friction: 1 });
+    const w = 0.2;
+    const H = 1;
+    const beta = Math.atan(w / H);
+    const psi0 = 0.05;
+    const phi0 = beta + psi0;
+    // Bottom-right corner at the origin, turned by φ0 about it.
+    const c = Math.cos(phi0);
+    const s = Math.sin(phi0);
+    const domino = world.addRigidBody({ points: box(w / 2, H / 2), x: -c * (w / 2) + s * (H / 2), y: -s * (w / 2) - c * (H / 2), angle: phi0, friction: 1 });
+    // ψ'' = (3g / 2d)·sin ψ about the edge (I = m·d²/3, d the diagonal); time from ψ0 to φ = 1 rad by RK4.
+    const k = (3 * g) / (2 * Math.hypot(w, H));
+    const phiEnd = 1;
+    let psi = psi0;
+    let om = 0;
+    let analytic = 0;
+    const dt = 1e-5;
+    while (psi + beta < phiEnd) {
+      const f = (p: number) => k * Math.sin(p);
+      const k1x = om;
+      const k1v = f(psi);
+      const k2x = om + (dt / 2) * k1v;
+      const k2v = f(psi + (dt / 2) * k1x);
+      const k3x = om + (dt / 2) * k2v;
+      const k3v = f(psi + (dt / 2) * k2x);
+      const k4x = om + dt * k3v;
+      const k4v = f(psi + dt * k3x);
+      psi += (dt / 6) * (k1x + 2 * k2x + 2 * k3x + k4x);
+      om += (dt / 6) * (k1v + 2 * k2v + 2 * k3v + k4v);
+      analytic += dt;
+    }
+    let previous = phi0;
+    let measured = 0;
+    for (let n = 1; n <= 300 && measured === 0; n++) {
+      world.step();
+      const a = world.bodyPose(domino).angle;
+      if (a >= phiEnd) measured = (n - 1 + (phiEnd - previous) / (a - previous)) / 60;
+      previous = a;
+    }
+    console.log(`      domino: ${measured.toFixed(4)} s to 1 rad (analytic ${analytic.toFixed(4)})`);
+    expect(measured).to.be.closeTo(analytic, 0.03 * analytic);
+  });
+});
+
+describe('rigid bodies: joints', () => {
+  /** Exact period of a physical pendulum of amplitude θ0 (complete elliptic integral by the AGM). */
+  function period(Ip: number, d: number, theta0: number): number {
+    let a = 1;
+    let b = Math.cos(theta0 / 2);
+    for (let i = 0; i < 30; i++) [a, b] = [(a + b) / 2, Math.sqrt(a * b)];
+    return 4 * Math.sqrt(Ip / (g * d)) * (Math.PI / (2 * a));
+  }
+
+  it('a revolute pendulum swings with the exact large-angle period within 1% and loses < 5% of its amplitude in 10 s', () => {
+    const L = 2;
+    const theta0 = 1.2;
+    const world = new World({ sleeping: false, substeps: 20 });
+    const bob = world.addRigidBody({ radius: 0.1, x: L * Math.sin(theta0), y: L * Math.cos(theta0), collide: false });
+    world.addJoint({ type: 'revolute', a: bob, anchor: { x: 0, y: 0 } });
+    const T = period(0.5 * 0.1 * 0.1 + L * L, L, theta0);
+    const crossings: number[] = [];
+    let previous = theta0;
+    let late = 0;
+    let stretch = 0;
+    steps(world, 600, (n) => {
+      const p = world.bodyPose(bob);
+      const angle = Math.atan2(p.x, p.y);
+      if (previous > 0 && angle <= 0) crossings.push((n - angle / (angle - previous)) / 60);
+      previous = angle;
+      if (n > 540) late = Math.max(late, Math.abs(angle));
+      stretch = Math.max(stretch, Math.abs(Math.hypot(p.x, p.y) - L));
+    });
+    const measured = (crossings[crossings.length - 1] - crossings[0]) / (crossings.length - 1);
+    console.log(`      pendulum: period ${measured.toFixed(4)} s (exact ${T.toFixed(4)}), amplitude ${late.toFixed(4)} of ${theta0} after 10 s`);
+    expect(measured).to.be.closeTo(T, 0.01 * T);
+    expect(late).to.be.greaterThan(0.95 * theta0);
+    expect(stretch).to.be.lessThan(1e-6);
+  });
+
+  it('weld, prismatic (with limits), distance and spring joints hold what they promise', () => {
+    const world = new World({ sleeping: false });
+    // Weld: a plank welded to a static post keeps its angle and anchor under gravity.
+    const post = world.addRigidBody({ points: box(0.1, 0.1), x: 0, y: 0, type: 'static' });
+    const plank = world.addRigidBody({ points: box(1, 0.05), x: 1, y: 0 });
+    world.addJoint({ type: 'weld', a: post, b: plank, anchor: { x: 0, y: 0 } });
+    // Prismatic: a slider on a horizontal rail through (5, 0), limited to [−1, 1].
+    const slider = world.addRigidBody({ points: box(0.2, 0.2), x: 5, y: 0, vx: 3 });
+    world.addJoint({ type: 'prismatic', a: post, b: slider, anchor: { x: 5, y: 0 }, axis: { x: 1, y: 0 }, lower: -1, upper: 1 });
+    // Distance: a box hanging 2 below the world point (10, 0); spring: a box on a spring of k = 100.
+    const hung = world.addRigidBody({ points: box(0.2, 0.2), x: 10, y: 2 });
+    world.addJoint({ type: 'distance', a: hung, anchorA: { x: 10, y: 1.8 }, anchorB: { x: 10, y: 0 } });
+    const bob = world.addRigidBody({ points: box(0.1, 0.1), x: 20, y: 1, collide: false });
+    world.addJoint({ type: 'spring', a: bob, anchorB: { x: 20, y: 0 }, stiffness: 100, damping: 2 });
+    steps(world, 300);
+    const pl = world.bodyPose(plank);
+    expect(Math.abs(pl.angle)).to.be.lessThan(1e-3);
+    expect(pl.x).to.be.closeTo(1, 1e-3);
+    expect(pl.y).to.be.closeTo(0, 1e-3);
+    const sl = world.bodyPose(slider);
+    expect(sl.y).to.be.closeTo(0, 1e-3);
+    expect(sl.x).to.be.within(4 - 1e-3, 6 + 1e-3);
+    expect(Math.abs(sl.angle)).to.be.lessThan(1e-3);
+    const hp = world.bodyPose(hung);
+    expect(Math.hypot(hp.x - 10, hp.y - 0.2 - 0) - 1.8).to.be.closeTo(0, 2e-3);
+    // Spring at rest: stretch = m·g / k (mass 0.04) from rest length 1, within 1% after the damping settles it.
+    const m = world.bodyMassInfo(bob).mass;
+    expect(world.bodyPose(bob).y).to.be.closeTo(1 + (m * g) / 100, 0.01 * (1 + (m * g) / 100));
+  });
+
+  it('a revolute motor with enough torque turns a wheel at its speed; with too little it stalls against a load', () => {
+    const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
+    const wheel = world.addRigidBody({ radius: 0.5, x: 0, y: 0, collide: false });
+    world.addJoint({ type: 'revolute', a: wheel, anchor: { x: 0, y: 0 }, motorSpeed: 3, maxMotorTorque: 100 });
+    steps(world, 60);
+    expect(world.bodyAngularVelocity(wheel)).to.be.closeTo(3, 1e-3);
+    // A lever with a 1 kg-equivalent weight 1 away: the torque needed is m·g·1; a motor capped below holds nothing.
+    const w2 = new World({ sleeping: false });
+    const lever = w2.addRigidBody({ points: box(1, 0.05), x: 1, y: 0, density: 10, collide: false });
+    w2.addJoint({ type: 'revolute', a: lever, anchor: { x: 0, y: 0 }, motorSpeed: 0, maxMotorTorque: 0.1 * w2.bodyMassInfo(lever).mass * g });
+    steps(w2, 60);
+    expect(w2.bodyPose(lever).angle).to.be.greaterThan(0.5);
+  });
+});
+
+describe('rigid bodies: stacks, pyramids, heavy loads', () => {
+  function pyramid(world: World, base: number, size = 1): Handle[] {
+    const out: Handle[] = [];
+    for (let row = 0; row < base; row++) {
+      for (let k = 0; k < base - row; k++) out.push(world.addRigidBody({ points: box(size / 2, size / 2), x: (k - (base - row - 1) / 2) * size, y: -(0.5 + row) * size }));
+    }
+    return out;
+  }
+
+  it('a 20-box stack and a base-20 pyramid stand for 10 s (top drift < 0.05 box)', () => {
+    const world = new World({ sleeping: false, gravity: { x: 0, y: 10 } });
+    world.addRigidBody({ points: box(40, 0.5), x: 0, y: 0.5, type: 'static' });
+    const stack: Handle[] = [];
+    for (let k = 0; k < 20; k++) stack.push(world.addRigidBody({ points: box(0.5, 0.5), x: -30, y: -(0.5 + k) }));
+    const boxes = pyramid(world, 20);
+    const top = boxes[boxes.length - 1];
+    const t0 = world.bodyPose(top);
+    steps(world, 600);
+    const s = world.bodyPose(stack[19]);
+    const p = world.bodyPose(top);
+    console.log(`      stack top drift ${(s.x + 30).toExponential(2)}, ${(s.y + 19.5).toExponential(2)}; pyramid top ${(p.x - t0.x).toExponential(2)}, ${(p.y - t0.y).toExponential(2)}`);
+    expect(Math.hypot(s.x + 30, s.y + 19.5)).to.be.lessThan(0.05);
+    expect(Math.hypot(p.x - t0.x, p.y - t0.y)).to.be.lessThan(0.05);
+    expect(Math.abs(p.angle)).to.be.lessThan(0.01);
+  });
+
+  it('a box 100× heavier placed on a stack and on a pyramid of light boxes is held up', () => {
+    const world = new World({ sleeping: false, gravity: { x: 0, y: 10 } });
+    world.addRigidBody({ points: box(40, 0.5), x: 0, y: 0.5, type: 'static' });
+    const stack: Handle[] = [];
+    for (let k = 0; k < 10; k++) stack.push(world.addRigidBody({ points: box(0.5, 0.5), x: -20, y: -(0.5 + k) }));
+    const boxes = pyramid(world, 10);
+    const onStack = world.addRigidBody({ points: box(0.5, 0.5), x: -20, y: -10.5, density: 100 });
+    const onPyramid = world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -10.5, density: 100 });
+    steps(world, 300);
+    for (const b of [...stack, ...boxes]) expect(Math.abs(world.bodyPose(b).angle), 'a light box tipped').to.be.lessThan(0.01);
+    // Held up within a tenth of a box (the light boxes under it give a little: one sweep a substep).
+    expect(world.bodyPose(onStack).y).to.be.closeTo(-10.5, 0.1);
+    expect(world.bodyPose(onPyramid).y).to.be.closeTo(-10.5, 0.1);
+    expect(Math.abs(world.bodyPose(onPyramid).x)).to.be.lessThan(0.01);
+  });
+});
+
+describe('rigid bodies: kinematic bodies and particles', () => {
+  it('a kinematic drum turning at 0.25 rad/s keeps 200 boxes inside', () => {
+    const world = new World();
+    const R = 6;
+    const n = 32;
+    const outlines: Vec2[][] = [];
+    for (let k = 0; k < n; k++) {
+      const a0 = (k / n) * 2 * Math.PI;
+      const a1 = ((k + 1) / n) * 2 * Math.PI;
+      outlines.push([
+        { x: R * Math.cos(a0), y: R * Math.sin(a0) },
+        { x: (R + 0.5) * Math.cos(a0), y: (R + 0.5) * Math.sin(a0) },
+        { x: (R + 0.5) * Math.cos(a1), y: (R + 0.5) * Math.sin(a1) },
+        { x: R * Math.cos(a1), y: R * Math.sin(a1) },
+      ]);
+    }
+    const drum = world.addRigidBody({ outlines, x: 0, y: 0, type: 'kinematic', angularVelocity: 0.25 });
+    const boxes: Handle[] = [];
+    for (let y = -5; y <= 5 && boxes.length < 200; y += 0.6) for (let x = -5; x <= 5 && boxes.length < 200; x += 0.6) if (Math.hypot(x, y) < 5.2) boxes.push(world.addRigidBody({ points: box(0.25, 0.25), x, y }));
+    expect(boxes.length).to.equal(200);
+    let farthest = 0;
+    let carried = 0;
+    steps(world, 600, () => {
+      for (const b of boxes) {
+        const p = world.bodyPose(b);
+        farthest = Math.max(farthest, Math.hypot(p.x, p.y));
+      }
+    });
+    // The drum turned by 2.5 rad; friction carried the pile up its rising side (x > 0 when it turns x toward y... the
+    // pile's centre of mass leaves the bottom towards the side the wall moves up).
+    for (const b of boxes) carried += world.bodyPose(b).x;
+    expect(world.bodyPose(drum).angle).to.be.closeTo(2.5, 1e-9);
+    expect(farthest).to.be.lessThan(R);
+    expect(carried / boxes.length).to.be.lessThan(-0.2);
+  });
+
+  it('a cloth dropped on a turning box drapes over it without passing through, and a rope tied to a swinging box stays tied', () => {
+    const world = new World({ sleeping: false });
+    // A kinematic plank turning slowly, and a free cloth falling onto it.
+    const plank = world.addRigidBody({ points: box(1.5, 0.2), x: 0, y: 3, type: 'kinematic', angularVelocity: 0.2 });
+    const cloth = createCloth(world, { origin: { x: -1.2, y: 0 }, columns: 9, rows: 9, spacing: 0.3, pins: 'none', radius: 0.05, collide: true, friction: 0.8 });
+    // A box swinging on a revolute joint 2 to the left of its centre, with a rope tied to its bottom-right corner.
+    const swing = world.addRigidBody({ points: box(0.5, 0.25), x: 12, y: 2 });
+    world.addJoint({ type: 'revolute', a: swing, anchor: { x: 10, y: 2 } });
+    const rope = createRope(world, { from: { x: 12.5, y: 2.25 }, to: { x: 12.5, y: 5.25 }, segments: 12, pinStart: false });
+    const end = rope.particles[0];
+    world.addJoint({ type: 'revolute', a: swing, particleB: end, anchor: { x: 12.5, y: 2.25 } });
+    let tied = 0;
+    let deepest = 0;
+    steps(world, 180, () => {
+      const s = world.bodyPose(swing);
+      const cx = s.x + 0.5 * Math.cos(s.angle) - 0.25 * Math.sin(s.angle);
+      const cy = s.y + 0.5 * Math.sin(s.angle) + 0.25 * Math.cos(s.angle);
+      const e = world.getPosition(end);
+      tied = Math.max(tied, Math.hypot(e.x - cx, e.y - cy));
+      // How far any cloth particle is inside the plank (in the plank's frame), beyond its radius.
+      const p = world.bodyPose(plank);
+      for (const h of cloth.particles) {
+        const q = world.getPosition(h);
+        const u = (q.x - p.x) * Math.cos(p.angle) + (q.y - p.y) * Math.sin(p.angle);
+        const v = -(q.x - p.x) * Math.sin(p.angle) + (q.y - p.y) * Math.cos(p.angle);
+        deepest = Math.max(deepest, Math.min(1.5 + 0.05 - Math.abs(u), 0.2 + 0.05 - Math.abs(v)));
+      }
+    });
+    // The cloth hangs over the plank (fallen off, it would be tens of units below after 3 s).
+    let my = 0;
+    for (const h of cloth.particles) my += world.getPosition(h).y / cloth.particles.length;
+    console.log(`      rope tied within ${tied.toExponential(2)}; deepest cloth particle in the plank ${deepest.toExponential(2)}; cloth mean y ${my.toFixed(3)}`);
+    expect(tied).to.be.lessThan(1e-3);
+    expect(deepest).to.be.lessThan(0.02);
+    expect(my, "the cloth fell off").to.be.lessThan(4);
+    expect(world.bodyPose(swing).angle).to.not.be.closeTo(0, 0.1);
+  });
+});
