@@ -29,8 +29,7 @@ export interface LoopHooks {
 const MAX_STEPS = 100000;
 
 export class StepLoop {
-  /** Playing (read only). */
-  running = false;
+  #running = false;
   /** A test fault (debugFault('throw')): the next tick throws. */
   failNextTick = false;
   readonly #hooks: LoopHooks;
@@ -43,17 +42,21 @@ export class StepLoop {
     this.#clock = clock;
   }
 
+  get running(): boolean {
+    return this.#running;
+  }
+
   /** Starts the loop; false when it was running already. */
   play(): boolean {
-    if (this.running) return false;
-    this.running = true;
+    if (this.#running) return false;
+    this.#running = true;
     this.#lastTick = this.#clock.now();
     this.#schedule(0);
     return true;
   }
 
   pause(): void {
-    this.running = false;
+    this.#running = false;
     if (this.#timer !== null) this.#clock.clearTimeout(this.#timer);
     this.#timer = null;
   }
@@ -75,7 +78,7 @@ export class StepLoop {
 
   #tick = (): void => {
     this.#timer = null;
-    if (!this.running) return;
+    if (!this.#running) return;
     if (this.failNextTick) {
       // Uncaught on purpose: the loop stops here and the page sees the worker's error event.
       this.failNextTick = false;

@@ -62,12 +62,16 @@ export class HostSettings {
       this.worldOptions = { ...this.worldOptions, bounds: w.bounds && { ...w.bounds } };
     });
     // The world's own setters validate these.
-    for (const field of ['timestep', 'substeps', 'iterations', 'broadphase', 'narrowphase'] as const) {
+    const copy = <K extends 'timestep' | 'substeps' | 'iterations' | 'broadphase' | 'narrowphase'>(field: K) =>
       set(field, () => {
-        Object.assign(w, { [field]: params[field] });
-        Object.assign(this.params, { [field]: params[field] });
+        (w as Pick<World, K>)[field] = params[field] as unknown as World[K];
+        (this.params as Pick<HostParams, K>)[field] = params[field]!;
       });
-    }
+    copy('timestep');
+    copy('substeps');
+    copy('iterations');
+    copy('broadphase');
+    copy('narrowphase');
     if (params.debug !== undefined) this.params.debug = Boolean(params.debug);
     if (params.events !== undefined) this.params.events = Boolean(params.events);
     return errors;
