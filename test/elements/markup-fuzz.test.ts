@@ -1,6 +1,6 @@
 // Markup fuzzing: every attribute of every element, read from custom-elements.json (generated from the sources, so a
 // new attribute is fuzzed without touching this file), set to hostile values, both before the element connects and
-// on a live, running scene. For every value: an invalid one gives a `physics-error` naming the attribute and the
+// on a live scene. For every value: an invalid one gives a `physics-error` naming the attribute and the
 // value plus one console.warn saying the same; a valid one gives neither; nothing throws; the scene keeps stepping,
 // another body keeps moving, the published frames hold no NaN or Infinity; no value ever becomes markup.
 //
@@ -199,11 +199,15 @@ function verdict(attr: Attr, value: string): Verdict {
 // ---- scenes ----------------------------------------------------------------------------------------------------
 
 const SCENE_TAGS = new Set(['physics-scene', 'cloth-sim', 'ragdoll-sim']);
-/** Attributes the fixture needs on each target (a fuzzed one is put back to this value after its case). */
+/**
+ * Attributes the fixture needs on each target (a fuzzed one is put back to this value after its case). The scenes are
+ * paused: every step is one the checks take, so how far the probe moves does not depend on the machine's speed (a
+ * running scene's own steps between the kick and the reading could swing it back to where it was).
+ */
 const BASE: Record<string, Record<string, string>> = {
-  'physics-scene': { width: '16', height: '9' },
-  'cloth-sim': { columns: '6', rows: '5' },
-  'ragdoll-sim': { count: '2' },
+  'physics-scene': { width: '16', height: '9', paused: '' },
+  'cloth-sim': { columns: '6', rows: '5', paused: '' },
+  'ragdoll-sim': { count: '2', paused: '' },
   'physics-box': { x: '12', y: '4' },
   'physics-circle': { x: '12', y: '4' },
   'physics-polygon': { x: '12', y: '4', points: '0,0 1,0 0,1' },
@@ -422,7 +426,7 @@ async function settle(scene: PhysicsSceneElement): Promise<void> {
   }
 }
 
-/** Live: one running scene; each case sets the attribute, checks, and puts the base value back. */
+/** Live: one loaded scene; each case sets the attribute, checks, and puts the base value back. */
 async function fuzzLive(tag: string, cases: Case[]): Promise<number> {
   const rec = record();
   let scene: PhysicsSceneElement | null = null;
