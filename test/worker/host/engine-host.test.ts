@@ -1,7 +1,7 @@
 // The engine host without a worker (Node): a fake publisher and output, a fake clock for the loop. Scenes of every
 // body type, live edits, steps, grabs, snapshots with a frame overlay, diagnostics, frame encoding and bad input.
 import { expect } from 'chai';
-import { BODY_TYPES, RAGDOLL_JOINTS, buildScene, type BodyDescription } from '../../../src/engine/index.js';
+import { BODY_TYPES, RAGDOLL_JOINTS, World, type BodyDescription, type WorldSnapshot } from '../../../src/engine/index.js';
 import type { FramePatch, KeyedLink } from '../../../src/worker/protocol.js';
 import { EVERY_TYPE, decode, makeHost } from './harness.js';
 
@@ -56,8 +56,10 @@ describe('EngineHost (no worker)', () => {
     expect(start.poses[2]).to.deep.equal([7, 1, 0]);
     expect(start.poses[7][0]).to.be.closeTo(2, 1e-12);
     expect(start.poses[7][1]).to.be.closeTo(5, 1e-12);
-    // The same scene built straight into a World, stepped as often: the same state, the same numbers.
-    const reference = buildScene({ bodies: EVERY_TYPE.map((b) => clone(b.desc)) }).world;
+    // The host's world, copied into a World of our own by the engine's snapshot, stepped as often: the same state, the
+    // same numbers.
+    const reference = new World();
+    reference.restore(h.host.snapshot().world as WorldSnapshot);
     expect(h.host.step(40)).to.equal(40);
     for (let k = 0; k < 40; k++) reference.step();
     expect(h.host.stateHash()).to.equal(reference.stateHash());
@@ -312,7 +314,9 @@ describe('EngineHost (no worker)', () => {
     expect(h.host.restore(snap, patch)).to.equal(25);
     const g = decode(h.frame);
     // Static and pinned particles stay: the floor's 4, the cloth's 2 corners, the rope's first.
-    const { invMass } = buildScene({ bodies: EVERY_TYPE.map((b) => clone(b.desc)) }).world.particles;
+    const world = new World();
+    world.restore(snap.world as WorldSnapshot);
+    const { invMass } = world.particles;
     let fixed = 0;
     g.positions.forEach(([x], i) => {
       if (invMass[i] === 0) fixed++;
