@@ -7,13 +7,14 @@ export type {
 export { INTEGRATORS } from './integrate.js';
 export { createRope, type RopeOptions } from './builders/rope.js';
 export { createCloth, type ClothOptions, type ClothPins } from './builders/cloth.js';
-export { createBox, createPolygon, type BoxOptions, type PolygonOptions } from './builders/rigid.js';
+export { createBox, createPolygon, type BoxOptions, type PolygonOptions, type RigidOptions } from './builders/rigid.js';
 export { createSoftBody, type SoftBodyOptions } from './builders/softbody.js';
 export { createRagdoll, ragdollJoints, RAGDOLL_JOINTS, RAGDOLL_BONES, type RagdollOptions } from './builders/ragdoll.js';
 export type { Built } from './builders/common.js';
 export { hashColumns } from './hash.js';
 export { createCircle, type CircleOptions } from './builders/circle.js';
-export type { BodyOptions } from './builders/common.js';
+export type { BodyOptions, BodyModel } from './builders/common.js';
+export { BODY_MODELS } from './builders/common.js';
 export { buildScene, buildBody, BODY_TYPES, type SceneDescription, type BodyDescription, type BodyType } from './scene.js';
 export { catalogue, SCENE_NAMES, type SceneName, type CatalogueEntry } from './scenes/catalogue.js';
 export * from './collision/index.js';

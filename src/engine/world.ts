@@ -744,12 +744,12 @@ export class World {
     finite('y', y);
     const stiffness = positive('stiffness', options.stiffness ?? 2000);
     const pickRadius = nonNegative('pickRadius', options.pickRadius ?? 0.5);
-    ensureTopology(this.ctx);
+    this.poseShapes();
     const g = pickGrabPoint(this.ctx, x, y, pickRadius);
     if (!g) return null;
     wakeParticle(this.ctx, g.p0);
     const compliance = 1 / (stiffness * g.mass);
-    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, compliance }));
+    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, compliance, rx: g.rx, ry: g.ry }));
   }
 
   /** Moves a grab's target (the pointer). */
@@ -770,23 +770,29 @@ export class World {
   bodiesAtPoint(x: number, y: number): Handle[] {
     finite('x', x);
     finite('y', y);
-    ensureTopology(this.ctx);
-    return bodiesAtPoint(this.colliders, this.particles, x, y).map(this.ctx.bodyHandleOf);
+    this.poseShapes();
+    return bodiesAtPoint(this.colliders, this.particles, this.ctx.rigidShapes, x, y).map(this.ctx.bodyHandleOf);
   }
 
   /** Bodies whose collision shape overlaps the box. */
   bodiesInBox(minX: number, minY: number, maxX: number, maxY: number): Handle[] {
     [minX, minY, maxX, maxY].forEach((v, k) => finite(['minX', 'minY', 'maxX', 'maxY'][k], v));
-    ensureTopology(this.ctx);
-    return bodiesInBox(this.colliders, this.particles, minX, minY, maxX, maxY).map(this.ctx.bodyHandleOf);
+    this.poseShapes();
+    return bodiesInBox(this.colliders, this.particles, this.ctx.rigidShapes, minX, minY, maxX, maxY).map(this.ctx.bodyHandleOf);
   }
 
   /** The nearest body hit by the segment from (x0, y0) to (x1, y1), or null. */
   rayCast(x0: number, y0: number, x1: number, y1: number): RayCastHit | null {
     [x0, y0, x1, y1].forEach((v, k) => finite(['x0', 'y0', 'x1', 'y1'][k], v));
-    ensureTopology(this.ctx);
-    const hit = rayCast(this.colliders, this.particles, x0, y0, x1, y1);
+    this.poseShapes();
+    const hit = rayCast(this.colliders, this.particles, this.ctx.rigidShapes, x0, y0, x1, y1);
     return hit && { body: this.ctx.bodyHandleOf(hit.slot), x: hit.x, y: hit.y, normalX: hit.normalX, normalY: hit.normalY, distance: hit.distance };
+  }
+
+  /** Current bookkeeping and rigid shapes where their bodies are now (queries run between steps). */
+  private poseShapes(): void {
+    ensureTopology(this.ctx);
+    if (this.ctx.rigidShapes.polygonCount > 0) this.ctx.rigidShapes.updateWorld(this.particles);
   }
 
   // ---- time --------------------------------------------------------------------------------------------------
@@ -814,7 +820,7 @@ export class World {
   /** A hash of the full simulation state (positions, angles, velocities, masses): equal states give equal hashes. */
   stateHash(): string {
     const p = this.particles;
-    return hashColumns([p.x, p.y, p.px, p.py, p.vx, p.vy, p.invMass, p.alive], p.count, [this.stepCount, this.constraintCount]);
+    return hashColumns([p.x, p.y, p.px, p.py, p.vx, p.vy, p.invMass, p.alive, p.angle, p.omega, p.invInertia], p.count, [this.stepCount, this.constraintCount]);
   }
 
   /** The whole state as plain data (structured-cloneable: a worker can post it). */

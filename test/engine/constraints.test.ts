@@ -150,10 +150,10 @@ describe('constraints', () => {
     for (const i of world.bodyParticleIndices(doll.body)) expect(world.particles.y[i]).to.be.at.most(2);
   });
 
-  it('a pressure soft body keeps its area; a rigid box keeps its shape', () => {
+  it('a pressure soft body keeps its area; a particle-frame box keeps its shape', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, bounds: { minX: -5, minY: -10, maxX: 5, maxY: 0 } });
     const soft = createSoftBody(world, { center: { x: 0, y: -3 }, radius: 1, segments: 24 });
-    const box = createBox(world, { x: 3, y: -3, width: 1, height: 1, angle: 0.3 });
+    const box = createBox(world, { x: 3, y: -3, width: 1, height: 1, angle: 0.3, model: 'particles' });
     for (let k = 0; k < 300; k++) world.step();
     const area = (idx: Int32Array) => {
       let s = 0;

@@ -1,20 +1,20 @@
 import type { World } from '../world.js';
 import { finite, positive } from '../validate.js';
-import { colliderOf, transactional, type BodyOptions, type Built } from './common.js';
+import { colliderOf, transactional, type Built } from './common.js';
+import { createRigid, modelOf, type RigidOptions } from './rigid.js';
 
-export interface CircleOptions extends BodyOptions {
+export interface CircleOptions extends RigidOptions {
   x: number;
   y: number;
   radius: number;
   /** Default: the disc's area (density 1). */
   mass?: number;
-  vx?: number;
-  vy?: number;
 }
 
-/** A ball: one particle colliding as a circle of its radius. */
+/** A ball: a rigid disc that spins and rolls, or (model 'particles') one particle colliding as a circle. */
 export function createCircle(world: World, o: CircleOptions): Built {
   const radius = positive('radius', o?.radius);
+  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: finite('x', o.x), y: finite('y', o.y) }, undefined, radius);
   const mass = o.static ? Infinity : positive('mass', o.mass ?? Math.PI * radius * radius);
   const x = finite('x', o.x);
   const y = finite('y', o.y);

@@ -14,6 +14,10 @@ export function point(name: string, p: unknown): Vec2 {
   return { x: finite(`${name}.x`, v.x), y: finite(`${name}.y`, v.y) };
 }
 
+/** How a box, polygon or circle is made: a true rigid body, or a frame of particles and sticks (the thesis' model). */
+export type BodyModel = 'rigid' | 'particles';
+export const BODY_MODELS: readonly BodyModel[] = ['rigid', 'particles'];
+
 /** Collision and material options every builder takes. */
 export interface BodyOptions {
   /** Immovable: every particle gets infinite mass (walls, floors, obstacles). Default false. */

@@ -1,9 +1,22 @@
 import type { World } from '../world.js';
-import { finite, positive } from '../validate.js';
-import { colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { finite, oneOf, positive } from '../validate.js';
+import { BODY_MODELS, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
 
-export interface PolygonOptions extends BodyOptions {
+/** What a rigid box, polygon or circle takes besides its shape. */
+export interface RigidOptions extends BodyOptions {
+  /** 'rigid' (default): one rigid body (pose, velocity, spin, inertia from the shape); 'particles': a frame of
+   *  corner particles braced by sticks, deformable with `compliance` (the thesis' model). */
+  model?: BodyModel;
+  /** Moved by its velocities only (a moving platform, a turning drum); rigid model only. */
+  kinematic?: boolean;
+  /** Initial velocity and (rigid model) angular velocity, rad/s. */
+  vx?: number;
+  vy?: number;
+  angularVelocity?: number;
+}
+
+export interface PolygonOptions extends RigidOptions {
   /** Outline in body coordinates, at least 3 points, either orientation; any simple polygon (a concave one collides
    *  as convex parts from an ear-clipping + Hertel–Mehlhorn decomposition). */
   points: { x: number; y: number }[];
@@ -18,7 +31,7 @@ export interface PolygonOptions extends BodyOptions {
   compliance?: number;
 }
 
-export interface BoxOptions extends BodyOptions {
+export interface BoxOptions extends RigidOptions {
   x: number;
   y: number;
   width: number;
@@ -33,7 +46,40 @@ export interface BoxOptions extends BodyOptions {
  * n − 3 diagonals from vertex 0, which is 2n − 3 links, exactly what fixes a planar frame of n points.
  */
 export function createPolygon(world: World, o: PolygonOptions): Built {
+  if (modelOf(o) === 'rigid') return createRigid(world, o, o?.points);
   return createFrame(world, o, []);
+}
+
+/** The model asked for ('rigid' by default); a particle frame cannot be kinematic. */
+export function modelOf(o: RigidOptions | undefined): BodyModel {
+  const model = oneOf('model', o?.model ?? 'rigid', BODY_MODELS);
+  if (model === 'particles' && o?.kinematic) throw new TypeError("kinematic needs model 'rigid' (a particle frame has no prescribed motion)");
+  return model;
+}
+
+/** The rigid model of a box, polygon or circle: one rigid body (World.addRigidBody) and its one particle. */
+export function createRigid(world: World, o: RigidOptions & { x?: number; y?: number; angle?: number; mass?: number }, points?: { x: number; y: number }[], radius?: number): Built {
+  if (o == null || typeof o !== 'object') throw new TypeError(`options must be an object, got ${String(o)}`);
+  if (o.static && o.kinematic) throw new TypeError('a body is either static or kinematic, not both');
+  const body = world.addRigidBody({
+    points,
+    radius,
+    x: o.x ?? 0,
+    y: o.y ?? 0,
+    angle: o.angle,
+    vx: o.vx,
+    vy: o.vy,
+    angularVelocity: o.angularVelocity,
+    type: o.static ? 'static' : o.kinematic ? 'kinematic' : 'dynamic',
+    mass: o.static ? undefined : o.mass,
+    collide: o.collide,
+    friction: o.friction,
+    restitution: o.restitution,
+    category: o.category,
+    mask: o.mask,
+    group: o.group,
+  });
+  return { body, particles: world.bodyParticleHandles(body), constraints: [] };
 }
 
 /** createPolygon plus extra bracing links between the given vertex pairs. */
@@ -69,10 +115,11 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   });
 }
 
-/** A rigid box: 4 corner particles, 4 edges and 2 diagonals. (x, y) is its centre. */
+/** A box centred on (x, y): a rigid body, or (model 'particles') 4 corner particles, 4 edges and 2 diagonals. */
 export function createBox(world: World, o: BoxOptions): Built {
   const w = positive('width', o?.width) / 2;
   const h = positive('height', o.height) / 2;
+  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: finite('x', o.x), y: finite('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);
   // The fan gives one diagonal; the second keeps the frame square under large loads as well.
   return createFrame(
     world,

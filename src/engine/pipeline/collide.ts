@@ -37,11 +37,14 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   const { x, y, vx, vy, radius, invMass, omega, flags } = ctx.particles;
   const gravity = ctx.settings.gravity;
   const g = Math.sqrt(gravity.x ** 2 + gravity.y ** 2) * dt * dt;
+  // The step's reals for rigidBoundingBox (a typed array: no boxed doubles per call).
+  ctx.substepReals[0] = dt;
+  ctx.substepReals[1] = g;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
     const idx = c.particles[s];
     if (c.kind[s] === ColliderKind.Rigid) {
-      rigidBoundingBox(ctx, s, idx[0], dt, g, x, y, vx, vy, omega, radius, invMass, flags);
+      rigidBoundingBox(ctx, s, idx[0], x, y, vx, vy, omega, radius, invMass, flags);
       continue;
     }
     let minX = Infinity;
@@ -92,9 +95,11 @@ export function shouldCollide(ctx: StepContext, a: number, b: number): boolean {
  * pair filtering (it must wake and push what it meets).
  */
 function rigidBoundingBox(
-  ctx: StepContext, s: number, i: number, dt: number, g: number,
+  ctx: StepContext, s: number, i: number,
   x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, omega: Float64Array, radius: Float64Array, invMass: Float64Array, flags: Uint8Array,
 ): void {
+  const dt = ctx.substepReals[0];
+  const g = ctx.substepReals[1];
   const c = ctx.colliders;
   const shapes = ctx.rigidShapes;
   let minX: number;

@@ -51,6 +51,9 @@ export class StepContext {
   readonly rigidNarrowPhase = new RigidNarrowPhase();
   /** Friction anchors of last step's rigid contact points, by feature. */
   readonly rigidAnchors = new RigidAnchorCache();
+  /** Reals handed to per-body calls (a typed array: no boxed doubles per call): the substep's length and damping
+   *  factor for the rigid phases; the step's length and gravity's reach while bounding boxes are grown. */
+  readonly substepReals = new Float64Array(2);
   /** Body pairs joined by a joint that does not let them collide (rebuilt with the topology). */
   readonly jointedPairs = new KeyTable();
   /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */

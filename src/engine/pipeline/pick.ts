@@ -14,25 +14,35 @@ export interface GrabPoint {
   w1: number;
   w2: number;
   mass: number;
+  /** A rigid body's held point in its own frame (0, 0 otherwise). */
+  rx: number;
+  ry: number;
 }
 
 /** What a grab at (x, y) would hold, or null when nothing movable is there (the topology must be current). */
 export function pickGrabPoint(ctx: StepContext, x: number, y: number, pickRadius: number): GrabPoint | null {
   const p = ctx.particles;
   const c = ctx.colliders;
-  for (const s of bodiesAtPoint(c, p, x, y)) {
+  for (const s of bodiesAtPoint(c, p, ctx.rigidShapes, x, y)) {
     const idx = ctx.bodies.particles[s];
     const mass = bodyMass(ctx, idx);
     if (mass === 0) continue;
+    if (c.kind[s] === ColliderKind.Rigid) {
+      // Held at the very point pressed, in the body's frame (it turns with the body).
+      const i = idx[0];
+      const dx = x - p.x[i];
+      const dy = y - p.y[i];
+      return { p0: i, p1: i, p2: i, w0: 1, w1: 0, w2: 0, mass, rx: p.rc[i] * dx + p.rs[i] * dy, ry: -p.rs[i] * dx + p.rc[i] * dy };
+    }
     if (c.kind[s] === ColliderKind.Polygon) {
       // A triangle of the outline's fan holds the point: barycentric weights keep it fixed in the body.
       for (let k = 1; k + 1 < idx.length; k++) {
         const w = barycentric(p, idx[0], idx[k], idx[k + 1], x, y);
-        if (w) return { p0: idx[0], p1: idx[k], p2: idx[k + 1], w0: w[0], w1: w[1], w2: w[2], mass };
+        if (w) return { p0: idx[0], p1: idx[k], p2: idx[k + 1], w0: w[0], w1: w[1], w2: w[2], mass, rx: 0, ry: 0 };
       }
     }
     const nearest = nearestParticle(ctx, idx, x, y);
-    if (nearest >= 0) return { p0: nearest, p1: nearest, p2: nearest, w0: 1, w1: 0, w2: 0, mass };
+    if (nearest >= 0) return { p0: nearest, p1: nearest, p2: nearest, w0: 1, w1: 0, w2: 0, mass, rx: 0, ry: 0 };
   }
   let best = -1;
   let bestD2 = pickRadius * pickRadius;
@@ -49,7 +59,7 @@ export function pickGrabPoint(ctx: StepContext, x: number, y: number, pickRadius
   // particle belongs to, so dragging a cloth feels like dragging a box of the same mass.
   const owner = ctx.sleep.particleBody[best];
   const mass = owner >= 0 ? bodyMass(ctx, ctx.bodies.particles[owner]) : 1 / p.invMass[best];
-  return { p0: best, p1: best, p2: best, w0: 1, w1: 0, w2: 0, mass };
+  return { p0: best, p1: best, p2: best, w0: 1, w1: 0, w2: 0, mass, rx: 0, ry: 0 };
 }
 
 /** Total mass of the particles as when awake (a sleeping body's parked masses count). */

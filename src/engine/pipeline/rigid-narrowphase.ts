@@ -6,7 +6,7 @@ import type { Bounds } from '../bounds.js';
 import { ColliderKind, type Colliders } from './colliders.js';
 import type { PairList } from './broadphase.js';
 import { collideCircles, collidePolygonCircle, collidePolygons, ContactManifold, type PolygonRef } from '../rigid/collide.js';
-import { anchorKey, type RigidContacts } from '../rigid/contacts.js';
+import { writeAnchorKey, type RigidContacts } from '../rigid/contacts.js';
 import { RigidShapeKind, type RigidShapes } from '../rigid/shapes.js';
 import { grown } from '../table.js';
 
@@ -16,8 +16,11 @@ export class RigidNarrowPhase {
   private readonly viewB: PolygonRef = emptyRef();
   /** A particle-built convex part, loaded with its edge normals. */
   private readonly frame: PolygonRef = emptyRef();
-  /** The current pair's reals: margin, friction, restitution (typed array: no boxed doubles across calls). */
-  private readonly pair = new Float64Array(3);
+  /**
+   * The current pair's reals (a typed array: no boxed doubles across calls): friction, restitution, then A's and B's
+   * radius for the points being written (0: not round). The margin goes in the manifold's query.
+   */
+  private readonly pair = new Float64Array(4);
   tests = 0;
 
   run(pairs: PairList, c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Float64Array, slop: number, out: RigidContacts): void {
@@ -34,9 +37,9 @@ export class RigidNarrowPhase {
         a = b;
         b = t;
       }
-      this.pair[0] = motion[a] + motion[b] + slop;
-      this.pair[1] = Math.sqrt(c.friction[a] * c.friction[b]);
-      this.pair[2] = Math.max(c.restitution[a], c.restitution[b]);
+      this.manifold.query[0] = motion[a] + motion[b] + slop;
+      this.pair[0] = Math.sqrt(c.friction[a] * c.friction[b]);
+      this.pair[1] = Math.max(c.restitution[a], c.restitution[b]);
       const kb = c.kind[b];
       if (kb === ColliderKind.Rigid) this.rigidRigid(shapes, p, a, b, out);
       else if (kb === ColliderKind.Polygon) this.rigidFrame(c, shapes, p, a, b, out);
@@ -44,37 +47,50 @@ export class RigidNarrowPhase {
     }
   }
 
+  /** The circle of body slot s (row i) as the manifold's query circle at `at` (1: A's, 4: B's in collideCircles). */
+  private circle(shapes: RigidShapes, p: ParticleStore, s: number, i: number, at: number): void {
+    const q = this.manifold.query;
+    q[at] = p.x[i];
+    q[at + 1] = p.y[i];
+    q[at + 2] = shapes.radius[s];
+  }
+
   private rigidRigid(shapes: RigidShapes, p: ParticleStore, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
-    const margin = this.pair[0];
     const ia = shapes.row[a];
     const ib = shapes.row[b];
     const ka = shapes.kind[a];
     const kb = shapes.kind[b];
+    this.pair[2] = ka === RigidShapeKind.Circle ? shapes.radius[a] : 0;
+    this.pair[3] = kb === RigidShapeKind.Circle ? shapes.radius[b] : 0;
     if (ka === RigidShapeKind.Circle && kb === RigidShapeKind.Circle) {
       this.tests++;
-      if (collideCircles(p.x[ia], p.y[ia], shapes.radius[a], p.x[ib], p.y[ib], shapes.radius[b], margin, m)) this.emit(p, ia, ib, a, b, shapes.radius[a], shapes.radius[b], out);
+      this.circle(shapes, p, a, ia, 1);
+      this.circle(shapes, p, b, ib, 4);
+      if (collideCircles(m)) this.emit(p, ia, ib, a, b, out);
       return;
     }
     if (ka === RigidShapeKind.Circle) {
+      this.circle(shapes, p, a, ia, 1);
       for (let q = shapes.partStart[b], qEnd = q + shapes.partCount[b]; q < qEnd; q++) {
         this.tests++;
         shapes.viewPart(q, this.viewB);
-        if (collidePolygonCircle(this.viewB, p.x[ia], p.y[ia], shapes.radius[a], true, margin, m)) this.emit(p, ia, ib, a, b, shapes.radius[a], 0, out);
+        if (collidePolygonCircle(this.viewB, true, m)) this.emit(p, ia, ib, a, b, out);
       }
       return;
     }
+    if (kb === RigidShapeKind.Circle) this.circle(shapes, p, b, ib, 1);
     for (let q = shapes.partStart[a], qEnd = q + shapes.partCount[a]; q < qEnd; q++) {
       shapes.viewPart(q, this.viewA);
       if (kb === RigidShapeKind.Circle) {
         this.tests++;
-        if (collidePolygonCircle(this.viewA, p.x[ib], p.y[ib], shapes.radius[b], false, margin, m)) this.emit(p, ia, ib, a, b, 0, shapes.radius[b], out);
+        if (collidePolygonCircle(this.viewA, false, m)) this.emit(p, ia, ib, a, b, out);
         continue;
       }
       for (let r = shapes.partStart[b], rEnd = r + shapes.partCount[b]; r < rEnd; r++) {
         this.tests++;
         shapes.viewPart(r, this.viewB);
-        if (collidePolygons(this.viewA, this.viewB, margin, m)) this.emit(p, ia, ib, a, b, 0, 0, out);
+        if (collidePolygons(this.viewA, this.viewB, m)) this.emit(p, ia, ib, a, b, out);
       }
     }
   }
@@ -82,22 +98,25 @@ export class RigidNarrowPhase {
   /** A rigid body against a particle-built outline: B's side of each point is a point on one of its edges. */
   private rigidFrame(c: Colliders, shapes: RigidShapes, p: ParticleStore, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
-    const margin = this.pair[0];
     const ia = shapes.row[a];
     const vs = c.vertices;
+    const round = shapes.kind[a] === RigidShapeKind.Circle;
+    this.pair[2] = round ? shapes.radius[a] : 0;
+    this.pair[3] = 0;
+    if (round) this.circle(shapes, p, a, ia, 1);
     for (let r = c.partStart[b], rEnd = r + c.partCount[b]; r < rEnd; r++) {
       const start = c.partVertexStart[r];
       const count = c.partVertexCount[r];
       this.loadFrame(vs, start, count, p);
-      if (shapes.kind[a] === RigidShapeKind.Circle) {
+      if (round) {
         this.tests++;
-        if (collidePolygonCircle(this.frame, p.x[ia], p.y[ia], shapes.radius[a], true, margin, m)) this.emitEdges(p, ia, vs, start, count, a, b, shapes.radius[a], out);
+        if (collidePolygonCircle(this.frame, true, m)) this.emitEdges(p, ia, vs, start, count, a, b, out);
         continue;
       }
       for (let q = shapes.partStart[a], qEnd = q + shapes.partCount[a]; q < qEnd; q++) {
         this.tests++;
         shapes.viewPart(q, this.viewA);
-        if (collidePolygons(this.viewA, this.frame, margin, m)) this.emitEdges(p, ia, vs, start, count, a, b, 0, out);
+        if (collidePolygons(this.viewA, this.frame, m)) this.emitEdges(p, ia, vs, start, count, a, b, out);
       }
     }
   }
@@ -105,22 +124,30 @@ export class RigidNarrowPhase {
   /** A rigid body against each particle of B as a circle of its radius (a point when 0). */
   private rigidParticles(c: Colliders, shapes: RigidShapes, p: ParticleStore, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
-    const margin = this.pair[0];
+    const q = m.query;
     const ia = shapes.row[a];
     const members = c.particles[b];
-    const circle = shapes.kind[a] === RigidShapeKind.Circle;
+    const round = shapes.kind[a] === RigidShapeKind.Circle;
+    this.pair[2] = round ? shapes.radius[a] : 0;
+    if (round) this.circle(shapes, p, a, ia, 1);
     for (let k = 0; k < members.length; k++) {
       const ib = members[k];
-      const rb = p.radius[ib];
-      if (circle) {
+      this.pair[3] = p.radius[ib];
+      if (round) {
         this.tests++;
-        if (collideCircles(p.x[ia], p.y[ia], shapes.radius[a], p.x[ib], p.y[ib], rb, margin, m)) this.emit(p, ia, ib, a, b, shapes.radius[a], rb, out);
+        q[4] = p.x[ib];
+        q[5] = p.y[ib];
+        q[6] = p.radius[ib];
+        if (collideCircles(m)) this.emit(p, ia, ib, a, b, out);
         continue;
       }
-      for (let q = shapes.partStart[a], qEnd = q + shapes.partCount[a]; q < qEnd; q++) {
+      q[1] = p.x[ib];
+      q[2] = p.y[ib];
+      q[3] = p.radius[ib];
+      for (let part = shapes.partStart[a], end = part + shapes.partCount[a]; part < end; part++) {
         this.tests++;
-        shapes.viewPart(q, this.viewA);
-        if (collidePolygonCircle(this.viewA, p.x[ib], p.y[ib], rb, false, margin, m)) this.emit(p, ia, ib, a, b, 0, rb, out);
+        shapes.viewPart(part, this.viewA);
+        if (collidePolygonCircle(this.viewA, false, m)) this.emit(p, ia, ib, a, b, out);
       }
     }
   }
@@ -152,22 +179,21 @@ export class RigidNarrowPhase {
   }
 
   /** Writes the manifold's points with B's side a point on an edge of the particle-built part. */
-  private emitEdges(p: ParticleStore, ia: number, vs: Int32Array, start: number, count: number, a: number, b: number, radA: number, out: RigidContacts): void {
+  private emitEdges(p: ParticleStore, ia: number, vs: Int32Array, start: number, count: number, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
     for (let k = 0; k < m.count; k++) {
       const e = m.edgeB[k];
-      const i0 = vs[start + e];
-      const i1 = vs[start + (e + 1 === count ? 0 : e + 1)];
-      this.point(p, k, ia, radA, 0, m.alphaB[k], 0, out);
-      out.add(ia, i0, i1, a, b, m.count === 2 && k === 0 ? 1 : 0);
+      this.point(p, k, ia, a, -1, out);
+      out.next[8] = m.alphaB[k];
+      out.add(ia, vs[start + e], vs[start + (e + 1 === count ? 0 : e + 1)], a, b, m.count === 2 && k === 0 ? 1 : 0);
     }
   }
 
-  /** Writes the manifold's points between rows ia and ib (a rigid body or a particle), each side round when radius > 0. */
-  private emit(p: ParticleStore, ia: number, ib: number, a: number, b: number, radA: number, radB: number, out: RigidContacts): void {
+  /** Writes the manifold's points between rows ia and ib (a rigid body or a particle), round sides per pair[2, 3]. */
+  private emit(p: ParticleStore, ia: number, ib: number, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
     for (let k = 0; k < m.count; k++) {
-      this.point(p, k, ia, radA, radB, 0, anchorKey(a, b, m.feature[k]), out);
+      this.point(p, k, ia, a, b, out);
       // B's anchor in B's frame (a particle's frame is the world's: cos 1, sin 0).
       const f = out.next;
       const dx = m.pBx[k] - p.x[ib];
@@ -176,12 +202,16 @@ export class RigidNarrowPhase {
       const sb = p.rs[ib];
       f[4] = cb * dx + sb * dy;
       f[5] = -sb * dx + cb * dy;
+      f[7] = this.pair[3];
       out.add(ia, ib, -1, a, b, m.count === 2 && k === 0 ? 1 : 0);
     }
   }
 
-  /** Point k's reals shared by every kind of B into out.next: normal, A's anchor in A's frame, radii, α, material, depth. */
-  private point(p: ParticleStore, k: number, ia: number, radA: number, radB: number, alpha: number, key: number, out: RigidContacts): void {
+  /**
+   * Point k's reals into out.next: normal, A's anchor in A's frame, A's radius, material, depth, and the feature key
+   * its friction anchors persist by (b −1: a particle-built part's edge point, whose anchors are not kept).
+   */
+  private point(p: ParticleStore, k: number, ia: number, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
     const f = out.next;
     const dx = m.pAx[k] - p.x[ia];
@@ -194,13 +224,14 @@ export class RigidNarrowPhase {
     f[3] = -sa * dx + ca * dy;
     f[4] = 0;
     f[5] = 0;
-    f[6] = radA;
-    f[7] = radB;
-    f[8] = alpha;
-    f[9] = this.pair[1];
-    f[10] = this.pair[2];
+    f[6] = this.pair[2];
+    f[7] = 0;
+    f[8] = 0;
+    f[9] = this.pair[0];
+    f[10] = this.pair[1];
     f[11] = m.depth[k];
-    f[12] = key;
+    if (b >= 0) writeAnchorKey(f, a, b, m.feature[k]);
+    else f[12] = 0;
   }
 }
 
@@ -213,6 +244,7 @@ function emptyRef(): PolygonRef {
  * its disc, within the margin of a wall.
  */
 export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders, p: ParticleStore, motion: Float64Array, slop: number, friction: number, out: RigidContacts): void {
+  w6[6] = friction;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
     if (c.kind[s] !== ColliderKind.Rigid || c.isStatic[s]) continue;
@@ -220,6 +252,7 @@ export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders
     if (c.minX[s] > bounds.minX && c.maxX[s] < bounds.maxX && c.minY[s] > bounds.minY && c.maxY[s] < bounds.maxY) continue;
     const i = shapes.row[s];
     const margin = motion[s] + slop;
+    w6[7] = c.restitution[s];
     for (let wall = 0; wall < 4; wall++) {
       // Wall normal from the body (A) into the wall (B), and the wall's line n·q = level.
       const nx = wall === 0 ? -1 : wall === 1 ? 1 : 0;
@@ -229,13 +262,27 @@ export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders
       if (shapes.kind[s] === RigidShapeKind.Circle) {
         const r = shapes.radius[s];
         const depth = p.x[i] * nx + p.y[i] * ny + r - level;
-        if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, r * nx, r * ny, r, depth, friction, c.restitution[s], wall);
+        if (depth < -margin) continue;
+        w6[0] = nx;
+        w6[1] = ny;
+        w6[2] = r * nx;
+        w6[3] = r * ny;
+        w6[4] = r;
+        w6[5] = depth;
+        wallPoint(out, p, i, s, wall);
         continue;
       }
       for (let q = shapes.partStart[s], qEnd = q + shapes.partCount[s]; q < qEnd; q++) {
         for (let v = shapes.partVertexStart[q], vEnd = v + shapes.partVertexCount[q]; v < vEnd; v++) {
           const depth = shapes.wx[v] * nx + shapes.wy[v] * ny - level;
-          if (depth >= -margin) wallPoint(out, p, i, s, nx, ny, shapes.wx[v] - p.x[i], shapes.wy[v] - p.y[i], 0, depth, friction, c.restitution[s], ((v - shapes.partVertexStart[shapes.partStart[s]]) & 8191) * 4 + wall);
+          if (depth < -margin) continue;
+          w6[0] = nx;
+          w6[1] = ny;
+          w6[2] = shapes.wx[v] - p.x[i];
+          w6[3] = shapes.wy[v] - p.y[i];
+          w6[4] = 0;
+          w6[5] = depth;
+          wallPoint(out, p, i, s, ((v - shapes.partVertexStart[shapes.partStart[s]]) & 8191) * 4 + wall);
         }
       }
       // Two points on one wall (a box lying on the floor) are solved together in the velocity pass.
@@ -244,26 +291,35 @@ export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders
   }
 }
 
+/** The wall point being written: [nx, ny, A's point's offset x, y from its centre, A's radius, depth]. */
+const w6 = new Float64Array(8);
+
 /**
- * One point of a body (row i, slot s) against a wall with normal n (from the body into the wall): A's point is at
- * world offset (ox, oy) from its centre, `depth` past the wall; the wall's point is A's pushed back onto the wall.
+ * One point of a body (row i, slot s) against a wall with normal w6[0, 1] (from the body into the wall): A's point is
+ * at offset w6[2, 3] from its centre, w6[5] past the wall; the wall's point is A's pushed back onto the wall. The
+ * walls' friction is in w6[6], the body's restitution in w6[7].
  */
-function wallPoint(out: RigidContacts, p: ParticleStore, i: number, s: number, nx: number, ny: number, ox: number, oy: number, radA: number, depth: number, friction: number, restitution: number, feature: number): void {
+function wallPoint(out: RigidContacts, p: ParticleStore, i: number, s: number, feature: number): void {
   const f = out.next;
   const ca = p.rc[i];
   const sa = p.rs[i];
+  const nx = w6[0];
+  const ny = w6[1];
+  const ox = w6[2];
+  const oy = w6[3];
+  const depth = w6[5];
   f[0] = nx;
   f[1] = ny;
   f[2] = ca * ox + sa * oy;
   f[3] = -sa * ox + ca * oy;
   f[4] = p.x[i] + ox - depth * nx;
   f[5] = p.y[i] + oy - depth * ny;
-  f[6] = radA;
+  f[6] = w6[4];
   f[7] = 0;
   f[8] = 0;
-  f[9] = friction;
-  f[10] = restitution;
+  f[9] = w6[6];
+  f[10] = w6[7];
   f[11] = depth;
-  f[12] = anchorKey(s, -1, feature);
+  writeAnchorKey(f, s, -1, feature);
   out.add(i, -1, -1, s, -1, 0);
 }

@@ -22,7 +22,7 @@ import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { solveJoints } from '../rigid/joints.js';
-import { solveRigidContacts, solveRigidContactVelocities } from '../rigid/contacts.js';
+import { solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
 /** One step of `dt` seconds in `settings.substeps` substeps. */
 export function step(ctx: StepContext, dt: number): void {
@@ -60,15 +60,18 @@ export function substep(ctx: StepContext, h: number): void {
   const damp = 1 / (1 + h * settings.damping);
   accelerate(ctx, h);
   integrate(particles, h, damp, settings.integrator);
-  if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, h, damp);
-  if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, h);
+  const sub = ctx.substepReals;
+  sub[0] = h;
+  sub[1] = damp;
+  if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, sub);
+  if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, sub);
   placeRigidPins(ctx.constraints.pins, particles);
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
   ctx.rigidContacts.beginSubstep(settings.maxPushSpeed * h);
   for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
   updateVelocities(particles, h, settings.integrator);
-  if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, h);
+  if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
   if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
 }

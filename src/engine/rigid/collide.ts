@@ -9,6 +9,12 @@
 
 /** Up to two contact points of one pair of convex shapes. */
 export class ContactManifold {
+  /**
+   * The query's reals, written by the caller (a typed array: V8 boxes a double passed to a call it does not inline,
+   * and the narrow phase tests thousands of pairs a step): [0] margin; for circles [1, 2, 3] centre and radius of the
+   * circle (A's in collideCircles), [4, 5, 6] B's circle in collideCircles.
+   */
+  readonly query = new Float64Array(7);
   count = 0;
   /** Unit normal from A to B. */
   nx = 0;
@@ -75,8 +81,9 @@ function maxSeparation(P: PolygonRef, Q: PolygonRef): void {
 /**
  * Polygon A against polygon B. Returns false when they are more than `margin` apart (or no point survives clipping).
  */
-export function collidePolygons(A: PolygonRef, B: PolygonRef, margin: number, out: ContactManifold): boolean {
+export function collidePolygons(A: PolygonRef, B: PolygonRef, out: ContactManifold): boolean {
   out.count = 0;
+  const margin = out.query[0];
   maxSeparation(A, B);
   const sepA = found[0];
   if (sepA > margin) return false;
@@ -85,15 +92,16 @@ export function collidePolygons(A: PolygonRef, B: PolygonRef, margin: number, ou
   const sepB = found[0];
   if (sepB > margin) return false;
   const edgeB = found[1];
-  if (sepB > sepA + REFERENCE_TOLERANCE) return clip(B, edgeB, A, true, margin, out);
-  return clip(A, edgeA, B, false, margin, out);
+  if (sepB > sepA + REFERENCE_TOLERANCE) return clip(B, edgeB, A, true, out);
+  return clip(A, edgeA, B, false, out);
 }
 
 /**
  * Clips the incident edge of I against reference edge e of R (R = B when `flip`), keeping points within `margin`
  * of the reference face.
  */
-function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, margin: number, out: ContactManifold): boolean {
+function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, out: ContactManifold): boolean {
+  const margin = out.query[0];
   const r0 = R.start + e;
   const r1 = R.start + (e + 1 === R.count ? 0 : e + 1);
   const nx = R.nx[r0];
@@ -194,11 +202,16 @@ function clamp01(a: number): number {
 }
 
 /**
- * Polygon P against a circle (centre cx, cy, radius r). With `circleIsA` the circle is side A (the normal and the
- * points are swapped accordingly); otherwise P is A. For the polygon side as B, edgeB/alphaB say where on it.
+ * Polygon P against the circle of out.query[1..3] (centre x, y, radius). With `circleIsA` the circle is side A (the
+ * normal and the points are swapped accordingly); otherwise P is A. For the polygon side as B, edgeB/alphaB say where
+ * on it.
  */
-export function collidePolygonCircle(P: PolygonRef, cx: number, cy: number, r: number, circleIsA: boolean, margin: number, out: ContactManifold): boolean {
+export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: ContactManifold): boolean {
   out.count = 0;
+  const margin = out.query[0];
+  const cx = out.query[1];
+  const cy = out.query[2];
+  const r = out.query[3];
   // The edge the centre is farthest outside of (or least inside).
   let best = -Infinity;
   let edge = 0;
@@ -274,9 +287,17 @@ export function collidePolygonCircle(P: PolygonRef, cx: number, cy: number, r: n
   return true;
 }
 
-/** Circle A (centre, radius) against circle B. Coincident centres push along −y (up on a y-down canvas). */
-export function collideCircles(ax: number, ay: number, ra: number, bx: number, by: number, rb: number, margin: number, out: ContactManifold): boolean {
+/** Circle A (out.query[1..3]) against circle B (out.query[4..6]). Coincident centres push along −y (up on a y-down canvas). */
+export function collideCircles(out: ContactManifold): boolean {
   out.count = 0;
+  const q = out.query;
+  const margin = q[0];
+  const ax = q[1];
+  const ay = q[2];
+  const ra = q[3];
+  const bx = q[4];
+  const by = q[5];
+  const rb = q[6];
   const dx = bx - ax;
   const dy = by - ay;
   const reach = ra + rb + margin;

@@ -1,5 +1,5 @@
 import { Table } from '../table.js';
-import { turn, type BodyRows } from './rows.js';
+import { spin, turnBySpin, type BodyRows } from './rows.js';
 
 /** What a joint holds. */
 export const enum JointKind {
@@ -102,37 +102,52 @@ function loadAnchors(j: Joints, r: BodyRows, i: number): void {
   at[7] = r.y[b] + lby;
 }
 
-/** Generalised inverse mass of row i (−1: world) along a unit direction with lever cross product rn. */
-function weight(r: BodyRows, i: number, rn: number): number {
-  return i < 0 ? 0 : r.invMass[i] + r.invInertia[i] * rn * rn;
-}
+/**
+ * The reals of the correction being made (a typed array: V8 boxes a double passed to a call it does not inline, and
+ * joints are solved every substep): [error c, nx, ny, α̃, γ, rate of change, h].
+ */
+const arg = new Float64Array(7);
 
-/** Moves row i (−1: world) by λ·(dx, dy) at a lever with cross product rn. */
-function push(r: BodyRows, i: number, l: number, dx: number, dy: number, rn: number): void {
+/** What turnRow() turns a row by, times its inverse inertia (a typed array, like arg). */
+const by = new Float64Array(1);
+
+/** Turns row i (−1: the world, which does not turn) by sign × by[0] × its inverse inertia. */
+function turnRow(r: BodyRows, i: number, sign: number): void {
   if (i < 0) return;
-  const m = r.invMass[i] * l;
-  r.x[i] += m * dx;
-  r.y[i] += m * dy;
   const iI = r.invInertia[i];
-  if (iI !== 0) turn(r, i, iI * rn * l);
+  if (iI === 0) return;
+  spin[0] = sign * iI * by[0];
+  turnBySpin(r, i);
 }
 
 /**
- * A positional correction of error c along unit (nx, ny) (c > 0: A's anchor is ahead of B's along n), with the
- * joint's compliance and multiplier in `lambda`: A moves back along n, B forward. Returns nothing; the multiplier is
- * updated in place.
+ * A positional correction of error arg[0] along unit (arg[1], arg[2]) (c > 0: A's anchor is ahead of B's along n),
+ * with compliance α̃ = arg[3] and XPBD damping γ = arg[4] of the rate arg[5]: A moves back along n, B forward.
  */
-function correct(j: Joints, r: BodyRows, i: number, c: number, nx: number, ny: number, alphaT: number, gamma: number, rate: number): void {
+function correct(j: Joints, r: BodyRows, i: number): void {
   const a = j.a[i];
   const b = j.b[i];
+  const nx = arg[1];
+  const ny = arg[2];
+  const alphaT = arg[3];
+  const gamma = arg[4];
   const rnA = at[0] * ny - at[1] * nx;
   const rnB = at[4] * ny - at[5] * nx;
-  const w = weight(r, a, rnA) + weight(r, b, rnB);
+  const mA = r.invMass[a];
+  const mB = b < 0 ? 0 : r.invMass[b];
+  const w = mA + r.invInertia[a] * rnA * rnA + (b < 0 ? 0 : mB + r.invInertia[b] * rnB * rnB);
   if (w === 0) return;
-  const dl = (-c - alphaT * j.lambda[i] - gamma * rate) / ((1 + gamma) * w + alphaT);
+  const dl = (-arg[0] - alphaT * j.lambda[i] - gamma * arg[5]) / ((1 + gamma) * w + alphaT);
   j.lambda[i] += dl;
-  push(r, a, dl, nx, ny, rnA);
-  push(r, b, -dl, nx, ny, rnB);
+  r.x[a] += mA * dl * nx;
+  r.y[a] += mA * dl * ny;
+  by[0] = rnA * dl;
+  turnRow(r, a, 1);
+  if (b < 0) return;
+  r.x[b] -= mB * dl * nx;
+  r.y[b] -= mB * dl * ny;
+  by[0] = rnB * dl;
+  turnRow(r, b, -1);
 }
 
 /**
@@ -140,7 +155,8 @@ function correct(j: Joints, r: BodyRows, i: number, c: number, nx: number, ny: n
  * constraint), (K + α̃)·Δλ = −Δ − α̃·λ with K = Σ 1/m·I + 1/I·[r⊥ r⊥ᵀ]. Projected along the error direction alone, a
  * light body on a long lever (a pendulum's bob) would turn instead of swing and the anchors would part.
  */
-function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number, alphaT: number): void {
+function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
+  const alphaT = arg[3];
   const ex = at[2] - at[6];
   const ey = at[3] - at[7];
   if (ex === 0 && ey === 0 && alphaT === 0) return;
@@ -172,56 +188,58 @@ function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number, a
   j.lambdaY[i] += py;
   r.x[a] += mA * px;
   r.y[a] += mA * py;
-  if (iA !== 0) turn(r, a, iA * (lax * py - lay * px));
+  by[0] = lax * py - lay * px;
+  turnRow(r, a, 1);
   if (b >= 0) {
     r.x[b] -= mB * px;
     r.y[b] -= mB * py;
-    if (iB !== 0) turn(r, b, -iB * (lbx * py - lby * px));
+    by[0] = lbx * py - lby * px;
+    turnRow(r, b, -1);
   }
 }
 
-/** Turns A and B so the relative angle θA − θB changes by −e (one-sided limits pass the violated bound). */
-function correctAngle(r: BodyRows, a: number, b: number, e: number): void {
+/**
+ * Turns A and B towards their rest angle (θA − θB = refAngle: a weld, a prismatic joint) or, `limited`, back into
+ * refAngle + [lower, upper] (a revolute joint's limits), sharing the turn by inverse inertia.
+ */
+function correctAngle(j: Joints, r: BodyRows, i: number, a: number, b: number, limited: boolean): void {
+  const rel = r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i];
+  const e = !limited ? rel : rel < j.lower[i] ? rel - j.lower[i] : rel > j.upper[i] ? rel - j.upper[i] : 0;
+  if (e === 0) return;
   const iA = r.invInertia[a];
   const iB = b < 0 ? 0 : r.invInertia[b];
   const w = iA + iB;
   if (w === 0) return;
-  const dl = -e / w;
-  if (iA !== 0) turn(r, a, iA * dl);
-  if (iB !== 0) turn(r, b, -iB * dl);
-}
-
-/** Relative angle θA − θB (the world's angle is 0). */
-function relativeAngle(r: BodyRows, a: number, b: number): number {
-  return r.angle[a] - (b < 0 ? 0 : r.angle[b]);
+  by[0] = e / w;
+  turnRow(r, a, -1);
+  turnRow(r, b, 1);
 }
 
 /** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
+  arg[6] = h;
   for (let i = 0, n = j.count; i < n; i++) {
     const kind = j.kind[i] as JointKind;
     const a = j.a[i];
     const b = j.b[i];
     const alphaT = j.compliance[i] / h2;
+    arg[3] = alphaT;
+    arg[4] = 0;
+    arg[5] = 0;
     if (kind === JointKind.Prismatic) {
       solvePrismatic(j, r, i, a, b);
       continue;
     }
     if (kind === JointKind.Revolute || kind === JointKind.Weld) {
       // Angle first (weld lock, revolute limits and motor), then the point, which the angle's turn moved.
-      if (kind === JointKind.Weld) {
-        correctAngle(r, a, b, relativeAngle(r, a, b) - j.refAngle[i]);
-      } else {
-        if (j.motor[i] === 1) solveMotor(j, r, i, a, b, h);
-        if (j.limit[i] === 1) {
-          const rel = relativeAngle(r, a, b) - j.refAngle[i];
-          if (rel < j.lower[i]) correctAngle(r, a, b, rel - j.lower[i]);
-          else if (rel > j.upper[i]) correctAngle(r, a, b, rel - j.upper[i]);
-        }
+      if (kind === JointKind.Weld) correctAngle(j, r, i, a, b, false);
+      else {
+        if (j.motor[i] === 1) solveMotor(j, r, i, a, b);
+        if (j.limit[i] === 1) correctAngle(j, r, i, a, b, true);
       }
       loadAnchors(j, r, i);
-      correctPoint(j, r, i, a, b, alphaT);
+      correctPoint(j, r, i, a, b);
       continue;
     }
     // Distance: only outside [lower, upper]; a soft one is a damped spring.
@@ -234,31 +252,31 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
     if (c === 0 && alphaT === 0) continue;
     const nx = dx / len;
     const ny = dy / len;
-    // XPBD damping (Macklin et al. 2016): γ = α̃·β̃/h with β̃ = h²·β, and the constraint's rate of change this substep.
-    let gamma = 0;
-    let rate = 0;
+    arg[0] = c;
+    arg[1] = nx;
+    arg[2] = ny;
+    // XPBD damping (Macklin et al. 2016): γ = α̃·β̃/h with β̃ = h²·β, and the constraint's rate of change this substep:
+    // how far the two anchors moved apart along n (A's motion minus B's, each its centre's plus its turn × lever).
     if (j.damping[i] > 0 && alphaT > 0) {
-      gamma = (j.compliance[i] * j.damping[i]) / h;
-      rate = anchorMotion(r, a, 0, nx, ny) - anchorMotion(r, b, 4, nx, ny);
+      arg[4] = (j.compliance[i] * j.damping[i]) / h;
+      const tA = r.angle[a] - r.pangle[a];
+      let rate = (r.x[a] - r.px[a] - tA * at[1]) * nx + (r.y[a] - r.py[a] + tA * at[0]) * ny;
+      if (b >= 0) {
+        const tB = r.angle[b] - r.pangle[b];
+        rate -= (r.x[b] - r.px[b] - tB * at[5]) * nx + (r.y[b] - r.py[b] + tB * at[4]) * ny;
+      }
+      arg[5] = rate;
     }
-    correct(j, r, i, c, nx, ny, alphaT, gamma, rate);
+    correct(j, r, i);
   }
-}
-
-/** How far row i's anchor (lever at[o], at[o+1]) moved along (nx, ny) in this substep so far. */
-function anchorMotion(r: BodyRows, i: number, o: number, nx: number, ny: number): number {
-  if (i < 0) return 0;
-  const dθ = r.angle[i] - r.pangle[i];
-  const mx = r.x[i] - r.px[i] - dθ * at[o + 1];
-  const my = r.y[i] - r.py[i] + dθ * at[o];
-  return mx * nx + my * ny;
 }
 
 /**
  * A motor turns A relative to B at `motorSpeed`: this substep's relative turn should be h·speed. The correction is
  * capped at the torque limit (|λ| ≤ τmax·h² over the substep).
  */
-function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number, h: number): void {
+function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
+  const h = arg[6];
   const turned = r.angle[a] - r.pangle[a] - (b < 0 ? 0 : r.angle[b] - r.pangle[b]);
   const e = turned - h * j.motorSpeed[i];
   const iA = r.invInertia[a];
@@ -272,13 +290,14 @@ function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number, h: 
   else if (total < -cap) total = -cap;
   const dl = total - before;
   j.lambdaMotor[i] = total;
-  if (iA !== 0) turn(r, a, iA * dl);
-  if (iB !== 0) turn(r, b, -iB * dl);
+  by[0] = dl;
+  turnRow(r, a, 1);
+  turnRow(r, b, -1);
 }
 
 /** Prismatic: no relative turn, B's anchor on A's axis line, and within [lower, upper] along it when limited. */
 function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
-  correctAngle(r, a, b, relativeAngle(r, a, b) - j.refAngle[i]);
+  correctAngle(j, r, i, a, b, false);
   loadAnchors(j, r, i);
   const ca = r.rc[a];
   const sa = r.rs[a];
@@ -287,12 +306,16 @@ function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number)
   // Perpendicular error: A's anchor minus B's, across the axis.
   const dx = at[2] - at[6];
   const dy = at[3] - at[7];
-  const across = -dx * uy + dy * ux;
-  if (across !== 0) correct(j, r, i, across, -uy, ux, 0, 0, 0);
+  arg[0] = -dx * uy + dy * ux;
+  arg[1] = -uy;
+  arg[2] = ux;
+  if (arg[0] !== 0) correct(j, r, i);
   if (j.limit[i] !== 1) return;
   loadAnchors(j, r, i);
-  // Translation of B's anchor along the axis from A's.
+  // Translation of B's anchor along the axis from A's, pushed back within [lower, upper].
   const along = (at[6] - at[2]) * ux + (at[7] - at[3]) * uy;
-  if (along < j.lower[i]) correct(j, r, i, along - j.lower[i], -ux, -uy, 0, 0, 0);
-  else if (along > j.upper[i]) correct(j, r, i, along - j.upper[i], -ux, -uy, 0, 0, 0);
+  arg[0] = along < j.lower[i] ? along - j.lower[i] : along > j.upper[i] ? along - j.upper[i] : 0;
+  arg[1] = -ux;
+  arg[2] = -uy;
+  if (arg[0] !== 0) correct(j, r, i);
 }

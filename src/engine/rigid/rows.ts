@@ -21,12 +21,16 @@ export interface BodyRows {
   invInertia: Float64Array;
 }
 
+/** The angle turnBySpin() turns a row by (a typed array: a double passed to a call that is not inlined is boxed). */
+export const spin = new Float64Array(1);
+
 /**
- * Turns row i by d radians. Solver corrections turn a body by tiny angles many times a substep, so cos/sin are
+ * Turns row i by spin[0] radians. Solver corrections turn a body by tiny angles many times a substep, so cos/sin are
  * advanced by the Taylor series of the rotation (exact to rounding for |d| < 1e-3) instead of Math.cos/Math.sin; the
  * angle itself is summed exactly, and syncRotation() re-derives cos/sin from it once a step.
  */
-export function turn(b: BodyRows, i: number, d: number): void {
+export function turnBySpin(b: BodyRows, i: number): void {
+  const d = spin[0];
   b.angle[i] += d;
   const c = b.rc[i];
   const s = b.rs[i];
@@ -54,10 +58,12 @@ export function syncRotation(b: BodyRows, rows: Int32Array, count: number): void
 
 /**
  * The angular half of a substep's integration for the listed rigid rows: remember the angle, add the torque's
- * angular acceleration, turn by h·ω. (The linear half is the particles' integrator: x += h·(v + h·a).) Rows with
+ * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles). (The linear half is the particles' integrator: x += h·(v + h·a).) Rows with
  * inverse inertia 0 (static and kinematic bodies) keep their ω undamped.
  */
-export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32Array, count: number, h: number, damp: number): void {
+export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32Array, count: number, step: Float64Array): void {
+  const h = step[0];
+  const damp = step[1];
   const { angle, pangle, omega, invInertia } = b;
   for (let k = 0; k < count; k++) {
     const i = rows[k];
@@ -65,7 +71,10 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
     const iI = invInertia[i];
     const w = iI > 0 ? (omega[i] + h * torque[i] * iI) * damp : omega[i];
     omega[i] = w;
-    if (w !== 0) turn(b, i, h * w);
+    if (w !== 0) {
+      spin[0] = h * w;
+      turnBySpin(b, i);
+    }
   }
 }
 
@@ -73,7 +82,8 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
  * Kinematic rows move at their prescribed velocity (the particle integrator leaves rows of inverse mass 0 where they
  * are), so contacts see them move within each substep and a turning drum carries what lies in it.
  */
-export function integrateKinematic(b: BodyRows, rows: Int32Array, count: number, h: number): void {
+export function integrateKinematic(b: BodyRows, rows: Int32Array, count: number, step: Float64Array): void {
+  const h = step[0];
   const { x, y, vx, vy } = b;
   for (let k = 0; k < count; k++) {
     const i = rows[k];
@@ -83,9 +93,9 @@ export function integrateKinematic(b: BodyRows, rows: Int32Array, count: number,
 }
 
 /** ω = (θ − θ̄)/h after the position solve, as v = (x − x̄)/h is for positions. */
-export function updateAngularVelocity(b: BodyRows, rows: Int32Array, count: number, h: number): void {
+export function updateAngularVelocity(b: BodyRows, rows: Int32Array, count: number, step: Float64Array): void {
   const { angle, pangle, omega } = b;
-  const inv = 1 / h;
+  const inv = 1 / step[0];
   for (let k = 0; k < count; k++) {
     const i = rows[k];
     omega[i] = (angle[i] - pangle[i]) * inv;

@@ -224,7 +224,10 @@ export class Bindings {
 
   #build(r: BodyRecord): HostError | null {
     try {
-      const built = buildBody(this.world, r.desc);
+      // The page draws boxes, polygons and circles as particle frames until the renderer learns rigid poses.
+      const framed = r.desc && typeof r.desc === 'object' && (r.desc.type === 'box' || r.desc.type === 'circle' || r.desc.type === 'polygon');
+      const desc = framed ? ({ model: 'particles', ...r.desc } as BodyDescription) : r.desc;
+      const built = buildBody(this.world, desc);
       r.handle = built.body;
       r.descriptor = descriptorOf(r.desc.type);
       this.#keys.set(built.body, r.key);

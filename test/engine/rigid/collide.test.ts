@@ -87,7 +87,8 @@ describe('rigid manifolds', () => {
       const A = randomConvex(r, 0, 0, 1);
       const B = randomConvex(r, (r() - 0.5) * 3.5, (r() - 0.5) * 3.5, 0.3 + r());
       const depth = satDepth(A, B);
-      const hit = collidePolygons(A, B, 0, out);
+      out.query[0] = 0;
+      const hit = collidePolygons(A, B, out);
       if (!hit) {
         // Nothing reported: the shapes are apart (or touch within rounding).
         expect(depth, `pair ${t}`).to.be.lessThan(1e-9);
@@ -126,7 +127,8 @@ describe('rigid manifolds', () => {
     // y down: a unit box sitting on the ground's top face (y = 0) from above, sunk by 0.01.
     const box = polygonRef([-0.5, 0.5, 0.5, -0.5], [-0.99, -0.99, 0.01, 0.01]);
     const out = new ContactManifold();
-    expect(collidePolygons(box, ground, 0, out)).to.equal(true);
+    out.query[0] = 0;
+    expect(collidePolygons(box, ground, out)).to.equal(true);
     expect(out.count).to.equal(2);
     expect([out.nx, out.ny]).to.deep.equal([0, 1]);
     const xs = [out.pAx[0], out.pAx[1]].sort((p, q) => p - q);
@@ -135,10 +137,12 @@ describe('rigid manifolds', () => {
     for (let k = 0; k < 2; k++) expect(out.depth[k]).to.be.closeTo(0.01, 1e-12);
     // Speculative: lifted 0.05 with a margin of 0.1, two points of depth −0.05; with margin 0.01, none.
     const lifted = polygonRef([-0.5, 0.5, 0.5, -0.5], [-1.05, -1.05, -0.05, -0.05]);
-    expect(collidePolygons(lifted, ground, 0.1, out)).to.equal(true);
+    out.query[0] = 0.1;
+    expect(collidePolygons(lifted, ground, out)).to.equal(true);
     expect(out.count).to.equal(2);
     expect(out.depth[0]).to.be.closeTo(-0.05, 1e-12);
-    expect(collidePolygons(lifted, ground, 0.01, out)).to.equal(false);
+    out.query[0] = 0.01;
+    expect(collidePolygons(lifted, ground, out)).to.equal(false);
   });
 
   it('polygon–circle and circle–circle: points on both outlines, either side as A', () => {
@@ -150,7 +154,8 @@ describe('rigid manifolds', () => {
       const cy = (r() - 0.5) * 4;
       const rad = 0.1 + r();
       for (const circleIsA of [false, true]) {
-        if (!collidePolygonCircle(P, cx, cy, rad, circleIsA, 0, out)) {
+        out.query.set([0, cx, cy, rad]);
+        if (!collidePolygonCircle(P, circleIsA, out)) {
           // Apart: the centre is farther than the radius from the polygon (and outside it).
           expect(outlineDistance(P, cx, cy)).to.be.greaterThan(rad - 1e-9);
           continue;
@@ -166,10 +171,14 @@ describe('rigid manifolds', () => {
         expect(out.depth[0]).to.be.closeTo(rad - signed, 1e-9);
       }
     }
-    expect(collideCircles(0, 0, 1, 1.5, 0, 1, 0, out)).to.equal(true);
+    const circles = (ax: number, ay: number, ra: number, bx: number, by: number, rb: number, margin: number) => {
+      out.query.set([margin, ax, ay, ra, bx, by, rb]);
+      return collideCircles(out);
+    };
+    expect(circles(0, 0, 1, 1.5, 0, 1, 0)).to.equal(true);
     expect([out.nx, out.ny, out.depth[0], out.pAx[0], out.pBx[0]]).to.deep.equal([1, 0, 0.5, 1, 0.5]);
-    expect(collideCircles(0, 0, 1, 2.5, 0, 1, 0.4, out)).to.equal(false);
-    expect(collideCircles(0, 0, 1, 2.5, 0, 1, 0.6, out)).to.equal(true);
+    expect(circles(0, 0, 1, 2.5, 0, 1, 0.4)).to.equal(false);
+    expect(circles(0, 0, 1, 2.5, 0, 1, 0.6)).to.equal(true);
     expect(out.depth[0]).to.be.closeTo(-0.5, 1e-12);
   });
 });
