@@ -200,7 +200,7 @@ export class Bindings {
       const r = bodyRecord(b.key, b.desc);
       if (b.handle >= 0 && this.world.hasBody(b.handle)) {
         r.handle = b.handle;
-        r.descriptor = descriptorOf(b.desc.type);
+        r.descriptor = descriptorOf(b.desc.type)!;
         r.basis = b.pose.slice() as PoseBasis;
         this.#keys.set(b.handle, b.key);
       }
@@ -224,12 +224,11 @@ export class Bindings {
 
   #build(r: BodyRecord): HostError | null {
     try {
-      // The page draws boxes, polygons and circles as particle frames until the renderer learns rigid poses.
-      const framed = r.desc && typeof r.desc === 'object' && (r.desc.type === 'box' || r.desc.type === 'circle' || r.desc.type === 'polygon');
-      const desc = framed ? ({ model: 'particles', ...r.desc } as BodyDescription) : r.desc;
-      const built = buildBody(this.world, desc);
+      const descriptor = descriptorOf(r.desc?.type);
+      const model = descriptor?.model;
+      const built = buildBody(this.world, model ? ({ model, ...r.desc } as BodyDescription) : r.desc);
       r.handle = built.body;
-      r.descriptor = descriptorOf(r.desc.type);
+      r.descriptor = descriptor!;
       this.#keys.set(built.body, r.key);
       const { x, y } = this.world.particles;
       r.basis = measurePose(r.descriptor.pose, r.desc, this.world.bodyParticleIndices(built.body), x, y);

@@ -2,4 +2,4 @@
 import type { BodyDescriptor } from './descriptor.js';
 import { RIGID } from './pose.js';
 
-export const box: BodyDescriptor<'box'> = { grip: 'soft', pose: RIGID };
+export const box: BodyDescriptor<'box'> = { model: 'particles', grip: 'soft', pose: RIGID };

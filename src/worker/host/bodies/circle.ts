@@ -3,6 +3,7 @@ import type { BodyDescriptor } from './descriptor.js';
 import { DISC } from './pose.js';
 
 export const circle: BodyDescriptor<'circle'> = {
+  model: 'particles',
   grip: 'firm',
   pose: DISC,
   describe(t, d) {

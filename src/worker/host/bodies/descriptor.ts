@@ -1,7 +1,7 @@
 // What the host knows about one body type: how a grab holds it, where its pose is read, and which drawing facts it
 // puts in the topology. One module per type (box.ts, circle.ts, …), listed in index.ts. How a type is drawn is the
 // renderer's half, in src/render/bodies/: the worker never loads drawing code, the page never loads this.
-import type { BodyDescription, BodyType, Handle, World } from '../../../engine/index.js';
+import type { BodyDescription, BodyModel, BodyType, Handle, World } from '../../../engine/index.js';
 import type { TopologyBody } from '../../protocol.js';
 
 /** The description of a body of type T. */
@@ -34,6 +34,9 @@ export interface BuiltBody {
 }
 
 export interface BodyDescriptor<T extends BodyType = BodyType> {
+  /** The engine model the host builds it with unless its description names one (boxes, polygons and circles: particle
+   * frames, until frames carry rigid poses). */
+  readonly model?: BodyModel;
   /**
    * How a grab holds it. 'soft': at the point, pulled with the body's mass (rigid shapes). 'firm': its particle
    * under the point, held tight — a soft pull on one light particle would lose to the rigid links of the rest of

@@ -14,7 +14,7 @@ export type { BodyDescriptor, PoseBasis } from './descriptor.js';
 
 const DESCRIPTORS: { readonly [T in BodyType]: BodyDescriptor<T> } = { box, circle, polygon, rope, cloth, softbody, ragdoll };
 
-/** The descriptor of a body type the engine built (so a valid one). */
-export function descriptorOf(type: BodyType): BodyDescriptor {
-  return DESCRIPTORS[type] as BodyDescriptor;
+/** The descriptor of a body type, or undefined when `type` is none. */
+export function descriptorOf(type: unknown): BodyDescriptor | undefined {
+  return Object.hasOwn(DESCRIPTORS, type as PropertyKey) ? (DESCRIPTORS[type as BodyType] as BodyDescriptor) : undefined;
 }

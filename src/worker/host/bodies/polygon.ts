@@ -2,4 +2,4 @@
 import type { BodyDescriptor } from './descriptor.js';
 import { RIGID } from './pose.js';
 
-export const polygon: BodyDescriptor<'polygon'> = { grip: 'soft', pose: RIGID };
+export const polygon: BodyDescriptor<'polygon'> = { model: 'particles', grip: 'soft', pose: RIGID };
