@@ -8,7 +8,7 @@ import { Table } from './table.js';
  */
 export class ParticleStore extends Table {
   readonly columns = ['x', 'y', 'px', 'py', 'vx', 'vy', 'qx', 'qy', 'ax', 'ay', 'sx', 'sy', 'fx', 'fy', 'invMass', 'radius', 'alive', 'flags',
-    'angle', 'pangle', 'sangle', 'omega', 'rc', 'rs', 'torque', 'invInertia'] as const;
+    'angle', 'pangle', 'sangle', 'omega', 'rc', 'rs', 'qangle', 'torque', 'invInertia'] as const;
   /** Position now. */
   x = new Float64Array(16);
   y = new Float64Array(16);
@@ -41,9 +41,10 @@ export class ParticleStore extends Table {
   pangle = new Float64Array(16);
   sangle = new Float64Array(16);
   omega = new Float64Array(16);
-  /** cos and sin of the angle (1 and 0 for a particle), kept in step with it by the solvers. */
+  /** cos and sin of the reference angle qangle (1 and 0 for a particle), brought up to the angle once a substep. */
   rc = new Float64Array(16);
   rs = new Float64Array(16);
+  qangle = new Float64Array(16);
   /** Torque accumulated by the user for the next step (cleared after it). */
   torque = new Float64Array(16);
   /** 1 / moment of inertia about the centre of mass; 0 for particles and for static and kinematic bodies. */

@@ -4,6 +4,7 @@
 import { build as esbuild } from 'esbuild';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { measurePoses } from '../scenes.mjs';
 
 const root = fileURLToPath(new URL('../../../', import.meta.url));
 
@@ -74,14 +75,24 @@ function build(engine, scene, tethers) {
       const { x, y } = world.particles;
       const m = {};
       if (scene.boxes) {
-        m.polygons = dynamic.map((h) => {
-          const idx = particlesOf(h);
-          const p = new Float64Array(idx.length * 2);
-          idx.forEach((i, k) => ((p[2 * k] = x[i]), (p[2 * k + 1] = -y[i])));
-          return p;
+        // Rigid boxes by pose (y mirrored up, so angles turn the other way).
+        return measurePoses(dynamic, (h, out) => {
+          const p = world.bodyPose(h);
+          out[0] = p.x;
+          out[1] = -p.y;
+          out[2] = -p.angle;
+        });
+      }
+      if (scene.circles) {
+        // A rigid disc's one particle is its centre.
+        m.points = new Float64Array(dynamic.length * 2);
+        dynamic.forEach((h, k) => {
+          const i = particlesOf(h)[0];
+          m.points[2 * k] = x[i];
+          m.points[2 * k + 1] = -y[i];
         });
       } else {
-        const idx = scene.circles ? dynamic.map((h) => particlesOf(h)[0]) : Array.from(particlesOf(dynamic[0]));
+        const idx = Array.from(particlesOf(dynamic[0]));
         m.points = new Float64Array(idx.length * 2);
         idx.forEach((i, k) => ((m.points[2 * k] = x[i]), (m.points[2 * k + 1] = -y[i])));
         if (scene.chain || scene.cloth) m.strain = world.maxStrain();

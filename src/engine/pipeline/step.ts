@@ -22,7 +22,7 @@ import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { solveJoints } from '../rigid/joints.js';
-import { solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
+import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
 /** One step of `dt` seconds in `settings.substeps` substeps. */
 export function step(ctx: StepContext, dt: number): void {
@@ -46,6 +46,8 @@ export function step(ctx: StepContext, dt: number): void {
     ctx.timings.solve = performance.now() - t1;
   }
   ctx.anchors.store(ctx.contacts);
+  // The rotations follow the last substep's corrections before anything outside the solver reads them.
+  if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount, false);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
   ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
@@ -65,6 +67,8 @@ export function substep(ctx: StepContext, h: number): void {
   sub[1] = damp;
   if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, sub);
+  if (ctx.rigidCount > 0) syncRotation(particles, ctx.rigidRows, ctx.rigidCount, false);
+  if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles);
   placeRigidPins(ctx.constraints.pins, particles);
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
@@ -121,7 +125,7 @@ function recordStartPositions(ctx: StepContext): void {
     sy[i] = y[i];
     sangle[i] = angle[i];
   }
-  if (ctx.rigidCount > 0) syncRotation(p, ctx.rigidRows, ctx.rigidCount);
+  if (ctx.rigidCount > 0) syncRotation(p, ctx.rigidRows, ctx.rigidCount, true);
 }
 
 /** Gravity, the user's forces and the springs' forces, as accelerations. */

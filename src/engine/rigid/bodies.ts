@@ -14,7 +14,7 @@ export function initRigidRow(p: ParticleStore, i: number, source: RigidShapeSour
   const cy = y + s * source.centroidX + c * source.centroidY;
   p.x[i] = p.px[i] = p.qx[i] = p.sx[i] = cx;
   p.y[i] = p.py[i] = p.qy[i] = p.sy[i] = cy;
-  p.angle[i] = p.pangle[i] = p.sangle[i] = angle;
+  p.angle[i] = p.pangle[i] = p.sangle[i] = p.qangle[i] = angle;
   p.rc[i] = c;
   p.rs[i] = s;
   p.radius[i] = source.extent;
@@ -56,7 +56,7 @@ export function setPose(p: ParticleStore, i: number, source: RigidShapeSource, x
   p.x[i] = cx;
   p.y[i] = cy;
   p.pangle[i] += angle - p.angle[i];
-  p.angle[i] = angle;
+  p.angle[i] = p.qangle[i] = angle;
   p.rc[i] = c;
   p.rs[i] = s;
 }

@@ -1,172 +1,193 @@
-// The rigid contact solver: per substep, the position sweep (normal correction, then friction) and, after the
-// velocities are derived, the velocity pass (restitution, or a stop). See RigidContacts for the model.
+// The rigid contact solver: per substep a prepare pass (lever arms and weights from the bodies' rotation), the
+// position sweep (normal correction, then friction) and, after the velocities are derived, the velocity pass
+// (restitution, or a stop). See RigidContacts for the model.
 //
-// These run for every point in every substep, so nothing here passes or returns a double across a call: V8 boxes a
-// double handed to a function it does not inline (a heap allocation each time). The helpers take integers and pass
-// their reals through the small typed arrays below.
-import { spin, turnBySpin, type BodyRows } from './rows.js';
+// Speed: the levers are computed once a substep (prepare); within the sweep a body's point is its lever turned by
+// the small angle the body has turned since (first order), and corrections add to the angle without recomputing
+// cos and sin (rows.ts). Nothing passes or returns a double across a call: V8 boxes a double handed to a function it
+// does not inline (a heap allocation each time); the helpers take integers and pass reals through typed arrays.
+import type { BodyRows } from './rows.js';
 import type { RigidContacts } from './contacts.js';
 
 /** Approach speeds below this do not bounce (resting contacts would jitter otherwise). */
 export const BOUNCE_THRESHOLD = 0.5;
 
+/** B's current normal point [0, 1] and material point [2, 3] of the point being solved (pointsOf). */
+const at = new Float64Array(4);
+
+/** Per point at offset o (0: point i, 4: its partner): [overlap or drift, λ to apply, weight, unused]. */
+const pt = new Float64Array(8);
+
+/** The lever cross products push() and kick() apply a correction with: [A's, B's]. */
+const lev = new Float64Array(2);
+
+/** Per point at offset o (0 or 2) of the velocity pass: [normal speed, target]. */
+const vel = new Float64Array(4);
+
 /**
- * B's side of the point being solved (loadB): [0, 1] normal point qB (a round side's surface point towards A), [2, 3]
- * its lever from B's centre, [4, 5] the material point pB, [6, 7] its lever, [8] B's inverse mass along the
- * contact (an edge point's is split by α), [9] B's inverse inertia (0 for particles and the world).
+ * Lever arms, their cross products with the normal and the tangent, and the weights along both, from the bodies'
+ * rotation at the start of the substep (after integration): once per point per substep. A round side pushes
+ * through its centre (normal lever along n); friction acts at the material point.
  */
-const side = new Float64Array(10);
+export function prepareRigidContacts(c: RigidContacts, r: BodyRows): void {
+  const { rc, rs, invMass, invInertia } = r;
+  for (let i = 0, n = c.count; i < n; i++) {
+    const ia = c.a[i];
+    const ib = c.b[i];
+    const nx = c.nx[i];
+    const ny = c.ny[i];
+    let cs = rc[ia];
+    let sn = rs[ia];
+    const mAx = cs * c.rAx[i] - sn * c.rAy[i];
+    const mAy = sn * c.rAx[i] + cs * c.rAy[i];
+    const ra = c.radA[i];
+    const lAx = ra > 0 ? nx * ra : mAx;
+    const lAy = ra > 0 ? ny * ra : mAy;
+    c.lAx[i] = lAx;
+    c.lAy[i] = lAy;
+    c.mAx[i] = mAx;
+    c.mAy[i] = mAy;
+    const rnA = lAx * ny - lAy * nx;
+    const rtA = mAx * nx + mAy * ny; // m × t with t = (−ny, nx)
+    c.rnA[i] = rnA;
+    c.rtA[i] = rtA;
+    let wn = invMass[ia] + invInertia[ia] * rnA * rnA;
+    let wt = invMass[ia] + invInertia[ia] * rtA * rtA;
+    if (ib >= 0) {
+      if (c.b2[i] >= 0) {
+        const al = c.alpha[i];
+        const be = 1 - al;
+        const w = be * be * invMass[ib] + al * al * invMass[c.b2[i]];
+        wn += w;
+        wt += w;
+        c.lBx[i] = c.lBy[i] = c.mBx[i] = c.mBy[i] = c.rnB[i] = c.rtB[i] = 0;
+      } else {
+        cs = rc[ib];
+        sn = rs[ib];
+        const mBx = cs * c.rBx[i] - sn * c.rBy[i];
+        const mBy = sn * c.rBx[i] + cs * c.rBy[i];
+        const rb = c.radB[i];
+        const lBx = rb > 0 ? -nx * rb : mBx;
+        const lBy = rb > 0 ? -ny * rb : mBy;
+        c.lBx[i] = lBx;
+        c.lBy[i] = lBy;
+        c.mBx[i] = mBx;
+        c.mBy[i] = mBy;
+        const rnB = lBx * ny - lBy * nx;
+        const rtB = mBx * nx + mBy * ny;
+        c.rnB[i] = rnB;
+        c.rtB[i] = rtB;
+        wn += invMass[ib] + invInertia[ib] * rnB * rnB;
+        wt += invMass[ib] + invInertia[ib] * rtB * rtB;
+      }
+    } else c.lBx[i] = c.lBy[i] = c.mBx[i] = c.mBy[i] = c.rnB[i] = c.rtB[i] = 0;
+    c.wn[i] = wn;
+    c.wt[i] = wt;
+    // A manifold's two points couple through the bodies they share (the 2×2 blocks): K01 along n and along t.
+    if (i > 0 && c.pair[i - 1] === 1 && c.b2[i - 1] < 0 && c.b2[i] < 0) {
+      const j = i - 1;
+      let kn = invMass[ia] + invInertia[ia] * c.rnA[j] * rnA;
+      let kt = invMass[ia] + invInertia[ia] * c.rtA[j] * rtA;
+      if (ib >= 0) {
+        kn += invMass[ib] + invInertia[ib] * c.rnB[j] * c.rnB[i];
+        kt += invMass[ib] + invInertia[ib] * c.rtB[j] * c.rtB[i];
+      }
+      c.kn01[j] = kn;
+      c.kt01[j] = kt;
+    }
+  }
+}
 
-/** An impulse or displacement per unit inverse mass: [x, y, lever × it] (applyTo, applyB). */
-const imp = new Float64Array(3);
-
-/** Per point at offset o (0: point i, 5: its partner): [d, w, rnA, rnB, λ] (position) or [drift, w, rtA, rtB, λ] (friction). */
-const pt = new Float64Array(10);
-const fr = new Float64Array(10);
-
-/** Per point at offset o (0 or 7): [vn, w, rnA, rnB, lAx, lAy, target] (velocity pass). */
-const vel = new Float64Array(14);
-
-function loadB(c: RigidContacts, r: BodyRows, i: number): void {
+/**
+ * B's normal and material points of point i now, into at[0..3]: a row's centre plus its lever turned by the angle
+ * since the levers were prepared (first order), an edge point between its two particles, or the world's point.
+ */
+function pointsOfB(c: RigidContacts, r: BodyRows, i: number): void {
   const ib = c.b[i];
   if (ib < 0) {
-    side[0] = side[4] = c.rBx[i];
-    side[1] = side[5] = c.rBy[i];
-    side[2] = side[3] = side[6] = side[7] = side[8] = side[9] = 0;
+    at[0] = at[2] = c.rBx[i];
+    at[1] = at[3] = c.rBy[i];
     return;
   }
   const ib2 = c.b2[i];
   if (ib2 >= 0) {
     const al = c.alpha[i];
-    const be = 1 - al;
-    side[0] = side[4] = be * r.x[ib] + al * r.x[ib2];
-    side[1] = side[5] = be * r.y[ib] + al * r.y[ib2];
-    side[2] = side[3] = side[6] = side[7] = side[9] = 0;
-    side[8] = be * be * r.invMass[ib] + al * al * r.invMass[ib2];
+    at[0] = at[2] = (1 - al) * r.x[ib] + al * r.x[ib2];
+    at[1] = at[3] = (1 - al) * r.y[ib] + al * r.y[ib2];
     return;
   }
-  const cs = r.rc[ib];
-  const sn = r.rs[ib];
-  const mx = cs * c.rBx[i] - sn * c.rBy[i];
-  const my = sn * c.rBx[i] + cs * c.rBy[i];
-  side[6] = mx;
-  side[7] = my;
-  side[4] = r.x[ib] + mx;
-  side[5] = r.y[ib] + my;
-  const rad = c.radB[i];
-  side[2] = rad > 0 ? -c.nx[i] * rad : mx;
-  side[3] = rad > 0 ? -c.ny[i] * rad : my;
-  side[0] = r.x[ib] + side[2];
-  side[1] = r.y[ib] + side[3];
-  side[8] = r.invMass[ib];
-  side[9] = r.invInertia[ib];
+  const d = r.angle[ib] - r.qangle[ib];
+  const x = r.x[ib];
+  const y = r.y[ib];
+  at[0] = x + c.lBx[i] - d * c.lBy[i];
+  at[1] = y + c.lBy[i] + d * c.lBx[i];
+  at[2] = x + c.mBx[i] - d * c.mBy[i];
+  at[3] = y + c.mBy[i] + d * c.mBx[i];
 }
 
-/** Row i's position moves by sign/m·(imp[0], imp[1]) and its angle by sign/I·imp[2]. */
-function applyTo(r: BodyRows, i: number, sign: number): void {
-  const m = r.invMass[i] * sign;
-  r.x[i] += m * imp[0];
-  r.y[i] += m * imp[1];
-  const iI = r.invInertia[i];
-  if (iI !== 0) {
-    spin[0] = sign * iI * imp[2];
-    turnBySpin(r, i);
-  }
+/** Point i's overlap past its allowance into pt[o] (and `gap`). */
+function overlap(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+  const ia = c.a[i];
+  const d = r.angle[ia] - r.qangle[ia];
+  const lx = c.lAx[i];
+  const ly = c.lAy[i];
+  pointsOfB(c, r, i);
+  const g = (r.x[ia] + lx - d * ly - at[0]) * c.nx[i] + (r.y[ia] + ly + d * lx - at[1]) * c.ny[i] - c.allowance[i];
+  c.gap[i] = g;
+  pt[o] = g;
 }
-
-/** B's side moves by +imp (the opposite of A): a row, or an edge point's two particles by β and α. */
-function applyB(c: RigidContacts, r: BodyRows, i: number): void {
-  const ib = c.b[i];
-  if (ib < 0) return;
-  const ib2 = c.b2[i];
-  if (ib2 < 0) {
-    applyTo(r, ib, 1);
-    return;
-  }
-  const al = c.alpha[i];
-  const w0 = r.invMass[ib] * (1 - al);
-  const w1 = r.invMass[ib2] * al;
-  r.x[ib] += w0 * imp[0];
-  r.y[ib] += w0 * imp[1];
-  r.x[ib2] += w1 * imp[0];
-  r.y[ib2] += w1 * imp[1];
-}
-
-/** Velocity counterpart of applyTo: v += sign/m·(imp[0], imp[1]), ω += sign/I·imp[2]. */
-function kickTo(r: BodyRows, i: number, sign: number): void {
-  const m = r.invMass[i] * sign;
-  r.vx[i] += m * imp[0];
-  r.vy[i] += m * imp[1];
-  r.omega[i] += sign * r.invInertia[i] * imp[2];
-}
-
-function kickB(c: RigidContacts, r: BodyRows, i: number): void {
-  const ib = c.b[i];
-  if (ib < 0) return;
-  const ib2 = c.b2[i];
-  if (ib2 < 0) {
-    kickTo(r, ib, 1);
-    return;
-  }
-  const al = c.alpha[i];
-  const w0 = r.invMass[ib] * (1 - al);
-  const w1 = r.invMass[ib2] * al;
-  r.vx[ib] += w0 * imp[0];
-  r.vy[ib] += w0 * imp[1];
-  r.vx[ib2] += w1 * imp[0];
-  r.vy[ib2] += w1 * imp[1];
-}
-
-// ---- position sweep -----------------------------------------------------------------------------------------
 
 /**
- * Point i's overlap d (past its allowance), generalised inverse mass w along n and the levers' cross products, into
- * pt[o..o+3]; the overlap is also kept as `gap` (the velocity pass looks at it). A round side pushes through its
- * centre.
+ * Moves point i's two sides by pt[o+1] along the normal (the tangent: `along` 1), A back and B forward, turning them
+ * by the lever cross products in lev: positions and angles only (the rotation follows at the next sync).
  */
-function measure(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+function push(c: RigidContacts, r: BodyRows, i: number, o: number, along: number): void {
+  const l = pt[o + 1];
+  const dx = along === 1 ? -c.ny[i] * l : c.nx[i] * l;
+  const dy = along === 1 ? c.nx[i] * l : c.ny[i] * l;
   const ia = c.a[i];
-  const nx = c.nx[i];
-  const ny = c.ny[i];
-  const ra = c.radA[i];
-  const cs = r.rc[ia];
-  const sn = r.rs[ia];
-  const lAx = ra > 0 ? nx * ra : cs * c.rAx[i] - sn * c.rAy[i];
-  const lAy = ra > 0 ? ny * ra : sn * c.rAx[i] + cs * c.rAy[i];
-  loadB(c, r, i);
-  const d = (r.x[ia] + lAx - side[0]) * nx + (r.y[ia] + lAy - side[1]) * ny - c.allowance[i];
-  c.gap[i] = d;
-  const rnA = lAx * ny - lAy * nx;
-  const rnB = side[2] * ny - side[3] * nx;
-  pt[o] = d;
-  pt[o + 1] = r.invMass[ia] + r.invInertia[ia] * rnA * rnA + side[8] + side[9] * rnB * rnB;
-  pt[o + 2] = rnA;
-  pt[o + 3] = rnB;
+  const mA = r.invMass[ia];
+  r.x[ia] -= mA * dx;
+  r.y[ia] -= mA * dy;
+  r.angle[ia] -= r.invInertia[ia] * lev[0] * l;
+  const ib = c.b[i];
+  if (ib < 0) return;
+  const ib2 = c.b2[i];
+  if (ib2 >= 0) {
+    const al = c.alpha[i];
+    const w0 = r.invMass[ib] * (1 - al);
+    const w1 = r.invMass[ib2] * al;
+    r.x[ib] += w0 * dx;
+    r.y[ib] += w0 * dy;
+    r.x[ib2] += w1 * dx;
+    r.y[ib2] += w1 * dy;
+    return;
+  }
+  const mB = r.invMass[ib];
+  r.x[ib] += mB * dx;
+  r.y[ib] += mB * dy;
+  r.angle[ib] += r.invInertia[ib] * lev[1] * l;
 }
 
-/** Pushes point i's sides apart by pt[o+4] along n (levers from pt[o+2], pt[o+3]). */
+/** Applies pt[o+1] as point i's normal correction (λn of the substep and of the step). */
 function pushApart(c: RigidContacts, r: BodyRows, i: number, o: number): void {
-  const dl = pt[o + 4];
-  c.lambdaN[i] += dl;
-  c.impulseN[i] += dl;
-  imp[0] = dl * c.nx[i];
-  imp[1] = dl * c.ny[i];
-  imp[2] = dl * pt[o + 2];
-  applyTo(r, c.a[i], -1);
-  imp[2] = dl * pt[o + 3];
-  applyB(c, r, i);
+  c.lambdaN[i] += pt[o + 1];
+  c.impulseN[i] += pt[o + 1];
+  lev[0] = c.rnA[i];
+  lev[1] = c.rnB[i];
+  push(c, r, i, o, 0);
 }
 
 /** The first time point i acts in a step: its approach speed (and its partner's) for restitution. */
 function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
   c.touched[i] = 1;
   if (c.restitution[i] > 0 && c.approach[i] !== c.approach[i]) {
-    loadVelocity(c, r, i, 0);
+    normalSpeed(c, r, i, 0);
     c.approach[i] = vel[0];
     // A manifold's two points bounce together (a box landing flat may touch with one corner a substep earlier).
     const j = c.pair[i] === 1 ? i + 1 : i > 0 && c.pair[i - 1] === 1 ? i - 1 : -1;
     if (j >= 0 && c.approach[j] !== c.approach[j]) {
-      loadVelocity(c, r, j, 0);
+      normalSpeed(c, r, j, 0);
       c.approach[j] = vel[0];
     }
   }
@@ -186,81 +207,71 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       i++;
       continue;
     }
-    measure(c, r, i, 0);
-    if (pt[0] <= 0 || pt[1] === 0) continue;
+    overlap(c, r, i, 0);
+    if (pt[0] <= 0 || c.wn[i] === 0) continue;
     if (c.touched[i] === 0) firstTouch(c, r, i);
-    pt[4] = pt[0] / pt[1];
+    pt[1] = pt[0] / c.wn[i];
     pushApart(c, r, i, 0);
     friction(c, r, i);
   }
 }
 
 function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
-  measure(c, r, i, 0);
-  measure(c, r, i + 1, 5);
+  overlap(c, r, i, 0);
+  overlap(c, r, i + 1, 4);
   const d0 = pt[0];
-  const d1 = pt[5];
+  const d1 = pt[4];
   if (d0 <= 0 && d1 <= 0) return;
   if (d0 > 0 && c.touched[i] === 0) firstTouch(c, r, i);
   if (d1 > 0 && c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
+  const k00 = c.wn[i];
+  const k11 = c.wn[i + 1];
   if (d0 > 0 && d1 > 0) {
-    const ia = c.a[i];
-    const ib = c.b[i];
-    const k00 = pt[1];
-    const k11 = pt[6];
-    let k01 = r.invMass[ia] + r.invInertia[ia] * pt[2] * pt[7];
-    if (ib >= 0) k01 += r.invMass[ib] + r.invInertia[ib] * pt[3] * pt[8];
+    const k01 = c.kn01[i];
     const det = k00 * k11 - k01 * k01;
     if (det > 1e-9 * k00 * k11) {
-      pt[4] = (k11 * d0 - k01 * d1) / det;
-      pt[9] = (k00 * d1 - k01 * d0) / det;
-      if (pt[4] >= 0 && pt[9] >= 0) {
+      pt[1] = (k11 * d0 - k01 * d1) / det;
+      pt[5] = (k00 * d1 - k01 * d0) / det;
+      if (pt[1] >= 0 && pt[5] >= 0) {
         pushApart(c, r, i, 0);
-        pushApart(c, r, i + 1, 5);
+        pushApart(c, r, i + 1, 4);
         return;
       }
     }
   }
   // One point overlapping, or the block would pull: one after the other.
-  if (d0 > 0 && pt[1] > 0) {
-    pt[4] = d0 / pt[1];
+  if (d0 > 0 && k00 > 0) {
+    pt[1] = d0 / k00;
     pushApart(c, r, i, 0);
   }
-  measure(c, r, i + 1, 5);
-  if (pt[5] > 0 && pt[6] > 0) {
+  overlap(c, r, i + 1, 4);
+  if (pt[4] > 0 && k11 > 0) {
     if (c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
-    pt[9] = pt[5] / pt[6];
-    pushApart(c, r, i + 1, 5);
+    pt[5] = pt[4] / k11;
+    pushApart(c, r, i + 1, 4);
   }
 }
 
-/** Point i's tangential drift since the step began (less what has slid), weight and levers, into fr[o..o+3]. */
-function measureFriction(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+/** Point i's tangential drift since the step began, less what has slid, into pt[o]. */
+function drift(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   const ia = c.a[i];
-  const cs = r.rc[ia];
-  const sn = r.rs[ia];
-  const mAx = cs * c.rAx[i] - sn * c.rAy[i];
-  const mAy = sn * c.rAx[i] + cs * c.rAy[i];
-  loadB(c, r, i);
-  const tx = -c.ny[i];
-  const ty = c.nx[i];
-  const rtA = mAx * ty - mAy * tx;
-  const rtB = side[6] * ty - side[7] * tx;
-  fr[o] = (r.x[ia] + mAx - side[4]) * tx + (r.y[ia] + mAy - side[5]) * ty - c.slip[i];
-  fr[o + 1] = r.invMass[ia] + r.invInertia[ia] * rtA * rtA + side[8] + side[9] * rtB * rtB;
-  fr[o + 2] = rtA;
-  fr[o + 3] = rtB;
+  const d = r.angle[ia] - r.qangle[ia];
+  const mx = c.mAx[i];
+  const my = c.mAy[i];
+  pointsOfB(c, r, i);
+  pt[o] = -(r.x[ia] + mx - d * my - at[2]) * c.ny[i] + (r.y[ia] + my + d * mx - at[3]) * c.nx[i] - c.slip[i];
 }
 
 /**
- * Undoes fr[o+4] of point i's drift (per unit weight) as far as Coulomb's limit allows, μ times the normal
- * correction of the step so far (both summed over the step, as the drift is); the rest has slid, and the anchors
- * follow it (slip). `partner` ≥ 0 shares the manifold's slip and normal load.
+ * Undoes pt[0]/pt[2] (drift over weight) of point i as far as Coulomb's limit allows: μ times the normal correction
+ * of the step so far (both summed over the step, as the drift is), over `points` points of the manifold, turning
+ * the bodies by the levers in lev. What cannot be held has slid, and the anchors follow it (slip, shared by a
+ * manifold's points).
  */
-function hold(c: RigidContacts, r: BodyRows, i: number, o: number, partner: number): void {
-  const want = fr[o + 4];
-  const wt = fr[o + 1];
-  const load = partner >= 0 ? c.impulseN[i] + c.impulseN[partner] : c.impulseN[i];
+function hold(c: RigidContacts, r: BodyRows, i: number, points: number): void {
+  const wt = pt[2];
+  const want = pt[0] / wt;
+  const load = points === 2 ? c.impulseN[i] + c.impulseN[i + 1] : c.impulseN[i];
   const limit = c.friction[i] * load;
   const before = c.impulseT[i];
   let total = before + want;
@@ -269,23 +280,20 @@ function hold(c: RigidContacts, r: BodyRows, i: number, o: number, partner: numb
   const dt = total - before;
   c.impulseT[i] = total;
   c.slip[i] += (want - dt) * wt;
-  if (partner >= 0) c.slip[partner] = c.slip[i];
+  if (points === 2) c.slip[i + 1] = c.slip[i];
   c.lambdaT[i] += dt;
-  imp[0] = -dt * c.ny[i];
-  imp[1] = dt * c.nx[i];
-  imp[2] = dt * fr[o + 2];
-  applyTo(r, c.a[i], -1);
-  imp[2] = dt * fr[o + 3];
-  applyB(c, r, i);
+  pt[1] = dt;
+  push(c, r, i, 0, 1);
 }
 
 /** Friction of a lone point (after its normal correction this sweep). */
 function friction(c: RigidContacts, r: BodyRows, i: number): void {
-  if (c.friction[i] === 0 || c.lambdaN[i] <= 0) return;
-  measureFriction(c, r, i, 0);
-  if (fr[1] === 0) return;
-  fr[4] = fr[0] / fr[1];
-  hold(c, r, i, 0, -1);
+  if (c.friction[i] === 0 || c.lambdaN[i] <= 0 || c.wt[i] === 0) return;
+  drift(c, r, i, 0);
+  pt[2] = c.wt[i];
+  lev[0] = c.rtA[i];
+  lev[1] = c.rtB[i];
+  hold(c, r, i, 1);
 }
 
 /**
@@ -293,86 +301,85 @@ function friction(c: RigidContacts, r: BodyRows, i: number): void {
  * normal corrections. In 2D the two points of a face contact slide together (a turn moves them along the normal,
  * not along the face), so two tangential constraints would be one twice over: solved one after the other, the first
  * would saturate while the second still held, record a slide that did not happen, and a pile would creep sideways
- * step after step.
+ * step after step. (The midpoint's levers are the points' means: cross products are linear in the lever; its weight
+ * is the mean of the points' weights and their coupling.)
  */
 function frictionPair(c: RigidContacts, r: BodyRows, i: number): void {
   if (c.friction[i] === 0 || (c.lambdaN[i] <= 0 && c.lambdaN[i + 1] <= 0)) return;
-  measureFriction(c, r, i, 0);
-  measureFriction(c, r, i + 1, 5);
-  // Both points carry the manifold's slip, so the mean of their drifts is the midpoint's; cross products are linear
-  // in the lever, so the midpoint's are the means too.
-  const rtA = 0.5 * (fr[2] + fr[7]);
-  const rtB = 0.5 * (fr[3] + fr[8]);
-  const ia = c.a[i];
-  const wt = r.invMass[ia] + r.invInertia[ia] * rtA * rtA + side[8] + side[9] * rtB * rtB;
+  const wt = 0.25 * (c.wt[i] + c.wt[i + 1]) + 0.5 * c.kt01[i];
   if (wt === 0) return;
-  fr[1] = wt;
-  fr[2] = rtA;
-  fr[3] = rtB;
-  fr[4] = (0.5 * (fr[0] + fr[5])) / wt;
-  hold(c, r, i, 0, i + 1);
+  drift(c, r, i, 0);
+  drift(c, r, i + 1, 4);
+  pt[0] = 0.5 * (pt[0] + pt[4]);
+  pt[2] = wt;
+  lev[0] = 0.5 * (c.rtA[i] + c.rtA[i + 1]);
+  lev[1] = 0.5 * (c.rtB[i] + c.rtB[i + 1]);
+  hold(c, r, i, 2);
 }
 
 // ---- velocity pass ------------------------------------------------------------------------------------------
 
-/** Normal speed (B relative to A, negative approaching), weight and levers of point i into vel[o..o+5]. */
-function loadVelocity(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+/** Normal speed of point i (B relative to A, negative approaching) into vel[o]. */
+function normalSpeed(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   const ia = c.a[i];
-  const nx = c.nx[i];
-  const ny = c.ny[i];
-  const ra = c.radA[i];
-  const cs = r.rc[ia];
-  const sn = r.rs[ia];
-  const lAx = ra > 0 ? nx * ra : cs * c.rAx[i] - sn * c.rAy[i];
-  const lAy = ra > 0 ? ny * ra : sn * c.rAx[i] + cs * c.rAy[i];
-  loadB(c, r, i);
-  const rnA = lAx * ny - lAy * nx;
-  const rnB = side[2] * ny - side[3] * nx;
   const wa = r.omega[ia];
-  let vbx = 0;
-  let vby = 0;
+  let vx = -(r.vx[ia] - wa * c.lAy[i]);
+  let vy = -(r.vy[ia] + wa * c.lAx[i]);
   const ib = c.b[i];
   if (ib >= 0) {
     const ib2 = c.b2[i];
     if (ib2 >= 0) {
       const al = c.alpha[i];
-      vbx = (1 - al) * r.vx[ib] + al * r.vx[ib2];
-      vby = (1 - al) * r.vy[ib] + al * r.vy[ib2];
+      vx += (1 - al) * r.vx[ib] + al * r.vx[ib2];
+      vy += (1 - al) * r.vy[ib] + al * r.vy[ib2];
     } else {
       const wb = r.omega[ib];
-      vbx = r.vx[ib] - wb * side[3];
-      vby = r.vy[ib] + wb * side[2];
+      vx += r.vx[ib] - wb * c.lBy[i];
+      vy += r.vy[ib] + wb * c.lBx[i];
     }
   }
-  vel[o] = (vbx - r.vx[ia] + wa * lAy) * nx + (vby - r.vy[ia] - wa * lAx) * ny;
-  vel[o + 1] = r.invMass[ia] + r.invInertia[ia] * rnA * rnA + side[8] + side[9] * rnB * rnB;
-  vel[o + 2] = rnA;
-  vel[o + 3] = rnB;
-  vel[o + 4] = lAx;
-  vel[o + 5] = lAy;
+  vel[o] = vx * c.nx[i] + vy * c.ny[i];
 }
 
-/** Target normal speed of point i into vel[o+6]: −e × its approach for an impact (once), else 0. */
-function loadTarget(c: RigidContacts, i: number, o: number): void {
-  let target = 0;
+/** Target normal speed of point i into vel[o+1]: −e × its approach for an impact (once), else 0. */
+function target(c: RigidContacts, i: number, o: number): void {
+  let t = 0;
   const e = c.restitution[i];
   const approach = c.approach[i];
   if (e > 0 && approach < -BOUNCE_THRESHOLD) {
-    target = -e * approach;
+    t = -e * approach;
     c.approach[i] = 0;
   }
-  vel[o + 6] = target;
+  vel[o + 1] = t;
 }
 
-/** Point i's sides get the normal velocity impulse pt[slot] (per unit inverse mass; levers from vel[o+2], vel[o+3]). */
-function kickApart(c: RigidContacts, r: BodyRows, i: number, o: number, slot: number): void {
-  const P = pt[slot];
-  imp[0] = P * c.nx[i];
-  imp[1] = P * c.ny[i];
-  imp[2] = P * vel[o + 2];
-  kickTo(r, c.a[i], -1);
-  imp[2] = P * vel[o + 3];
-  kickB(c, r, i);
+/** Point i's sides get the normal velocity impulse pt[o+1] (per unit inverse mass; prepared levers). */
+function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
+  const P = pt[o + 1];
+  const px = P * c.nx[i];
+  const py = P * c.ny[i];
+  const ia = c.a[i];
+  const mA = r.invMass[ia];
+  r.vx[ia] -= mA * px;
+  r.vy[ia] -= mA * py;
+  r.omega[ia] -= r.invInertia[ia] * c.rnA[i] * P;
+  const ib = c.b[i];
+  if (ib < 0) return;
+  const ib2 = c.b2[i];
+  if (ib2 >= 0) {
+    const al = c.alpha[i];
+    const w0 = r.invMass[ib] * (1 - al);
+    const w1 = r.invMass[ib2] * al;
+    r.vx[ib] += w0 * px;
+    r.vy[ib] += w0 * py;
+    r.vx[ib2] += w1 * px;
+    r.vy[ib2] += w1 * py;
+    return;
+  }
+  const mB = r.invMass[ib];
+  r.vx[ib] += mB * px;
+  r.vy[ib] += mB * py;
+  r.omega[ib] += r.invInertia[ib] * c.rnB[i] * P;
 }
 
 /**
@@ -390,12 +397,11 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       i++;
       continue;
     }
-    if (c.lambdaN[i] <= 0) continue;
-    loadVelocity(c, r, i, 0);
-    loadTarget(c, i, 0);
-    if (vel[1] <= 0) continue;
-    pt[4] = (vel[6] - vel[0]) / vel[1];
-    kickApart(c, r, i, 0, 4);
+    if (c.lambdaN[i] <= 0 || c.wn[i] <= 0) continue;
+    normalSpeed(c, r, i, 0);
+    target(c, i, 0);
+    pt[1] = (vel[1] - vel[0]) / c.wn[i];
+    kick(c, r, i, 0);
   }
 }
 
@@ -403,42 +409,36 @@ function pairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number): void
   const acted0 = c.lambdaN[i] > 0;
   const acted1 = c.lambdaN[i + 1] > 0;
   if (!acted0 && !acted1) return;
-  loadVelocity(c, r, i, 0);
-  loadVelocity(c, r, i + 1, 7);
+  normalSpeed(c, r, i, 0);
+  normalSpeed(c, r, i + 1, 2);
   const use0 = acted0 || (vel[0] < 0 && c.gap[i] > 2 * vel[0] * h);
-  const use1 = acted1 || (vel[7] < 0 && c.gap[i + 1] > 2 * vel[7] * h);
-  if (use0) loadTarget(c, i, 0);
-  if (use1) loadTarget(c, i + 1, 7);
+  const use1 = acted1 || (vel[2] < 0 && c.gap[i + 1] > 2 * vel[2] * h);
+  if (use0) target(c, i, 0);
+  if (use1) target(c, i + 1, 2);
+  const k00 = c.wn[i];
+  const k11 = c.wn[i + 1];
   if (use0 && use1) {
     // K P = target − vn, K_jk = 1/mA + 1/mB + (rAj × n)(rAk × n)/IA + (rBj × n)(rBk × n)/IB.
-    const ia = c.a[i];
-    const ib = c.b[i];
-    const k00 = vel[1];
-    const k11 = vel[8];
-    let k01 = r.invMass[ia] + r.invInertia[ia] * vel[2] * vel[9];
-    if (ib >= 0) k01 += r.invMass[ib] + r.invInertia[ib] * vel[3] * vel[10];
-    const b0 = vel[6] - vel[0];
-    const b1 = vel[13] - vel[7];
+    const k01 = c.kn01[i];
+    const b0 = vel[1] - vel[0];
+    const b1 = vel[3] - vel[2];
     const det = k00 * k11 - k01 * k01;
     if (det > 1e-9 * k00 * k11) {
-      pt[4] = (k11 * b0 - k01 * b1) / det;
-      pt[9] = (k00 * b1 - k01 * b0) / det;
-      kickApart(c, r, i, 0, 4);
-      kickApart(c, r, i + 1, 7, 9);
+      pt[1] = (k11 * b0 - k01 * b1) / det;
+      pt[5] = (k00 * b1 - k01 * b0) / det;
+      kick(c, r, i, 0);
+      kick(c, r, i + 1, 4);
       return;
     }
   }
   // One point (or two dependent ones): one after the other, the second's speed measured again after the first.
-  if (use0 && vel[1] > 0) {
-    pt[4] = (vel[6] - vel[0]) / vel[1];
-    kickApart(c, r, i, 0, 4);
+  if (use0 && k00 > 0) {
+    pt[1] = (vel[1] - vel[0]) / k00;
+    kick(c, r, i, 0);
   }
-  if (use1) {
-    const target = vel[13];
-    loadVelocity(c, r, i + 1, 7);
-    if (vel[8] > 0) {
-      pt[9] = (target - vel[7]) / vel[8];
-      kickApart(c, r, i + 1, 7, 9);
-    }
+  if (use1 && k11 > 0) {
+    normalSpeed(c, r, i + 1, 2);
+    pt[5] = (vel[3] - vel[2]) / k11;
+    kick(c, r, i + 1, 4);
   }
 }

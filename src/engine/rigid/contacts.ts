@@ -25,6 +25,7 @@ export class RigidContacts extends Table {
   readonly columns = [
     'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN', 'lambdaT',
     'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
+    'lAx', 'lAy', 'mAx', 'mAy', 'lBx', 'lBy', 'mBx', 'mBy', 'rnA', 'rnB', 'rtA', 'rtB', 'wn', 'wt', 'kn01', 'kt01',
   ] as const;
   a = new Int32Array(16);
   b = new Int32Array(16);
@@ -63,6 +64,27 @@ export class RigidContacts extends Table {
   /** Normal and tangential corrections summed over the step so far (friction's Coulomb limit compares these). */
   impulseN = new Float64Array(16);
   impulseT = new Float64Array(16);
+  /**
+   * Prepared each substep (contact-solver.ts): world levers of the normal points (lA, lB: a round side's along n) and
+   * of the material points (mA, mB), their cross products with n and t, the weights along n and t, and on a
+   * manifold's first point its two points' couplings along n and t.
+   */
+  lAx = new Float64Array(16);
+  lAy = new Float64Array(16);
+  mAx = new Float64Array(16);
+  mAy = new Float64Array(16);
+  lBx = new Float64Array(16);
+  lBy = new Float64Array(16);
+  mBx = new Float64Array(16);
+  mBy = new Float64Array(16);
+  rnA = new Float64Array(16);
+  rnB = new Float64Array(16);
+  rtA = new Float64Array(16);
+  rtB = new Float64Array(16);
+  wn = new Float64Array(16);
+  wt = new Float64Array(16);
+  kn01 = new Float64Array(16);
+  kt01 = new Float64Array(16);
   /** Which bodies and features made the point (the same while they keep touching the same way); see anchorKey. */
   feature = new Float64Array(16);
 

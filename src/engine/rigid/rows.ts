@@ -2,6 +2,11 @@
 // an inverse moment of inertia; a plain particle is the same row with inverse inertia 0 and angle 0, so every
 // formula below reduces to the particle case without a branch (Müller et al. 2020, "Detailed Rigid Body Simulation
 // with Extended Position Based Dynamics": generalised inverse mass w = 1/m + (r × n)²/I).
+//
+// Rotation: `angle` is the truth, summed exactly. (rc, rs) are cos and sin of a reference angle `qangle`, brought up to
+// `angle` once a substep (syncRotation); between two syncs the contact solver only adds to `angle`, and a point of
+// the body is found from its lever at the reference turned by the small angle since (first order), which is cheaper
+// than keeping cos and sin exact through every one of thousands of corrections.
 
 export interface BodyRows {
   x: Float64Array;
@@ -14,9 +19,10 @@ export interface BodyRows {
   angle: Float64Array;
   pangle: Float64Array;
   omega: Float64Array;
-  /** cos and sin of `angle`, kept in step with it (every kernel that turns a body updates them). */
+  /** cos and sin of `qangle`, the reference angle (see above). */
   rc: Float64Array;
   rs: Float64Array;
+  qangle: Float64Array;
   invMass: Float64Array;
   invInertia: Float64Array;
 }
@@ -24,14 +30,16 @@ export interface BodyRows {
 /** The angle turnBySpin() turns a row by (a typed array: a double passed to a call that is not inlined is boxed). */
 export const spin = new Float64Array(1);
 
+/** [turn, angle after it] for rotate() (typed: no boxed doubles per call). */
+const turnTo = new Float64Array(2);
+
 /**
- * Turns row i by spin[0] radians. Solver corrections turn a body by tiny angles many times a substep, so cos/sin are
- * advanced by the Taylor series of the rotation (exact to rounding for |d| < 1e-3) instead of Math.cos/Math.sin; the
- * angle itself is summed exactly, and syncRotation() re-derives cos/sin from it once a step.
+ * Turns (rc, rs) of row i by turnTo[0] to the angle turnTo[1]: the Taylor series of the rotation for a small turn
+ * (exact to rounding below 1e-3), Math.cos/Math.sin otherwise.
  */
-export function turnBySpin(b: BodyRows, i: number): void {
-  const d = spin[0];
-  b.angle[i] += d;
+function rotate(b: BodyRows, i: number): void {
+  const d = turnTo[0];
+  const to = turnTo[1];
   const c = b.rc[i];
   const s = b.rs[i];
   if (d < 1e-3 && d > -1e-3) {
@@ -41,25 +49,52 @@ export function turnBySpin(b: BodyRows, i: number): void {
     b.rc[i] = c * cd - s * sd;
     b.rs[i] = s * cd + c * sd;
   } else {
-    b.rc[i] = Math.cos(b.angle[i]);
-    b.rs[i] = Math.sin(b.angle[i]);
+    b.rc[i] = Math.cos(to);
+    b.rs[i] = Math.sin(to);
   }
 }
 
-/** cos/sin from the angle for the listed rows (once a step: the incremental updates of turn() drift by rounding). */
-export function syncRotation(b: BodyRows, rows: Int32Array, count: number): void {
-  const { angle, rc, rs } = b;
+/**
+ * Turns row i by spin[0] radians, keeping its rotation exact (joints and grabs, which solve few constraints and need
+ * their levers current).
+ */
+export function turnBySpin(b: BodyRows, i: number): void {
+  const d = spin[0];
+  b.angle[i] += d;
+  b.qangle[i] += d;
+  turnTo[0] = d;
+  turnTo[1] = b.qangle[i];
+  rotate(b, i);
+}
+
+/**
+ * Brings the rotation of the listed rows up to their angles (`exact`: from Math.cos/Math.sin, once a step, so the
+ * incremental updates cannot drift; otherwise by the turn since the last sync).
+ */
+export function syncRotation(b: BodyRows, rows: Int32Array, count: number, exact: boolean): void {
+  const { angle, qangle, rc, rs } = b;
   for (let k = 0; k < count; k++) {
     const i = rows[k];
-    rc[i] = Math.cos(angle[i]);
-    rs[i] = Math.sin(angle[i]);
+    const a = angle[i];
+    if (exact) {
+      rc[i] = Math.cos(a);
+      rs[i] = Math.sin(a);
+    } else {
+      const d = a - qangle[i];
+      if (d === 0) continue;
+      turnTo[0] = d;
+      turnTo[1] = a;
+      rotate(b, i);
+    }
+    qangle[i] = a;
   }
 }
 
 /**
  * The angular half of a substep's integration for the listed rigid rows: remember the angle, add the torque's
- * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles). (The linear half is the particles' integrator: x += h·(v + h·a).) Rows with
- * inverse inertia 0 (static and kinematic bodies) keep their ω undamped.
+ * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles).
+ * The rotation follows at the next syncRotation(). Rows with inverse inertia 0 (static and kinematic bodies) keep
+ * their ω undamped.
  */
 export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32Array, count: number, step: Float64Array): void {
   const h = step[0];
@@ -71,10 +106,7 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
     const iI = invInertia[i];
     const w = iI > 0 ? (omega[i] + h * torque[i] * iI) * damp : omega[i];
     omega[i] = w;
-    if (w !== 0) {
-      spin[0] = h * w;
-      turnBySpin(b, i);
-    }
+    angle[i] += h * w;
   }
 }
 
