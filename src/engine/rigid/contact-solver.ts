@@ -200,20 +200,156 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
  * second and throw it sideways.
  */
 export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
+  const { x, y, angle, qangle, invMass, invInertia } = r;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, mAx, mAy, mBx, mBy, rBx, rBy } = c;
+  const { rnA, rnB, rtA, rtB, wn, wt, kn01, kt01, allowance, gap, lambdaN, impulseN, impulseT, lambdaT, slip, friction, touched } = c;
   for (let i = 0, n = c.count; i < n; i++) {
-    if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
-      solvePair(c, r, i);
-      frictionPair(c, r, i);
-      i++;
+    const two = pair[i] === 1;
+    // Edge points of particle-built outlines take the general path.
+    if (B2[i] >= 0 || (two && B2[i + 1] >= 0)) {
+      if (two) {
+        solvePair(c, r, i);
+        frictionPair(c, r, i);
+        i++;
+      } else solvePoint(c, r, i);
       continue;
     }
-    overlap(c, r, i, 0);
-    if (pt[0] <= 0 || c.wn[i] === 0) continue;
-    if (c.touched[i] === 0) firstTouch(c, r, i);
-    pt[1] = pt[0] / c.wn[i];
-    pushApart(c, r, i, 0);
-    friction(c, r, i);
+    // The common case inline (no calls: they cost more than the arithmetic). B is a row (rigid body, particle) or
+    // the world (ib −1: its point is (rBx, rBy)); each side's point is its lever turned by the angle since prepare.
+    const ia = A[i];
+    const ib = B[i];
+    const nx = NX[i];
+    const ny = NY[i];
+    const imA = invMass[ia];
+    const iiA = invInertia[ia];
+    const imB = ib >= 0 ? invMass[ib] : 0;
+    const iiB = ib >= 0 ? invInertia[ib] : 0;
+    let dA = angle[ia] - qangle[ia];
+    let dB = ib >= 0 ? angle[ib] - qangle[ib] : 0;
+    let ax = x[ia];
+    let ay = y[ia];
+    let bx = ib >= 0 ? x[ib] : 0;
+    let by = ib >= 0 ? y[ib] : 0;
+    const j = i + 1;
+    // Overlaps (past their allowance).
+    let g0 = (ax + lAx[i] - dA * lAy[i] - (ib >= 0 ? bx + lBx[i] - dB * lBy[i] : rBx[i])) * nx + (ay + lAy[i] + dA * lAx[i] - (ib >= 0 ? by + lBy[i] + dB * lBx[i] : rBy[i])) * ny - allowance[i];
+    gap[i] = g0;
+    let g1 = -1;
+    if (two) {
+      g1 = (ax + lAx[j] - dA * lAy[j] - (ib >= 0 ? bx + lBx[j] - dB * lBy[j] : rBx[j])) * nx + (ay + lAy[j] + dA * lAx[j] - (ib >= 0 ? by + lBy[j] + dB * lBx[j] : rBy[j])) * ny - allowance[j];
+      gap[j] = g1;
+    }
+    if (g0 <= 0 && g1 <= 0) continue;
+    if (g0 > 0 && touched[i] === 0) firstTouch(c, r, i);
+    if (g1 > 0 && touched[j] === 0) firstTouch(c, r, j);
+    // Normal corrections: one point, or a manifold's two by the 2×2 block (one after the other when it would pull).
+    let l0 = 0;
+    let l1 = 0;
+    const k00 = wn[i];
+    if (!two) l0 = k00 > 0 ? g0 / k00 : 0;
+    else {
+      const k11 = wn[j];
+      const k01 = kn01[i];
+      const det = k00 * k11 - k01 * k01;
+      if (g0 > 0 && g1 > 0 && det > 1e-9 * k00 * k11) {
+        l0 = (k11 * g0 - k01 * g1) / det;
+        l1 = (k00 * g1 - k01 * g0) / det;
+      }
+      if (!(l0 > 0 && l1 > 0)) {
+        // One point, or a block that would pull: the deeper one first, then the other as far as it still overlaps
+        // once the first's correction has moved both sides (K01 couples them).
+        if (g0 >= g1) {
+          l0 = k00 > 0 ? g0 / k00 : 0;
+          l1 = k11 > 0 ? Math.max(0, (g1 - k01 * l0) / k11) : 0;
+        } else {
+          l1 = k11 > 0 ? g1 / k11 : 0;
+          l0 = k00 > 0 ? Math.max(0, (g0 - k01 * l1) / k00) : 0;
+        }
+      }
+      if (l1 > 0 && touched[j] === 0) firstTouch(c, r, j);
+      if (l0 > 0 && touched[i] === 0) firstTouch(c, r, i);
+    }
+    // Apply: A back along n, B forward, each turned by its levers' cross products.
+    const ln = l0 + l1;
+    if (ln !== 0) {
+      ax -= imA * ln * nx;
+      ay -= imA * ln * ny;
+      x[ia] = ax;
+      y[ia] = ay;
+      const tA = iiA * (l0 * rnA[i] + (two ? l1 * rnA[j] : 0));
+      angle[ia] -= tA;
+      dA -= tA;
+      if (ib >= 0) {
+        bx += imB * ln * nx;
+        by += imB * ln * ny;
+        x[ib] = bx;
+        y[ib] = by;
+        const tB = iiB * (l0 * rnB[i] + (two ? l1 * rnB[j] : 0));
+        angle[ib] += tB;
+        dB += tB;
+      }
+      lambdaN[i] += l0;
+      impulseN[i] += l0;
+      if (two) {
+        lambdaN[j] += l1;
+        impulseN[j] += l1;
+      }
+    }
+    // Friction: the tangential drift of the material points (a manifold's: their mean, at their midpoint) since the
+    // step began, less what has slid, undone within Coulomb's limit on the step's summed normal corrections.
+    const mu = friction[i];
+    if (mu === 0 || (lambdaN[i] <= 0 && (!two || lambdaN[j] <= 0))) {
+      if (two) i++;
+      continue;
+    }
+    let drift = -(ax + mAx[i] - dA * mAy[i] - (ib >= 0 ? bx + mBx[i] - dB * mBy[i] : rBx[i])) * ny + (ay + mAy[i] + dA * mAx[i] - (ib >= 0 ? by + mBy[i] + dB * mBx[i] : rBy[i])) * nx;
+    let la = rtA[i];
+    let lb = rtB[i];
+    let w = wt[i];
+    let load = impulseN[i];
+    if (two) {
+      const drift1 = -(ax + mAx[j] - dA * mAy[j] - (ib >= 0 ? bx + mBx[j] - dB * mBy[j] : rBx[j])) * ny + (ay + mAy[j] + dA * mAx[j] - (ib >= 0 ? by + mBy[j] + dB * mBx[j] : rBy[j])) * nx;
+      drift = 0.5 * (drift + drift1);
+      la = 0.5 * (la + rtA[j]);
+      lb = 0.5 * (lb + rtB[j]);
+      w = 0.25 * (wt[i] + wt[j]) + 0.5 * kt01[i];
+      load += impulseN[j];
+    }
+    drift -= slip[i];
+    if (w > 0) {
+      const want = drift / w;
+      const limit = mu * load;
+      const before = impulseT[i];
+      let total = before + want;
+      if (total > limit) total = limit;
+      else if (total < -limit) total = -limit;
+      const dt = total - before;
+      impulseT[i] = total;
+      lambdaT[i] += dt;
+      slip[i] += (want - dt) * w;
+      if (two) slip[j] = slip[i];
+      // Along t = (−ny, nx): A back, B forward.
+      x[ia] = ax + imA * dt * ny;
+      y[ia] = ay - imA * dt * nx;
+      angle[ia] -= iiA * la * dt;
+      if (ib >= 0) {
+        x[ib] = bx - imB * dt * ny;
+        y[ib] = by + imB * dt * nx;
+        angle[ib] += iiB * lb * dt;
+      }
+    }
+    if (two) i++;
   }
+}
+
+/** A lone point on the general path (B an edge point of a particle-built outline). */
+function solvePoint(c: RigidContacts, r: BodyRows, i: number): void {
+  overlap(c, r, i, 0);
+  if (pt[0] <= 0 || c.wn[i] === 0) return;
+  if (c.touched[i] === 0) firstTouch(c, r, i);
+  pt[1] = pt[0] / c.wn[i];
+  pushApart(c, r, i, 0);
+  friction(c, r, i);
 }
 
 function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
@@ -391,18 +527,96 @@ function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  * within two substeps' approach of touching (a box landing flat by a hair's tilt) joins it.
  */
 export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
+  const { vx, vy, omega, invMass, invInertia } = r;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, approach } = c;
   for (let i = 0, n = c.count; i < n; i++) {
-    if (c.pair[i] === 1 && c.b2[i] < 0 && c.b2[i + 1] < 0) {
-      pairVelocity(c, r, i, h);
-      i++;
+    const two = pair[i] === 1;
+    if (B2[i] >= 0 || (two && B2[i + 1] >= 0)) {
+      if (two) {
+        pairVelocity(c, r, i, h);
+        i++;
+      } else pointVelocity(c, r, i);
       continue;
     }
-    if (c.lambdaN[i] <= 0 || c.wn[i] <= 0) continue;
-    normalSpeed(c, r, i, 0);
-    target(c, i, 0);
-    pt[1] = (vel[1] - vel[0]) / c.wn[i];
-    kick(c, r, i, 0);
+    const j = i + 1;
+    const acted0 = lambdaN[i] > 0;
+    const acted1 = two && lambdaN[j] > 0;
+    if (!acted0 && !acted1) {
+      if (two) i++;
+      continue;
+    }
+    // The common case inline: normal speeds of B's points relative to A's (negative approaching).
+    const ia = A[i];
+    const ib = B[i];
+    const nx = NX[i];
+    const ny = NY[i];
+    const wa = omega[ia];
+    const wb = ib >= 0 ? omega[ib] : 0;
+    const vbx = ib >= 0 ? vx[ib] : 0;
+    const vby = ib >= 0 ? vy[ib] : 0;
+    const rvx = vbx - vx[ia];
+    const rvy = vby - vy[ia];
+    const v0 = (rvx - wb * lBy[i] + wa * lAy[i]) * nx + (rvy + wb * lBx[i] - wa * lAx[i]) * ny;
+    const v1 = two ? (rvx - wb * lBy[j] + wa * lAy[j]) * nx + (rvy + wb * lBx[j] - wa * lAx[j]) * ny : 0;
+    // A point joins when it acted, or when its partner acted while it was within two substeps' approach.
+    const use0 = acted0 || (v0 < 0 && gap[i] > 2 * v0 * h);
+    const use1 = two && (acted1 || (v1 < 0 && gap[j] > 2 * v1 * h));
+    // Targets: −e × the approach for an impact (once), else 0.
+    let t0 = 0;
+    let t1 = 0;
+    const e = restitution[i];
+    if (e > 0) {
+      if (use0 && approach[i] < -BOUNCE_THRESHOLD) {
+        t0 = -e * approach[i];
+        approach[i] = 0;
+      }
+      if (use1 && approach[j] < -BOUNCE_THRESHOLD) {
+        t1 = -e * approach[j];
+        approach[j] = 0;
+      }
+    }
+    let p0 = 0;
+    let p1 = 0;
+    const k00 = wn[i];
+    if (use0 && use1) {
+      const k11 = wn[j];
+      const k01 = kn01[i];
+      const det = k00 * k11 - k01 * k01;
+      if (det > 1e-9 * k00 * k11) {
+        p0 = (k11 * (t0 - v0) - k01 * (t1 - v1)) / det;
+        p1 = (k00 * (t1 - v1) - k01 * (t0 - v0)) / det;
+      } else {
+        p0 = (t0 - v0) / k00;
+        p1 = (t1 - v1 - k01 * p0) / k11;
+      }
+    } else if (use0) p0 = k00 > 0 ? (t0 - v0) / k00 : 0;
+    else if (use1) p1 = wn[j] > 0 ? (t1 - v1) / wn[j] : 0;
+    if (p0 === 0 && p1 === 0) {
+      if (two) i++;
+      continue;
+    }
+    const P = p0 + p1;
+    const imA = invMass[ia];
+    vx[ia] -= imA * P * nx;
+    vy[ia] -= imA * P * ny;
+    omega[ia] -= invInertia[ia] * (p0 * rnA[i] + (two ? p1 * rnA[j] : 0));
+    if (ib >= 0) {
+      const imB = invMass[ib];
+      vx[ib] += imB * P * nx;
+      vy[ib] += imB * P * ny;
+      omega[ib] += invInertia[ib] * (p0 * rnB[i] + (two ? p1 * rnB[j] : 0));
+    }
+    if (two) i++;
   }
+}
+
+/** A lone point's velocity on the general path (B an edge point of a particle-built outline). */
+function pointVelocity(c: RigidContacts, r: BodyRows, i: number): void {
+  if (c.lambdaN[i] <= 0 || c.wn[i] <= 0) return;
+  normalSpeed(c, r, i, 0);
+  target(c, i, 0);
+  pt[1] = (vel[1] - vel[0]) / c.wn[i];
+  kick(c, r, i, 0);
 }
 
 function pairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number): void {
