@@ -45,11 +45,41 @@ export interface SessionScene {
 
 export interface SessionOptions {
   connect: EngineFactory;
+  /**
+   * What a start waits for before each piece of its heavy work: before the canvas (p5) by default afterPaint(), before
+   * the engine nextTask(). So the script's evaluation, the page's first paint, each scene's canvas and each scene's
+   * worker are tasks of their own instead of one long task. Tests pass their own.
+   */
+  wait?: (before: 'canvas' | 'engine') => Promise<void>;
   scene: SessionScene;
   /** An engine failure worth a `physics-error` on the scene ("engine: …"). */
   failed(message: string): void;
   /** An element's description the engine refused. */
   refused(error: HostError): void;
+}
+
+/** How long a start waits for a frame before it goes on without one (a hidden page gets no animation frames). */
+const PAINT_WAIT_MS = 100;
+
+/**
+ * Resolves in a task after the next paint: a frame callback runs just before the paint, a task it queues runs after.
+ * A page without frames (hidden) waits PAINT_WAIT_MS instead.
+ */
+export function afterPaint(): Promise<void> {
+  return new Promise((resolve) => {
+    const timer = setTimeout(resolve, PAINT_WAIT_MS);
+    requestAnimationFrame(() =>
+      setTimeout(() => {
+        clearTimeout(timer);
+        resolve();
+      }, 0),
+    );
+  });
+}
+
+/** Resolves in a new task (the work before it ends one task; the browser may paint or handle input in between). */
+export function nextTask(): Promise<void> {
+  return new Promise((resolve) => setTimeout(resolve, 0));
 }
 
 /** A promise callers wait on while the gate is closed. Closing an open gate makes a new promise; a closed one keeps its own. */
@@ -138,15 +168,24 @@ export class EngineSession implements ReactiveController, EngineCommands {
     return engine;
   }
 
-  /** Makes an engine and loads the scene into it. A stop() meanwhile makes this start stale: it cleans up and ends. */
+  /**
+   * Makes an engine and loads the scene into it, after the page's next paint and in tasks of their own: the canvas
+   * (p5), then the engine. A stop() meanwhile makes this start stale: it cleans up and ends.
+   */
   async start(): Promise<void> {
     const gen = ++this.gen;
     this.starting = true;
     const { scene } = this.options;
+    const wait = this.options.wait ?? ((before) => (before === 'canvas' ? afterPaint() : nextTask()));
+    const current = () => gen === this.gen && this.host.isConnected;
     try {
       await this.host.updateComplete;
-      if (gen !== this.gen || !this.host.isConnected) return;
+      if (!current()) return;
+      await wait('canvas');
+      if (!current()) return;
       scene.prepare();
+      await wait('engine');
+      if (!current()) return;
       const engine = await this.options.connect();
       if (gen !== this.gen) {
         engine.dispose();

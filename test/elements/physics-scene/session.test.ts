@@ -1,20 +1,26 @@
-// The engine session on its own, with fake engines: the start (prepare, connect, describe, load, ready), a stop in
-// the middle of a start, where failed calls go, and the running state sent once per change.
+// The engine session on its own, with fake engines: the start (prepare, connect, describe, load, ready) in tasks of
+// its own after a paint, a stop in the middle of a start, where failed calls go, and the running state sent once per
+// change.
 import { expect } from '@open-wc/testing';
-import { EngineSession, type Engine } from '../../../src/elements/physics-scene/session.js';
+import { afterPaint, EngineSession, type Engine } from '../../../src/elements/physics-scene/session.js';
 import { EngineStoppedError, TimeoutError, WorkerDiedError } from '../../../src/worker/client.js';
 import type { HostError, HostScene } from '../../../src/worker/protocol.js';
 import { deferred, FakeEngine, makeHost, settle, type FakeHost } from './fakes.js';
 
 const SCENE: HostScene = { world: { bounds: null }, params: { iterations: 2 }, bodies: [], links: [], running: true };
 
-function rig(connect: () => Promise<Engine> = async () => new FakeEngine()) {
+/** A session on a fake host; `wait` stands for the paint and the task a start waits for (default: none). */
+function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait: (before: 'canvas' | 'engine') => Promise<void> = async () => {}) {
   const host = makeHost();
   const log: string[] = [];
   const failed: string[] = [];
   const refused: HostError[] = [];
   const loaded: { engine: Engine; errors: HostError[] }[] = [];
   const session = new EngineSession(host, {
+    wait: (before) => {
+      log.push(`wait for ${before}`);
+      return wait(before);
+    },
     connect: () => {
       log.push('connect');
       return connect();
@@ -51,7 +57,7 @@ describe('EngineSession', () => {
     document.body.append(host);
     expect(r.session.idle).to.equal(false);
     await r.session.ready;
-    expect(r.log).to.deep.equal(['prepare', 'connect', 'describe', 'loaded', 'settled']);
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine', 'connect', 'describe', 'loaded', 'settled']);
     expect(engine.argsOf('load')).to.deep.equal([[SCENE]]);
     expect(r.loaded).to.deep.equal([{ engine, errors: [refusal] }]);
     expect(r.session.live).to.equal(engine);
@@ -67,7 +73,7 @@ describe('EngineSession', () => {
     document.body.append(host);
     const ready = r.session.ready;
     await settle();
-    expect(r.log).to.deep.equal(['prepare', 'connect']);
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine', 'connect']);
     r.session.stop();
     await ready;
     const engine = new FakeEngine();
@@ -76,12 +82,58 @@ describe('EngineSession', () => {
     expect(engine.disposed).to.equal(true);
     expect(engine.calls).to.deep.equal([]);
     expect(r.session.engine).to.equal(null);
-    expect(r.log).to.deep.equal(['prepare', 'connect']);
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine', 'connect']);
     // The next ready waits for a new start.
     let next = false;
     void r.session.ready.then(() => (next = true));
     await settle();
     expect(next).to.equal(false);
+  });
+
+  it('waits before the canvas and again before the engine; a stop or a removal while it waits ends the start', async () => {
+    const canvas = deferred<void>();
+    const engineWait = deferred<void>();
+    const r = rig(undefined, (before) => (before === 'canvas' ? canvas.promise : engineWait.promise));
+    host = r.host;
+    document.body.append(host);
+    await settle();
+    expect(r.log).to.deep.equal(['wait for canvas']);
+    canvas.resolve();
+    await settle();
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine']);
+    engineWait.resolve();
+    await r.session.ready;
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine', 'connect', 'describe', 'loaded', 'settled']);
+
+    // Removed while waiting for the paint: no canvas, no engine.
+    const paint = deferred<void>();
+    const s = rig(undefined, () => paint.promise);
+    document.body.append(s.host);
+    await settle();
+    s.host.remove();
+    paint.resolve();
+    await settle();
+    expect(s.log).to.deep.equal(['wait for canvas', 'settled']);
+    expect(s.session.engine).to.equal(null);
+    // Stopped while waiting for the engine's turn: none is made.
+    const turn = deferred<void>();
+    const t = rig(undefined, (before) => (before === 'canvas' ? Promise.resolve() : turn.promise));
+    document.body.append(t.host);
+    await settle();
+    t.session.stop();
+    turn.resolve();
+    await settle();
+    expect(t.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine']);
+    expect(t.session.engine).to.equal(null);
+    t.host.remove();
+  });
+
+  it('afterPaint() resolves after the next animation frame, in a task of its own', async () => {
+    const order: string[] = [];
+    const done = afterPaint().then(() => order.push('after paint'));
+    requestAnimationFrame(() => order.push('frame'));
+    await done;
+    expect(order).to.deep.equal(['frame', 'after paint']);
   });
 
   it('a host not in the document when its start comes round makes no engine', async () => {
@@ -141,7 +193,7 @@ describe('EngineSession', () => {
     document.body.append(host);
     await r.session.ready;
     expect(r.failed).to.deep.equal(['engine: bad scene']);
-    expect(r.log).to.deep.equal(['prepare', 'connect', 'describe', 'settled']);
+    expect(r.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine', 'connect', 'describe', 'settled']);
   });
 
   it('tells the engine to run or not once per change, starting from what the load said', async () => {
