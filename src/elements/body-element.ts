@@ -4,7 +4,7 @@ import { LitElement, css, nothing } from 'lit';
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import type { BodyStyle } from '../render/renderer.js';
-import { Checker, numberAttribute, toDegrees, toRadians, type Problem } from './checks.js';
+import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
 import type { SceneHost } from './scene-host.js';
 
 /**
@@ -111,7 +111,7 @@ export abstract class PhysicsBodyElement extends LitElement {
     this._scene?.applyImpulse(this, ix, iy);
   }
 
-  /** Sets the velocity of every particle of the body (world units / s). */
+  /** Sets the body's velocity (world units / s): a rigid body's, or every particle's of a body of particles. */
   setVelocity(vx: number, vy: number): void {
     this._scene?.setVelocity(this, vx, vy);
   }
@@ -131,17 +131,6 @@ export abstract class PhysicsBodyElement extends LitElement {
       stroke: check.color('stroke', this.stroke, d.stroke),
       lineWidth: 1.5,
     };
-  }
-
-  /** Position, angle and material fields shared by the rigid shapes. */
-  protected common(check: Checker, area: number | null): Record<string, unknown> {
-    const out: Record<string, unknown> = {};
-    const { x, y, angle } = this.declared;
-    out.x = check.number('x', x, { fallback: 0 });
-    out.y = check.number('y', y, { fallback: 0 });
-    out.angle = toRadians(check.number('angle', angle, { fallback: 0 })!);
-    this.material(check, out, area);
-    return out;
   }
 
   /** Checks pose attributes this kind of body does not use, so a bad value is reported all the same. */

@@ -16,8 +16,12 @@ export abstract class PhysicsLinkElement extends LitElement {
     }
   `;
 
-  /** Anchor point in world units; without one, the link joins the two bodies' nearest particles. */
+  /**
+   * Anchor point in world units (with `y`): a rigid body is held at this point, a body of particles at its particle
+   * nearest to it. Without one, a rigid body at its centre, a body of particles at its particle nearest to the other.
+   */
   @property({ type: Number, converter: numberAttribute }) x?: number;
+  /** Anchor point's y (with `x`). */
   @property({ type: Number, converter: numberAttribute }) y?: number;
 
   /** Set by the owning scene. @internal */
@@ -39,9 +43,17 @@ export abstract class PhysicsLinkElement extends LitElement {
   }
 
   protected anchor(check: Checker): { x?: number; y?: number } {
-    const x = check.number('x', this.x);
-    const y = check.number('y', this.y);
-    return x !== undefined && y !== undefined ? { x, y } : {};
+    const p = this.point(check, 'x', this.x, 'y', this.y);
+    return p ? { x: p[0], y: p[1] } : {};
+  }
+
+  /** A point from two coordinate attributes: both or neither (one alone is reported as a missing other). */
+  protected point(check: Checker, xName: string, x: unknown, yName: string, y: unknown): [number, number] | null {
+    const px = check.number(xName, x);
+    const py = check.number(yName, y);
+    const given = (v: unknown) => v !== undefined && v !== null;
+    if (given(x) !== given(y)) check.fail(given(x) ? yName : xName, '', `is required with ${given(x) ? xName : yName}`);
+    return px !== undefined && py !== undefined ? [px, py] : null;
   }
 
   protected override render() {

@@ -1,15 +1,17 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
-import { PhysicsBodyElement, type Described } from './body-element.js';
+import type { Described } from './body-element.js';
 import { Checker, numberAttribute } from './checks.js';
+import { PhysicsShapeElement } from './shape-element.js';
 
 /**
- * A rigid box: four corner particles braced by sticks. `x`, `y` is its centre.
+ * A box: a rigid body with `x`, `y` at its centre, turned by `angle`; with `model="particles"`, four corner particles
+ * braced by sticks.
  *
  * @summary A rigid rectangle.
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
-export class PhysicsBoxElement extends PhysicsBodyElement {
+export class PhysicsBoxElement extends PhysicsShapeElement {
   /** Width in world units (> 0). Default 1. */
   @property({ type: Number, converter: numberAttribute }) width?: number;
   /** Height in world units (> 0). Default 1. */

@@ -1,15 +1,17 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
-import { PhysicsBodyElement, type Described } from './body-element.js';
+import type { Described } from './body-element.js';
 import { Checker, numberAttribute } from './checks.js';
+import { PhysicsShapeElement } from './shape-element.js';
 
 /**
- * A ball: one particle colliding as a circle. `x`, `y` is its centre. A ball does not track its own rotation.
+ * A ball: a rigid disc that spins and rolls (drawn with a radius line, so its turning shows), `x`, `y` at its centre;
+ * with `model="particles"`, one particle colliding as a circle, which does not turn.
  *
  * @summary A ball.
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
-export class PhysicsCircleElement extends PhysicsBodyElement {
+export class PhysicsCircleElement extends PhysicsShapeElement {
   /** Radius in world units (> 0). Default 0.5. */
   @property({ type: Number, converter: numberAttribute }) radius?: number;
 

@@ -1,16 +1,18 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
-import { PhysicsBodyElement, type Described } from './body-element.js';
+import type { Described } from './body-element.js';
 import { Checker } from './checks.js';
+import { PhysicsShapeElement } from './shape-element.js';
 
 /**
  * A rigid polygon, convex or concave, from `points` in body coordinates (as SVG's `<polygon points>`), placed at
- * `x`, `y` and rotated by `angle`.
+ * `x`, `y` and rotated by `angle`: a rigid body (a concave one collides as convex parts and is drawn as its outline);
+ * with `model="particles"`, its outline's particles braced by sticks.
  *
  * @summary A rigid polygon.
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
-export class PhysicsPolygonElement extends PhysicsBodyElement {
+export class PhysicsPolygonElement extends PhysicsShapeElement {
   /** Outline "x,y x,y x,y …" (at least 3 points, non-zero area). */
   @property() points?: string;
 

@@ -5,8 +5,9 @@ import { Checker, numberAttribute } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
- * A damped Hooke spring between body `a` and body `b` (element ids), attached at their particles nearest to the
- * anchor `x`, `y` (or nearest to each other).
+ * A damped Hooke spring between body `a` and body `b` (element ids), attached to a rigid body at the anchor `x`, `y`
+ * (or its centre) and to a body of particles at its particle nearest to the anchor (or to the other end).
+ * `<physics-joint type="spring">` is the same with an end on each body (`x1`, `y1`, `x2`, `y2`) or on the world.
  *
  * @summary A spring between two bodies.
  * @fires physics-error - A missing id or a bad value (detail: element, attribute, value, message); bubbles to the scene.

@@ -2,15 +2,16 @@
 // two newest published frames, the world's viewBox is fitted into the element's box keeping its aspect ratio
 // (like SVG's preserveAspectRatio="xMidYMid meet"), and bodies are drawn in batches: one canvas path per style.
 import p5 from 'p5';
-import { F, HEADER, aabbOffset, poseOffset, type Topology } from '../worker/protocol.js';
+import { F, HEADER, POSE, aabbOffset, poseOffset, type LinkEnd, type Topology } from '../worker/protocol.js';
 import type { FrameStore } from '../worker/client.js';
 import { track } from '../worker/resources.js';
 import { PAINTERS, type BodyPainter, type BodyStyle, type Pen } from './bodies/index.js';
-import { disc } from './bodies/painter.js';
 
 export type { BodyStyle } from './bodies/index.js';
 
 p5.disableFriendlyErrors = true;
+
+const TAU = Math.PI * 2;
 
 /** What a custom drawing hook receives each frame. */
 export interface DrawView {
@@ -20,6 +21,11 @@ export interface DrawView {
   ctx: CanvasRenderingContext2D;
   /** Interpolated particle positions in world units: x at 2·i, y at 2·i + 1 (i = particle storage index). */
   positions: Float64Array;
+  /**
+   * Interpolated body poses in world units and radians: x, y, angle at 3·k … 3·k + 2 (k = place in topology.bodies).
+   * A rigid body's pose is its centre of mass (its topology `center` says where that is in its own coordinates).
+   */
+  poses: Float64Array;
   topology: Topology;
   /** The newest frame (see F in worker/protocol.ts for its header). */
   frame: Float64Array;
@@ -85,6 +91,7 @@ export class SceneRenderer {
   private groups: Group[] = [];
   private groupsFor: Topology | null = null;
   private positions = new Float64Array(64);
+  private poses = new Float64Array(3 * 16);
   private readonly instance: p5;
   private readonly observer: ResizeObserver;
   private view: DrawView | null = null;
@@ -261,14 +268,15 @@ export class SceneRenderer {
       ctx.fillRect(0, 0, ctx.canvas.width, ctx.canvas.height);
     }
     ctx.restore();
-    if (this.drawMode === 'over' || !this.hook) this.drawBodies(ctx, t, f);
+    if (this.drawMode === 'over' || !this.hook) this.drawBodies(ctx, t);
     if (this.debug) this.drawDebug(ctx, t, f);
     if (this.hook) {
       ctx.save();
       try {
-        const v = (this.view ??= { p: s, ctx, positions: this.positions, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha });
+        const v = (this.view ??= { p: s, ctx, positions: this.positions, poses: this.poses, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha });
         v.ctx = ctx;
         v.positions = this.positions;
+        v.poses = this.poses;
         v.topology = t;
         v.frame = f;
         v.scale = this.scale;
@@ -284,13 +292,17 @@ export class SceneRenderer {
     this.drawn++;
   }
 
-  /** Blends the two newest frames into `positions`; returns the blend factor. */
+  /** Blends the two newest frames into `positions` and `poses` (angles the short way round); returns the blend factor. */
   private interpolate(frames: FrameStore): number {
     const f = frames.curr;
     const prev = frames.prev;
     const n = f[F.particles];
+    const b = f[F.bodies];
     if (this.positions.length < 2 * n) this.positions = new Float64Array(Math.ceil(2 * n * 1.5));
+    if (this.poses.length < POSE * b) this.poses = new Float64Array(Math.ceil(POSE * b * 1.5));
     const pos = this.positions;
+    const poses = this.poses;
+    const at = poseOffset(n);
     let alpha = 1;
     const interval = (f[F.time] - prev[F.time]) * 1000;
     if (frames.received > 1 && prev[F.topology] === f[F.topology] && prev[F.particles] === n && interval > 0 && f[F.running]) {
@@ -298,10 +310,19 @@ export class SceneRenderer {
     }
     if (alpha >= 1) {
       for (let i = 0; i < 2 * n; i++) pos[i] = f[HEADER + i];
+      for (let i = 0; i < POSE * b; i++) poses[i] = f[at + i];
     } else {
       const a = alpha;
-      const b = 1 - alpha;
-      for (let i = 0; i < 2 * n; i++) pos[i] = prev[HEADER + i] * b + f[HEADER + i] * a;
+      const c = 1 - alpha;
+      for (let i = 0; i < 2 * n; i++) pos[i] = prev[HEADER + i] * c + f[HEADER + i] * a;
+      for (let o = 0; o < POSE * b; o += POSE) {
+        poses[o] = prev[at + o] * c + f[at + o] * a;
+        poses[o + 1] = prev[at + o + 1] * c + f[at + o + 1] * a;
+        const from = prev[at + o + 2];
+        let turn = f[at + o + 2] - from;
+        turn -= TAU * Math.round(turn / TAU);
+        poses[o + 2] = from + turn * a;
+      }
     }
     return alpha;
   }
@@ -310,34 +331,73 @@ export class SceneRenderer {
   private readonly X = (i: number): number => this.offsetX + this.positions[2 * i] * this.scale;
   private readonly Y = (i: number): number => this.offsetY + this.positions[2 * i + 1] * this.scale;
   /** What painters draw with, updated each frame. */
-  private readonly pen: Pen = { ctx: null!, X: this.X, Y: this.Y, scale: 1, topology: null!, frame: null!, poseAt: 0 };
+  private readonly pen: Pen = { ctx: null!, X: this.X, Y: this.Y, scale: 1, offsetX: 0, offsetY: 0, topology: null!, poses: this.poses };
+  /** Canvas pixels of the link end last placed (see place()). */
+  private readonly end = new Float64Array(2);
 
-  private drawBodies(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {
-    const { X, Y, pen } = this;
+  private drawBodies(ctx: CanvasRenderingContext2D, t: Topology): void {
+    const { pen } = this;
     pen.ctx = ctx;
     pen.scale = this.scale;
+    pen.offsetX = this.offsetX;
+    pen.offsetY = this.offsetY;
     pen.topology = t;
-    pen.frame = f;
-    pen.poseAt = poseOffset(f[F.particles]);
+    pen.poses = this.poses;
     ctx.lineJoin = 'round';
     ctx.lineCap = 'round';
     for (const g of this.groups) g.painter.draw(pen, g.bodies, g.style);
-    // Joints and springs: thin lines between the particles they hold.
-    if (t.links.length > 0) {
-      ctx.beginPath();
-      for (let k = 0; k < t.links.length; k += 2) {
-        const a = t.links[k];
-        const b = t.links[k + 1];
-        if (a === b) disc(pen, a, 3);
-        else {
-          ctx.moveTo(X(a), Y(a));
-          ctx.lineTo(X(b), Y(b));
-        }
+    if (t.links.length > 0) this.drawLinks(ctx, t);
+  }
+
+  /**
+   * Joints, springs and pins: a thin line between the ends, an arm from a rigid body's centre to its end, and a dot
+   * where a pivot (pin, revolute, weld) holds the ends together.
+   */
+  private drawLinks(ctx: CanvasRenderingContext2D, t: Topology): void {
+    const { end } = this;
+    ctx.beginPath();
+    for (const l of t.links) {
+      this.arm(ctx, l.a);
+      this.arm(ctx, l.b);
+      this.place(l.a);
+      ctx.moveTo(end[0], end[1]);
+      this.place(l.b);
+      ctx.lineTo(end[0], end[1]);
+      if (l.pivot) {
+        ctx.moveTo(end[0] + 3, end[1]);
+        ctx.arc(end[0], end[1], 3, 0, TAU);
       }
-      ctx.strokeStyle = '#555';
-      ctx.lineWidth = 1.5;
-      ctx.stroke();
     }
+    ctx.strokeStyle = '#555';
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+  }
+
+  /** A line from a rigid body's centre to a link end off its centre. */
+  private arm(ctx: CanvasRenderingContext2D, e: LinkEnd): void {
+    if (e.body < 0 || (e.x === 0 && e.y === 0)) return;
+    const o = POSE * e.body;
+    ctx.moveTo(this.offsetX + this.poses[o] * this.scale, this.offsetY + this.poses[o + 1] * this.scale);
+    this.place(e);
+    ctx.lineTo(this.end[0], this.end[1]);
+  }
+
+  /** Puts the canvas pixels of a link end into `end`: on a rigid body turned with it, a particle, or a world point. */
+  private place(e: LinkEnd): void {
+    let x = e.x;
+    let y = e.y;
+    if (e.body >= 0) {
+      const o = POSE * e.body;
+      const c = Math.cos(this.poses[o + 2]);
+      const s = Math.sin(this.poses[o + 2]);
+      x = this.poses[o] + c * e.x - s * e.y;
+      y = this.poses[o + 1] + s * e.x + c * e.y;
+    } else if (e.particle >= 0) {
+      x = this.positions[2 * e.particle];
+      y = this.positions[2 * e.particle + 1];
+    }
+    this.end[0] = this.offsetX + x * this.scale;
+    this.end[1] = this.offsetY + y * this.scale;
   }
 
   private drawDebug(ctx: CanvasRenderingContext2D, t: Topology, f: Float64Array): void {

@@ -259,8 +259,8 @@ export class EngineClient {
   }
 
   /**
-   * The newest frame as a patch for restore() after a restart: positions, and velocities from the two newest frames
-   * when both have the same topology and different steps. Null before any frame.
+   * The newest frame as a patch for restore() after a restart: positions and poses, and velocities and angular
+   * velocities from the two newest frames when both have the same topology and different steps. Null before any frame.
    */
   lastFrame(): FramePatch | null {
     this.poll();
@@ -268,15 +268,22 @@ export class EngineClient {
     if (fs.received === 0) return null;
     const f = fs.curr;
     const n = f[F.particles];
+    const b = f[F.bodies];
     const positions = f.slice(HEADER, HEADER + 2 * n);
+    const at = poseOffset(n);
+    const poses = f.slice(at, at + POSE * b);
     let velocities: Float64Array | null = null;
+    let spins: Float64Array | null = null;
     const p = fs.prev;
     const dt = f[F.time] - p[F.time];
     if (fs.received > 1 && p[F.topology] === f[F.topology] && p[F.particles] === n && p[F.stepCount] < f[F.stepCount] && dt > 0) {
       velocities = new Float64Array(2 * n);
       for (let k = 0; k < 2 * n; k++) velocities[k] = (f[HEADER + k] - p[HEADER + k]) / dt;
+      // Rigid bodies' angles are summed, never wrapped: their difference is the turn between the frames.
+      spins = new Float64Array(b);
+      for (let k = 0; k < b; k++) spins[k] = (f[at + POSE * k + 2] - p[at + POSE * k + 2]) / dt;
     }
-    return { topology: f[F.topology], stepCount: f[F.stepCount], time: f[F.time], positions, velocities };
+    return { topology: f[F.topology], stepCount: f[F.stepCount], time: f[F.time], positions, velocities, poses, spins };
   }
 
   /** @internal Test hook: terminates the worker from outside and tells no one (as if the browser had killed it). */
@@ -311,7 +318,10 @@ export class EngineClient {
     if (f) this.frames.accept(f);
   }
 
-  /** The pose [x, y, angle] of a body in the newest frame, or null. */
+  /**
+   * The pose [x, y, angle] of a body in the newest frame, or null: where its origin is (the x, y it was described at;
+   * a rigid body's frame pose is its centre of mass) and its angle.
+   */
   pose(key: number): [number, number, number] | null {
     this.poll();
     const t = this.topology;
@@ -320,7 +330,12 @@ export class EngineClient {
     const k = t.bodies.findIndex((b) => b.key === key);
     if (k < 0) return null;
     const o = poseOffset(f[F.particles]) + POSE * k;
-    return [f[o], f[o + 1], f[o + 2]];
+    const [x, y, angle] = [f[o], f[o + 1], f[o + 2]];
+    const center = t.bodies[k].center;
+    if (!center) return [x, y, angle];
+    const c = Math.cos(angle);
+    const s = Math.sin(angle);
+    return [x - (c * center[0] - s * center[1]), y - (s * center[0] + c * center[1]), angle];
   }
 
   /** Step count of the newest frame received. */

@@ -139,7 +139,8 @@ export class EngineHost implements EngineApi {
     const r = this.#bindings.bodies.get(key);
     if (!r || r.handle === null) return;
     const w = this.#world;
-    for (const h of w.bodyParticleHandles(r.handle)) w.setVelocity(h, vx, vy);
+    if (r.rigid) w.setBodyVelocity(r.handle, vx, vy);
+    else for (const h of w.bodyParticleHandles(r.handle)) w.setVelocity(h, vx, vy);
   }
 
   bodiesAt(x: number, y: number): number[] {

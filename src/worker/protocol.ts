@@ -1,6 +1,7 @@
 // What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
 // and in the worker), and the layout of one published state frame (a Float64Array).
-import type { BodyDescription, BodyKind, BodyType, Bounds, WorldOptions } from '../engine/index.js';
+import type { BodyDescription, BodyKind, BodyType, Bounds, Vec2, WorldOptions } from '../engine/index.js';
+import type { JointType } from '../engine/options.js';
 
 /** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
 export interface KeyedBody {
@@ -9,14 +10,50 @@ export interface KeyedBody {
 }
 
 /**
- * A link between bodies, named by body keys. Each end attaches to the body's particle nearest to the anchor
- * (`x`, `y`), or, without an anchor, to the particles of the two bodies nearest to each other.
+ * A link between bodies, named by body keys. Each end attaches to a rigid body at the anchor point itself, to a body
+ * built of particles at its particle nearest to the anchor, or (a joint without `b`) to the world.
  */
 export type LinkDescription =
-  | { type: 'joint'; a: number; b: number; x?: number; y?: number; compliance?: number; length?: number }
+  | JointLink
+  /** A damped Hooke spring (<physics-spring>): between particles an explicit force, with a rigid end an engine spring joint. */
   | { type: 'spring'; a: number; b: number; x?: number; y?: number; stiffness: number; damping?: number; length?: number }
-  /** Pins body `a` to the world point (x, y) (its particle nearest to it, or `particle`, an index into the body). */
+  /**
+   * Pins body `a` to the world point (x, y): its particle nearest to it (or `particle`, an index into the body); a
+   * rigid body (without `particle`) by a revolute joint to the world at the point.
+   */
   | { type: 'pin'; a: number; x: number; y: number; particle?: number; compliance?: number };
+
+/**
+ * <physics-joint>: an engine joint (World.addJoint) between body `a` and body `b`, or the world when `b` is absent.
+ * Angles in radians, angular speeds in rad/s (the element converts its degrees).
+ */
+export interface JointLink {
+  type: 'joint';
+  /** Default 'distance' (a stick between the ends: the joint's meaning before it had types). */
+  joint?: JointType;
+  a: number;
+  b?: number;
+  /** The anchor (revolute, weld, prismatic; distance and spring: both ends, unless x1/y1, x2/y2 name them). */
+  x?: number;
+  y?: number;
+  /** Distance and spring: the end on a, and the end on b. */
+  x1?: number;
+  y1?: number;
+  x2?: number;
+  y2?: number;
+  axis?: Vec2;
+  lowerAngle?: number;
+  upperAngle?: number;
+  motorSpeed?: number;
+  maxMotorTorque?: number;
+  lower?: number;
+  upper?: number;
+  length?: number;
+  stiffness?: number;
+  damping?: number;
+  compliance?: number;
+  collideConnected?: boolean;
+}
 
 export interface KeyedLink {
   key: number;
@@ -63,13 +100,40 @@ export interface TopologyBody {
   ring?: number;
   /** Torn cloth: per grid node, bit 1 = the link to the right neighbour broke, bit 2 = the link down broke. */
   torn?: Uint8Array;
+  /**
+   * A rigid body (the engine's rigid model: one particle, its centre of mass): drawn from its pose, which a frame
+   * gives as its centre of mass and its angle, with `outline` (a box or polygon) or `radius` (a disc) about it.
+   */
+  rigid?: boolean;
+  /** A rigid body's outline x0, y0, x1, y1, … about its centre of mass, unturned (the polygon as described, not its convex parts). */
+  outline?: Float64Array;
+  /** A rigid body's centre of mass in its own coordinates: its origin (the x, y it was described at) is pose − R(angle)·center. */
+  center?: [number, number];
+}
+
+/**
+ * One end of a drawn link: a point fixed on a rigid body (`body` ≥ 0, its place in Topology.bodies; x, y about its
+ * centre of mass, turning with it), a particle (`particle` ≥ 0, a storage index), or the world point (x, y).
+ */
+export interface LinkEnd {
+  body: number;
+  particle: number;
+  x: number;
+  y: number;
+}
+
+/** A link as drawn: a line between its ends; `pivot` (pins, revolute and weld joints): the ends are held together. */
+export interface TopologyLink {
+  a: LinkEnd;
+  b: LinkEnd;
+  pivot: boolean;
 }
 
 export interface Topology {
   version: number;
   bodies: TopologyBody[];
-  /** Links as particle index pairs (joints and springs; pins use the same particle twice), for drawing. */
-  links: Float64Array;
+  /** Links in force (joints, springs, pins), for drawing. */
+  links: TopologyLink[];
 }
 
 export type Transport = 'shared' | 'transfer' | 'direct';
@@ -107,7 +171,7 @@ export interface HostError {
 export interface HostSnapshot {
   world: unknown;
   bodies: { key: number; desc: BodyDescription; handle: number; pose: number[] }[];
-  links: { key: number; desc: LinkDescription; handles: number[]; pa: number; pb: number }[];
+  links: { key: number; desc: LinkDescription; handles: number[]; drawn: TopologyLink | null }[];
   params: HostParams;
   /** The host's topology version when taken (-1: a change not yet published), to match frames against it. */
   topology?: number;
@@ -115,8 +179,9 @@ export interface HostSnapshot {
 
 /**
  * The newest published frame, laid over a restored snapshot after a worker restart: particle positions (x at 2·i,
- * y at 2·i+1) and, when the two newest frames allow it, velocities; applied only when the frame's topology is the
- * snapshot's (same particles in the same slots).
+ * y at 2·i+1), the bodies' poses (x, y, angle per body in topology order: rigid bodies take their angle from it) and,
+ * when the two newest frames allow it, velocities and angular velocities (per body); applied only when the frame's
+ * topology is the snapshot's (same particles in the same slots, same bodies in the same order).
  */
 export interface FramePatch {
   topology: number;
@@ -124,6 +189,8 @@ export interface FramePatch {
   time: number;
   positions: Float64Array;
   velocities: Float64Array | null;
+  poses?: Float64Array;
+  spins?: Float64Array | null;
 }
 
 /** @internal Test faults: 'throw' makes the next tick of the step loop throw, 'hang' blocks the worker (busy wait). */

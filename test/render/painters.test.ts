@@ -1,7 +1,7 @@
 // The painters of src/render/bodies/ on a recording context: what each body type draws, batched by style.
 import { expect } from '@open-wc/testing';
 import { BODY_TYPES, RAGDOLL_BONES, RAGDOLL_JOINTS } from '../../src/engine/index.js';
-import { PAINTERS, type Pen } from '../../src/render/bodies/index.js';
+import { PAINTERS, type BodyStyle, type Pen } from '../../src/render/bodies/index.js';
 import type { Topology, TopologyBody } from '../../src/worker/protocol.js';
 
 type Call = [string, ...number[]];
@@ -22,10 +22,13 @@ function recorder() {
   return { ctx: ctx as unknown as CanvasRenderingContext2D, calls, paints };
 }
 
-/** Draws the topology's bodies k in one style with their type's painter; particle i is at (i, 10·i) pixels. */
-function paint(topology: Topology, ks: number[], style = { fill: '#f00', stroke: '#00f', lineWidth: 1.5 }, scale = 20) {
+/**
+ * Draws the topology's bodies k in one style with their type's painter; particle i is at (i, 10·i) pixels, body k's
+ * pose at poses[3·k …] (world units, drawn at 20 pixels per unit, offset by (100, 200) pixels).
+ */
+function paint(topology: Topology, ks: number[], style: BodyStyle = { fill: '#f00', stroke: '#00f', lineWidth: 1.5 }, scale = 20, poses: number[] = []) {
   const r = recorder();
-  const pen: Pen = { ctx: r.ctx, X: (i) => i, Y: (i) => 10 * i, scale, topology, frame: new Float64Array(0), poseAt: 0 };
+  const pen: Pen = { ctx: r.ctx, X: (i) => i, Y: (i) => 10 * i, scale, offsetX: 100, offsetY: 200, topology, poses: Float64Array.from(poses) };
   PAINTERS[topology.bodies[ks[0]].type].draw(pen, ks, style);
   return r;
 }
@@ -37,7 +40,7 @@ describe('body painters', () => {
     expect(Object.keys(PAINTERS).sort()).to.deep.equal([...BODY_TYPES].sort());
   });
 
-  it('shapes of one style are one path, one fill and one stroke: boxes and rings as loops, balls as discs', () => {
+  it('shapes of one style are one path, one fill and one stroke: particle boxes and rings as loops, balls as discs', () => {
     const bodies: TopologyBody[] = [
       { key: 1, type: 'box', kind: 'rigid', indices: Int32Array.of(0, 1, 2, 3) },
       { key: 2, type: 'circle', kind: 'particle', indices: Int32Array.of(4), radius: 0.5 },
@@ -46,7 +49,7 @@ describe('body painters', () => {
       { key: 4, type: 'polygon', kind: 'rigid', indices: Int32Array.of(10, 11, 12) },
     ];
     expect(new Set([1, 2, 3].map((k) => PAINTERS[bodies[k].type].batch))).to.deep.equal(new Set([PAINTERS.box.batch]));
-    const { calls, paints } = paint({ version: 1, bodies, links: new Float64Array(0) }, [0, 1, 2, 3]);
+    const { calls, paints } = paint({ version: 1, bodies, links: [] }, [0, 1, 2, 3]);
     expect(calls.filter((c) => c[0] === 'beginPath').length).to.equal(1);
     expect(paints).to.deep.equal([{ op: 'fill', style: '#f00', width: 0 }, { op: 'stroke', style: '#00f', width: 1.5 }]);
     expect(points(calls, 'moveTo')).to.deep.equal([0, 4 + 10, 5, 10]);
@@ -56,12 +59,49 @@ describe('body painters', () => {
     expect(calls.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', 4, 40, 0.5 * 20, 0, Math.PI * 2]]);
   });
 
+  it('rigid bodies from their pose: an outline turned by the angle, a disc with a radius line that turns with it', () => {
+    const bodies: TopologyBody[] = [
+      { key: 1, type: 'box', kind: 'rigid', indices: Int32Array.of(0), rigid: true, outline: Float64Array.of(-1, -0.5, 1, -0.5, 1, 0.5, -1, 0.5), center: [0, 0] },
+      { key: 2, type: 'circle', kind: 'rigid', indices: Int32Array.of(1), rigid: true, radius: 0.5, center: [0, 0] },
+      // A concave polygon: drawn as its outline (an L), not as its convex parts.
+      { key: 3, type: 'polygon', kind: 'rigid', indices: Int32Array.of(2), rigid: true, outline: Float64Array.of(0, 0, 2, 0, 2, 1, 1, 1, 1, 3, 0, 3), center: [0, 0] },
+    ];
+    // The box at (2, 3) turned a quarter turn; the ball at (5, 1) turned by pi; the L at (0, 0) unturned.
+    const poses = [2, 3, Math.PI / 2, 5, 1, Math.PI, 0, 0, 0];
+    const { calls, paints } = paint({ version: 1, bodies, links: [] }, [0, 1, 2], undefined, 20, poses);
+    const px = (x: number, y: number) => [100 + 20 * x, 200 + 20 * y];
+    const at = (c: Call) => [c[1], c[2]];
+    const path = calls.slice(0, calls.findIndex((c, q) => q > 0 && c[0] === 'beginPath'));
+    // The box's corners: (−1, −0.5) turned a quarter turn is (0.5, −1), about its centre.
+    const box = path.filter((c) => c[0] === 'moveTo' || c[0] === 'lineTo').slice(0, 4).map(at);
+    [[0.5, -1], [0.5, 1], [-0.5, 1], [-0.5, -1]].forEach(([u, v], q) => {
+      expect(box[q][0]).to.be.closeTo(px(2 + u, 3 + v)[0], 1e-9);
+      expect(box[q][1]).to.be.closeTo(px(2 + u, 3 + v)[1], 1e-9);
+    });
+    expect(path.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', ...px(5, 1), 10, 0, Math.PI * 2]]);
+    const l = path.filter((c) => c[0] === 'moveTo' || c[0] === 'lineTo').slice(-6).map(at);
+    expect(l).to.deep.equal([[0, 0], [2, 0], [2, 1], [1, 1], [1, 3], [0, 3]].map(([x, y]) => px(x, y)));
+    // Fill and stroke of the shapes, then the radius lines in the stroke colour: from the centre along the angle.
+    expect(paints).to.deep.equal([{ op: 'fill', style: '#f00', width: 0 }, { op: 'stroke', style: '#00f', width: 1.5 }, { op: 'stroke', style: '#00f', width: 1.5 }]);
+    const spoke = calls.slice(calls.lastIndexOf(calls.filter((c) => c[0] === 'beginPath').at(-1)!));
+    expect(spoke.map((c) => c[0])).to.deep.equal(['beginPath', 'moveTo', 'lineTo']);
+    expect(at(spoke[1])).to.deep.equal(px(5, 1));
+    expect(spoke[2][1]).to.be.closeTo(px(4.5, 1)[0], 1e-9);
+    expect(spoke[2][2]).to.be.closeTo(px(4.5, 1)[1], 1e-9);
+    // Without a stroke, the radius line is drawn darker than any fill.
+    const plain = paint({ version: 1, bodies, links: [] }, [1], { fill: '#f00', stroke: null, lineWidth: 1.5 }, 20, poses);
+    expect(plain.paints.map((p) => [p.op, p.style])).to.deep.equal([['fill', '#f00'], ['stroke', 'rgba(0, 0, 0, 0.45)']]);
+    // A ball of particles has no turn to show: no radius line.
+    const particleBall: TopologyBody = { key: 4, type: 'circle', kind: 'particle', indices: Int32Array.of(0), radius: 0.5 };
+    expect(paint({ version: 1, bodies: [particleBall], links: [] }, [0]).paints.length).to.equal(2);
+  });
+
   it('ropes are polylines as thick as their particles, at least the style\'s width', () => {
     const bodies: TopologyBody[] = [
       { key: 1, type: 'rope', kind: 'rope', indices: Int32Array.of(0, 1, 2), radius: 0.1 },
       { key: 2, type: 'rope', kind: 'rope', indices: Int32Array.of(3, 4), radius: 0 },
     ];
-    const t = { version: 1, bodies, links: new Float64Array(0) };
+    const t = { version: 1, bodies, links: [] };
     const thick = paint(t, [0, 1]);
     expect(points(thick.calls, 'moveTo')).to.deep.equal([0, 3]);
     expect(points(thick.calls, 'lineTo')).to.deep.equal([1, 2, 4]);
@@ -72,7 +112,7 @@ describe('body painters', () => {
   it('ragdolls: the builder\'s bones as strokes, the head as a disc', () => {
     const indices = Int32Array.from({ length: RAGDOLL_JOINTS.length }, (_, i) => 20 + i);
     const bodies: TopologyBody[] = [{ key: 1, type: 'ragdoll', kind: 'ragdoll', indices, radius: 0.1 }];
-    const { calls, paints } = paint({ version: 1, bodies, links: new Float64Array(0) }, [0]);
+    const { calls, paints } = paint({ version: 1, bodies, links: [] }, [0]);
     const segments = calls.filter((c) => c[0] === 'lineTo').map((c, q) => [points(calls, 'moveTo')[q] - 20, c[1] - 20]);
     expect(segments).to.deep.equal(RAGDOLL_BONES.map(([a, b]) => [a, b]));
     expect(calls.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', 20, 200, 0.1 * 20, 0, Math.PI * 2]]);
@@ -82,7 +122,7 @@ describe('body painters', () => {
   it('a torn cloth leaves out the cells and links that tore', () => {
     // 3 × 3 grid on particles 0…8; the link from node 0 to its right neighbour broke.
     const bodies: TopologyBody[] = [{ key: 1, type: 'cloth', kind: 'cloth', indices: Int32Array.from({ length: 9 }, (_, i) => i), columns: 3, rows: 3, torn: Uint8Array.of(1, 0, 0, 0, 0, 0, 0, 0, 0) }];
-    const t = { version: 1, bodies, links: new Float64Array(0) };
+    const t = { version: 1, bodies, links: [] };
     const { calls, paints } = paint(t, [0]);
     expect(paints.map((p) => p.op)).to.deep.equal(['fill', 'stroke']);
     const fillPass = calls.slice(0, calls.findIndex((c, q) => q > 0 && c[0] === 'beginPath'));

@@ -6,9 +6,10 @@ import { FrameStore } from '../../src/worker/client.js';
 import { F, HEADER, POSE, type Topology, type TopologyBody } from '../../src/worker/protocol.js';
 import { waitFor } from '../elements/helpers.js';
 
-function frame(seq: number, time: number, running: boolean, xy: number[], bodies: number): Float64Array {
+function frame(seq: number, time: number, running: boolean, xy: number[], bodies: number, poses: number[] = []): Float64Array {
   const n = xy.length / 2;
   const f = new Float64Array(HEADER + 2 * n + POSE * bodies);
+  f.set(poses, HEADER + 2 * n);
   f[F.seq] = seq;
   f[F.topology] = 1;
   f[F.time] = time;
@@ -47,7 +48,7 @@ describe('SceneRenderer', () => {
       bodies.push({ key: 30 + k, type: 'circle', kind: 'particle', indices: Int32Array.of(xy.length / 2), radius: 0.4 });
       xy.push(1.5 + k * 1.5, 9);
     }
-    const topology: Topology = { version: 1, bodies, links: new Float64Array(0) };
+    const topology: Topology = { version: 1, bodies, links: [] };
     const frames = new FrameStore();
     frames.accept(frame(1, 0, false, xy, bodies.length));
     renderer = new SceneRenderer(box, () => ({ frames, topology, poll: () => {} }));
@@ -87,7 +88,7 @@ describe('SceneRenderer', () => {
   });
 
   it('interpolates between the two newest frames while running, and shows the newest when paused', async () => {
-    const topology: Topology = { version: 1, bodies: [{ key: 1, type: 'circle', kind: 'particle', indices: Int32Array.of(0), radius: 0.5 }], links: new Float64Array(0) };
+    const topology: Topology = { version: 1, bodies: [{ key: 1, type: 'circle', kind: 'particle', indices: Int32Array.of(0), radius: 0.5 }], links: [] };
     const frames = new FrameStore();
     frames.accept(frame(1, 0, true, [0, 5], 1));
     frames.accept(frame(2, 1, true, [10, 5], 1));
@@ -110,5 +111,27 @@ describe('SceneRenderer', () => {
     frames.accept(frame(3, 2, false, [3, 5], 1));
     await waitFor(() => views.length >= 2, 'two more frames');
     expect(views.map((v) => v.x)).to.deep.equal(views.map(() => 3));
+  });
+
+  it('blends poses too, angles the short way round (from 3 to -3 rad through pi, not through 0)', async () => {
+    const body: TopologyBody = { key: 1, type: 'box', kind: 'rigid', indices: Int32Array.of(0), rigid: true, outline: Float64Array.of(-1, -1, 1, -1, 1, 1, -1, 1), center: [0, 0] };
+    const topology: Topology = { version: 1, bodies: [body], links: [] };
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, true, [0, 5], 1, [0, 5, 3]));
+    frames.accept(frame(2, 1, true, [10, 5], 1, [10, 5, -3]));
+    const views: { x: number; angle: number; alpha: number }[] = [];
+    renderer = new SceneRenderer(box, () => ({ frames, topology, poll: () => {} }));
+    renderer.viewWidth = 10;
+    renderer.viewHeight = 10;
+    renderer.hook = (v: DrawView) => views.push({ x: v.poses[0], angle: v.poses[2], alpha: v.alpha });
+    await waitFor(() => views.some((v) => v.alpha === 1), 'a frame drawn at the newest state');
+    const between = views.filter((v) => v.alpha < 1);
+    expect(between.length).to.be.greaterThan(0);
+    for (const v of between) {
+      expect(v.x).to.be.closeTo(10 * v.alpha, 1e-9);
+      // 3 + (2π − 6)·alpha: the turn of 0.28 rad across pi, not the 6 rad back through 0.
+      expect(v.angle).to.be.closeTo(3 + (2 * Math.PI - 6) * v.alpha, 1e-9);
+    }
+    expect(views.at(-1)!.angle).to.equal(-3);
   });
 });

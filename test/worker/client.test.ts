@@ -44,6 +44,14 @@ const SCENE: HostScene = {
   links: [],
 };
 
+/** A polygon whose origin is not its centre of mass (an L: the centre is at 0.75, 1.25 of its points). */
+const L_SHAPE: HostScene = {
+  world: {},
+  params: { gravity: { x: 0, y: 0 } },
+  bodies: [{ key: 1, desc: { type: 'polygon', x: 4, y: 3, angle: 0.5, angularVelocity: 1, points: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 3 }, { x: 0, y: 3 }] } }],
+  links: [],
+};
+
 describe('EngineClient (fake worker)', () => {
   const clients: EngineClient[] = [];
   afterEach(() => clients.splice(0).forEach((c) => c.dispose()));
@@ -78,6 +86,24 @@ describe('EngineClient (fake worker)', () => {
     expect((await client.api.diagnostics()).stepCount).to.equal(30);
   });
 
+  it('pose() answers a rigid body\'s origin (where it was described), though a frame holds its centre of mass', async () => {
+    const client = await start(new FakeWorker(true));
+    await client.api.load(L_SHAPE);
+    await client.synced(0);
+    const [x, y, angle] = client.pose(1)!;
+    expect(x).to.be.closeTo(4, 1e-12);
+    expect(y).to.be.closeTo(3, 1e-12);
+    expect(angle).to.equal(0.5);
+    // Turning about its centre of mass at 1 rad/s for half a second: the origin swings around that centre.
+    await client.api.step(30);
+    await client.synced(30);
+    const [cx, cy] = [4 + Math.cos(0.5) * 0.75 - Math.sin(0.5) * 1.25, 3 + Math.sin(0.5) * 0.75 + Math.cos(0.5) * 1.25];
+    const [x1, y1, a1] = client.pose(1)!;
+    expect(a1).to.be.closeTo(1, 1e-9);
+    expect(x1).to.be.closeTo(cx - (Math.cos(1) * 0.75 - Math.sin(1) * 1.25), 1e-9);
+    expect(y1).to.be.closeTo(cy - (Math.sin(1) * 0.75 + Math.cos(1) * 1.25), 1e-9);
+  });
+
   it('lastFrame() holds the newest positions and, from the two newest frames, velocities', async () => {
     const client = await start(new FakeWorker(true));
     await client.api.load(SCENE);
@@ -87,11 +113,13 @@ describe('EngineClient (fake worker)', () => {
     await client.api.step(1);
     await client.synced(11);
     const f = client.lastFrame()!;
-    expect([f.stepCount, f.positions.length]).to.deep.equal([11, 2 * 5]);
+    // Two rigid bodies: a particle each (their centres of mass), and a pose each.
+    expect([f.stepCount, f.positions.length, f.poses!.length]).to.deep.equal([11, 2 * 2, 2 * 3]);
     expect(f.positions[1]).to.equal(client.pose(1)![1]);
-    // Falling: about g·t downward at t = 11/60 s, nothing sideways.
+    // Falling: about g·t downward at t = 11/60 s, nothing sideways, not turning.
     expect(f.velocities![0]).to.equal(0);
     expect(f.velocities![1]).to.be.closeTo(10 * 11 / 60, 0.2);
+    expect(Array.from(f.spins!)).to.deep.equal([0, 0]);
   });
 
   it('a worker that never answers at start: the main thread instead, and onError says why', async () => {

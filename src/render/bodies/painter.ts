@@ -1,7 +1,7 @@
 // How a body type is drawn: one painter per type (box.ts, circle.ts, …, listed in index.ts). Bodies are drawn in
 // batches, one canvas path per pass: the bodies of one batch and one style together (all shapes of a fill, all ropes
 // of a colour). What the host knows about a type is its other half, in src/worker/host/bodies/.
-import type { Topology } from '../../worker/protocol.js';
+import { POSE, type Topology, type TopologyBody } from '../../worker/protocol.js';
 
 export interface BodyStyle {
   /** CSS colour or null for none. */
@@ -17,12 +17,13 @@ export interface Pen {
   /** Canvas CSS pixels of particle i (a storage index) at its interpolated position. */
   readonly X: (i: number) => number;
   readonly Y: (i: number) => number;
-  /** CSS pixels per world unit. */
+  /** World → canvas CSS pixels: px = offsetX + x · scale, py = offsetY + y · scale. */
   scale: number;
+  offsetX: number;
+  offsetY: number;
   topology: Topology;
-  /** The newest frame: body k's pose (x, y, angle) is at frame[poseAt + POSE·k]. */
-  frame: Float64Array;
-  poseAt: number;
+  /** Body k's pose (x, y, angle; a rigid body's centre of mass) at poses[POSE·k …], interpolated like the positions. */
+  poses: Float64Array;
 }
 
 export interface BodyPainter {
@@ -33,17 +34,23 @@ export interface BodyPainter {
 }
 
 /**
- * Closed shapes of one style, as one path with one fill and one stroke: a body the topology gives a radius and one
- * particle is a disc (a ball), any other the closed loop through its particles (the first `ring` of them: a soft
- * body's hub is not on its outline).
+ * Closed shapes of one style, as one path with one fill and one stroke: a rigid body its outline or disc placed at
+ * its pose (then a second path: a radius line on each rigid disc, so its spin shows); a body the topology gives a
+ * radius and one particle is a disc (a particle ball); any other the closed loop through its particles (the first
+ * `ring` of them: a soft body's hub is not on its outline).
  */
 export const shape: BodyPainter = {
   batch: 'shape',
   draw(pen, group, { fill, stroke, lineWidth }) {
     const { ctx, X, Y } = pen;
+    let spokes = false;
     ctx.beginPath();
     for (const k of group) {
       const b = pen.topology.bodies[k];
+      if (b.rigid) {
+        spokes = rigidShape(pen, k, b) || spokes;
+        continue;
+      }
       const idx = b.indices;
       if (b.radius !== undefined && idx.length === 1) {
         disc(pen, idx[0], b.radius * pen.scale);
@@ -63,8 +70,50 @@ export const shape: BodyPainter = {
       ctx.lineWidth = lineWidth;
       ctx.stroke();
     }
+    if (!spokes) return;
+    ctx.beginPath();
+    for (const k of group) {
+      const b = pen.topology.bodies[k];
+      if (b.rigid && !b.outline) spoke(pen, k, b.radius ?? 0);
+    }
+    ctx.strokeStyle = stroke ?? SPOKE;
+    ctx.lineWidth = lineWidth;
+    ctx.stroke();
   },
 };
+
+/** A radius line's colour on a disc drawn without a stroke. */
+const SPOKE = 'rgba(0, 0, 0, 0.45)';
+
+/** A rigid body k as a subpath at its pose: its outline turned by its angle, or a disc; true for a disc. */
+function rigidShape({ ctx, poses, scale, offsetX, offsetY }: Pen, k: number, b: TopologyBody): boolean {
+  const o = POSE * k;
+  const x = offsetX + poses[o] * scale;
+  const y = offsetY + poses[o + 1] * scale;
+  const v = b.outline;
+  if (!v) {
+    const r = (b.radius ?? 0) * scale;
+    ctx.moveTo(x + r, y);
+    ctx.arc(x, y, r, 0, Math.PI * 2);
+    return true;
+  }
+  const c = Math.cos(poses[o + 2]) * scale;
+  const s = Math.sin(poses[o + 2]) * scale;
+  ctx.moveTo(x + c * v[0] - s * v[1], y + s * v[0] + c * v[1]);
+  for (let q = 2; q < v.length; q += 2) ctx.lineTo(x + c * v[q] - s * v[q + 1], y + s * v[q] + c * v[q + 1]);
+  ctx.closePath();
+  return false;
+}
+
+/** A line from the centre of rigid disc k to its rim along its angle. */
+function spoke({ ctx, poses, scale, offsetX, offsetY }: Pen, k: number, radius: number): void {
+  const o = POSE * k;
+  const x = offsetX + poses[o] * scale;
+  const y = offsetY + poses[o + 1] * scale;
+  const r = radius * scale;
+  ctx.moveTo(x, y);
+  ctx.lineTo(x + r * Math.cos(poses[o + 2]), y + r * Math.sin(poses[o + 2]));
+}
 
 /** A full circle of radius r (pixels) around particle i, as a subpath of the current path. */
 export function disc({ ctx, X, Y }: Pen, i: number, r: number): void {

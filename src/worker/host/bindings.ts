@@ -1,10 +1,12 @@
 // Binding the element layer's keys to engine objects: one record per described body and link, built into the world
 // (or not, when its description is refused), rebuilt on edits, and the handle → key map that events, picking and
 // grabs answer with.
-import { World, buildBody, type BodyDescription, type Handle } from '../../engine/index.js';
-import type { HostError, HostSnapshot, KeyedBody, KeyedLink, LinkDescription } from '../protocol.js';
+import { World, buildBody, type BodyDescription, type Handle, type Vec2 } from '../../engine/index.js';
+import { setRigidMaterial } from '../../engine/inspect.js';
+import type { HostError, HostSnapshot, JointLink, KeyedBody, KeyedLink, LinkDescription, LinkEnd, TopologyLink } from '../protocol.js';
 import { descriptorOf, type BodyDescriptor, type PoseBasis } from './bodies/index.js';
 import { measurePose } from './bodies/pose.js';
+import { rigidFacts, type RigidFacts } from './bodies/rigid.js';
 import { errorOf } from './errors.js';
 import type { HostSettings } from './settings.js';
 
@@ -17,24 +19,26 @@ export interface BodyRecord {
   descriptor: BodyDescriptor | null;
   /** Particle storage indices, as of the newest topology. */
   indices: Int32Array;
+  /** Where a body built of particles has its pose. */
   basis: PoseBasis;
+  /** Set when it is built as a rigid body (the engine's default model of boxes, polygons and circles). */
+  rigid: RigidFacts | null;
 }
 
 export interface LinkRecord {
   key: number;
   desc: LinkDescription;
   handles: Handle[];
-  /** Particle storage indices of the two ends (for drawing), -1 when inactive. */
-  pa: number;
-  pb: number;
+  /** Its ends as drawn (a rigid end's `body` is the body's key), null while not in force. */
+  drawn: TopologyLink | null;
 }
 
 function bodyRecord(key: number, desc: BodyDescription): BodyRecord {
-  return { key, desc, handle: null, descriptor: null, indices: new Int32Array(0), basis: [0, 0, 0, 0] };
+  return { key, desc, handle: null, descriptor: null, indices: new Int32Array(0), basis: [0, 0, 0, 0], rigid: null };
 }
 
-function linkRecord(key: number, desc: LinkDescription, handles: Handle[] = [], pa = -1, pb = -1): LinkRecord {
-  return { key, desc, handles, pa, pb };
+function linkRecord(key: number, desc: LinkDescription, handles: Handle[] = [], drawn: TopologyLink | null = null): LinkRecord {
+  return { key, desc, handles, drawn };
 }
 
 /** Whether two descriptions differ only in the named fields. */
@@ -49,6 +53,21 @@ function sameExcept(a: object, b: object, ignore: string[]): boolean {
 
 const STYLE = ['fill', 'stroke', 'id'];
 const MATERIAL = [...STYLE, 'friction', 'restitution'];
+/** What a rigid body that is not static takes without a rebuild: its velocities and its type. */
+const MOTION = [...MATERIAL, 'vx', 'vy', 'angularVelocity', 'kinematic'];
+
+type Motion = { friction?: number; restitution?: number; vx?: number; vy?: number; angularVelocity?: number; kinematic?: boolean; static?: boolean };
+
+/** Joints whose ends are held together at one anchor (the rest join two anchors, or slide). */
+const PIVOTS = new Set(['revolute', 'weld']);
+
+/** One end of a link: what the engine joins (a rigid body, a particle, or the world when neither) and where. */
+interface End {
+  body?: Handle;
+  particle?: Handle;
+  at: Vec2;
+  drawn: LinkEnd;
+}
 
 export class Bindings {
   /** The world everything is built in; load() and reset() replace it. */
@@ -115,28 +134,45 @@ export class Bindings {
     return error;
   }
 
-  /** A new description: a change of style costs nothing, of material a collider update, of anything else a rebuild. */
+  /**
+   * A new description: a change of style costs nothing, of material a collider update, of a rigid body's velocities
+   * or of its being kinematic a call on the body; of anything else a rebuild.
+   */
   updateBody(body: KeyedBody): HostError | null {
     const record = this.bodies.get(body.key);
     if (!record) return this.addBody(body);
-    const before = record.desc as { friction?: number; restitution?: number };
-    const after = body.desc as { friction?: number; restitution?: number };
+    const before = record.desc as Motion;
+    const after = body.desc as Motion;
     record.desc = body.desc;
-    if (record.handle !== null && sameExcept(before, after, MATERIAL) && (before.friction !== after.friction || before.restitution !== after.restitution)) {
+    if (record.handle !== null && sameExcept(before, after, record.rigid && !after.static ? MOTION : MATERIAL)) {
       try {
-        this.world.setCollider(record.handle, { friction: after.friction ?? 0.6, restitution: after.restitution ?? 0 });
-        this.world.wake(record.handle);
+        this.#changeLive(record, before, after);
         return null;
       } catch (error) {
         return errorOf(body.key, error);
       }
     }
-    if (record.handle !== null && sameExcept(before, after, STYLE)) return null;
     this.#unbuild(record);
     const error = this.#build(record);
     this.#relink(body.key);
     this.#changed();
     return error;
+  }
+
+  /** Applies what changed of material and (rigid bodies) motion to the built body. */
+  #changeLive(r: BodyRecord, before: Motion, after: Motion): void {
+    const w = this.world;
+    const h = r.handle!;
+    if (before.friction !== after.friction || before.restitution !== after.restitution) {
+      const friction = after.friction ?? 0.6;
+      const restitution = after.restitution ?? 0;
+      if (r.rigid) setRigidMaterial(w, h, friction, restitution);
+      else w.setCollider(h, { friction, restitution });
+      w.wake(h);
+    }
+    if (Boolean(before.kinematic) !== Boolean(after.kinematic)) w.setBodyType(h, after.kinematic ? 'kinematic' : 'dynamic');
+    if (before.vx !== after.vx || before.vy !== after.vy) w.setBodyVelocity(h, after.vx ?? 0, after.vy ?? 0);
+    if (before.angularVelocity !== after.angularVelocity) w.setBodyAngularVelocity(h, after.angularVelocity ?? 0);
   }
 
   removeBody(key: number): void {
@@ -180,14 +216,14 @@ export class Bindings {
 
   /** Links in force (both ends built). */
   activeLinks(): LinkRecord[] {
-    return [...this.links.values()].filter((l) => l.pa >= 0);
+    return [...this.links.values()].filter((l) => l.drawn !== null);
   }
 
   /** The records as plain data (the world is snapshotted on its own). */
   snapshot(): Pick<HostSnapshot, 'bodies' | 'links'> {
     return {
       bodies: [...this.bodies.values()].map((r) => ({ key: r.key, desc: r.desc, handle: r.handle ?? -1, pose: r.basis.slice() })),
-      links: [...this.links.values()].map((l) => ({ key: l.key, desc: l.desc, handles: l.handles.slice(), pa: l.pa, pb: l.pb })),
+      links: [...this.links.values()].map((l) => ({ key: l.key, desc: l.desc, handles: l.handles.slice(), drawn: l.drawn })),
     };
   }
 
@@ -202,11 +238,12 @@ export class Bindings {
         r.handle = b.handle;
         r.descriptor = descriptorOf(b.desc.type)!;
         r.basis = b.pose.slice() as PoseBasis;
+        r.rigid = rigidFacts(this.world, b.handle, b.desc, r.descriptor);
         this.#keys.set(b.handle, b.key);
       }
       this.bodies.set(b.key, r);
     }
-    for (const l of s.links) this.links.set(l.key, linkRecord(l.key, l.desc, l.handles.slice(), l.pa, l.pb));
+    for (const l of s.links) this.links.set(l.key, linkRecord(l.key, l.desc, l.handles.slice(), l.drawn));
     this.#changed();
   }
 
@@ -224,19 +261,34 @@ export class Bindings {
 
   #build(r: BodyRecord): HostError | null {
     try {
-      const descriptor = descriptorOf(r.desc?.type);
-      const model = descriptor?.model;
-      const built = buildBody(this.world, model ? ({ model, ...r.desc } as BodyDescription) : r.desc);
+      const built = buildBody(this.world, r.desc);
+      const descriptor = descriptorOf(r.desc.type)!;
       r.handle = built.body;
-      r.descriptor = descriptor!;
+      r.descriptor = descriptor;
       this.#keys.set(built.body, r.key);
+      r.rigid = rigidFacts(this.world, built.body, r.desc, descriptor);
+      const idx = this.world.bodyParticleIndices(built.body);
+      if (!r.rigid) this.#startMoving(built.body, idx, r.desc as Motion);
       const { x, y } = this.world.particles;
-      r.basis = measurePose(r.descriptor.pose, r.desc, this.world.bodyParticleIndices(built.body), x, y);
+      r.basis = measurePose(descriptor.pose, r.desc, idx, x, y);
       return null;
     } catch (error) {
       r.handle = null;
+      r.rigid = null;
       return errorOf(r.key, error);
     }
+  }
+
+  /**
+   * A body built of particles with a described velocity and angular velocity (a particle frame's builder takes
+   * neither): each particle moves as a point of a rigid body turning about the particles' mean.
+   */
+  #startMoving(body: Handle, idx: Int32Array, m: Motion): void {
+    const w = m.angularVelocity ?? 0;
+    if (m.static || (!m.vx && !m.vy && !w)) return;
+    const p = this.world.particles;
+    const c = this.world.bodyCentroid(body);
+    for (const i of idx) this.world.setVelocity(this.world.particleHandle(i), (m.vx ?? 0) - w * (p.y[i] - c.y), (m.vy ?? 0) + w * (p.x[i] - c.x));
   }
 
   #unbuild(r: BodyRecord): void {
@@ -257,50 +309,120 @@ export class Bindings {
   #unlink(l: LinkRecord): void {
     for (const h of l.handles) if (this.world.hasConstraint(h)) this.world.removeConstraint(h);
     l.handles = [];
-    l.pa = l.pb = -1;
+    l.drawn = null;
   }
 
-  /** Joins the link's ends (when both bodies are built): each at its body's particle nearest the anchor. */
+  /** Makes the link in the world once the bodies it names are built (a joint without `b` holds to the world). */
   #link(l: LinkRecord): HostError | null {
     const d = l.desc;
     const a = this.bodies.get(d.a);
     if (!a || a.handle === null) return null;
+    const b = d.type === 'pin' || d.b === undefined ? null : this.bodies.get(d.b);
+    if (b === undefined || b?.handle === null) return null;
     try {
-      const w = this.world;
-      if (d.type === 'pin') {
-        const idx = w.bodyParticleIndices(a.handle);
-        const i = d.particle !== undefined ? idx[Math.max(0, Math.min(idx.length - 1, d.particle))] : this.nearest(idx, d.x, d.y);
-        l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
-        l.pa = l.pb = i;
-        return null;
-      }
-      const b = this.bodies.get(d.b);
-      if (!b || b.handle === null) return null;
-      const ia = w.bodyParticleIndices(a.handle);
-      const ib = w.bodyParticleIndices(b.handle);
-      let pa: number;
-      let pb: number;
-      if (d.x !== undefined && d.y !== undefined) {
-        pa = this.nearest(ia, d.x, d.y);
-        pb = this.nearest(ib, d.x, d.y);
-      } else {
-        const cb = w.bodyCentroid(b.handle);
-        pa = this.nearest(ia, cb.x, cb.y);
-        pb = this.nearest(ib, w.particles.x[pa], w.particles.y[pa]);
-      }
-      const ha = w.particleHandle(pa);
-      const hb = w.particleHandle(pb);
-      l.handles = [
-        d.type === 'joint'
-          ? w.addDistance(ha, hb, { length: d.length, compliance: d.compliance })
-          : w.addSpring(ha, hb, { stiffness: d.stiffness, damping: d.damping, length: d.length }),
-      ];
-      l.pa = pa;
-      l.pb = pb;
+      if (d.type === 'pin') this.#pin(l, d, a);
+      else if (d.type === 'spring' && !a.rigid && !b!.rigid) this.#particleSpring(l, d, a, b!);
+      else this.#joint(l, d.type === 'spring' ? { ...d, type: 'joint', joint: 'spring' } : d, a, b);
       return null;
     } catch (error) {
-      l.handles = [];
+      this.#unlink(l);
       return errorOf(l.key, error);
     }
+  }
+
+  /** A pin: a rigid body by a revolute joint to the world at the point; otherwise its particle held there. */
+  #pin(l: LinkRecord, d: Extract<LinkDescription, { type: 'pin' }>, a: BodyRecord): void {
+    const w = this.world;
+    const at = { x: d.x, y: d.y };
+    const world: LinkEnd = { body: -1, particle: -1, x: d.x, y: d.y };
+    if (a.rigid && d.particle === undefined) {
+      l.handles = [w.addJoint({ type: 'revolute', a: a.handle!, anchor: at, compliance: d.compliance })];
+      l.drawn = { a: this.#end(a, at, at).drawn, b: world, pivot: true };
+      return;
+    }
+    const idx = w.bodyParticleIndices(a.handle!);
+    const i = d.particle !== undefined ? idx[Math.max(0, Math.min(idx.length - 1, d.particle))] : this.nearest(idx, d.x, d.y);
+    l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
+    l.drawn = { a: { body: -1, particle: i, x: 0, y: 0 }, b: world, pivot: true };
+  }
+
+  /** <physics-spring> between bodies of particles: an explicit Hooke force between their particles. */
+  #particleSpring(l: LinkRecord, d: Extract<LinkDescription, { type: 'spring' }>, a: BodyRecord, b: BodyRecord): void {
+    const [A, B] = this.#ends(d, a, b, false);
+    l.handles = [this.world.addSpring(A.particle!, B.particle!, { stiffness: d.stiffness, damping: d.damping, length: d.length })];
+    l.drawn = { a: A.drawn, b: B.drawn, pivot: false };
+  }
+
+  /** An engine joint (World.addJoint) between the ends. */
+  #joint(l: LinkRecord, d: JointLink, a: BodyRecord, b: BodyRecord | null): void {
+    const type = d.joint ?? 'distance';
+    const single = type === 'revolute' || type === 'weld' || type === 'prismatic';
+    const [A, B] = this.#ends(d, a, b, single);
+    l.handles = [
+      this.world.addJoint({
+        type,
+        a: A.body,
+        particleA: A.particle,
+        b: B.body ?? null,
+        particleB: B.particle,
+        anchor: single ? B.at : undefined,
+        anchorA: single ? undefined : A.at,
+        anchorB: single ? undefined : B.at,
+        axis: d.axis,
+        lowerAngle: d.lowerAngle,
+        upperAngle: d.upperAngle,
+        motorSpeed: d.motorSpeed,
+        maxMotorTorque: d.maxMotorTorque,
+        lower: d.lower,
+        upper: d.upper,
+        length: d.length,
+        stiffness: d.stiffness,
+        damping: d.damping,
+        compliance: d.compliance,
+        collideConnected: d.collideConnected,
+      }),
+    ];
+    const together = A.at.x === B.at.x && A.at.y === B.at.y;
+    l.drawn = { a: A.drawn, b: B.drawn, pivot: PIVOTS.has(type) || (type === 'distance' && together) };
+  }
+
+  /**
+   * Where a link's ends are. With anchors (x, y for both ends; x1, y1 and x2, y2 for each), a rigid body at the
+   * anchor itself, a body of particles at its particle nearest to it, the world at the anchor. Without, a rigid body
+   * at its centre of mass and a body of particles at its particle nearest to the other end (the two bodies' nearest
+   * particles), the world where a's end is. `single`: one anchor for both ends (b's is where a's end is).
+   */
+  #ends(d: JointLink | Extract<LinkDescription, { type: 'spring' }>, a: BodyRecord, b: BodyRecord | null, single: boolean): [End, End] {
+    const anchor = d.x !== undefined && d.y !== undefined ? { x: d.x, y: d.y } : null;
+    const j = d as JointLink;
+    const first = j.x1 !== undefined && j.y1 !== undefined ? { x: j.x1, y: j.y1 } : anchor;
+    const second = j.x2 !== undefined && j.y2 !== undefined ? { x: j.x2, y: j.y2 } : anchor;
+    const A = this.#end(a, single ? anchor : first, this.world.bodyCentroid((b ?? a).handle!));
+    const B = this.#end(b, single ? A.at : second, A.at);
+    return [A, B];
+  }
+
+  /** The end on body r (null: the world) at `anchor`, or without one toward the point `toward`. */
+  #end(r: BodyRecord | null, anchor: Vec2 | null, toward: Vec2): End {
+    const w = this.world;
+    const p = w.particles;
+    if (!r) {
+      const at = anchor ?? toward;
+      return { at, drawn: { body: -1, particle: -1, x: at.x, y: at.y } };
+    }
+    const idx = w.bodyParticleIndices(r.handle!);
+    if (r.rigid) {
+      const i = idx[0];
+      const at = anchor ?? { x: p.x[i], y: p.y[i] };
+      // The anchor in the body's frame: about its centre of mass, turned back by its angle.
+      const c = Math.cos(p.angle[i]);
+      const s = Math.sin(p.angle[i]);
+      const dx = at.x - p.x[i];
+      const dy = at.y - p.y[i];
+      return { body: r.handle!, at, drawn: { body: r.key, particle: -1, x: c * dx + s * dy, y: -s * dx + c * dy } };
+    }
+    const near = anchor ?? toward;
+    const i = this.nearest(idx, near.x, near.y);
+    return { particle: w.particleHandle(i), at: { x: p.x[i], y: p.y[i] }, drawn: { body: -1, particle: i, x: 0, y: 0 } };
   }
 }

@@ -1,6 +1,6 @@
-// Grab policy: how a press at a point holds what is under it. The body type's descriptor says how (its grip): rigid
-// shapes softly at the point (the engine scales the pull by the body's mass), particles firmly (the engine caps the
-// drag speed, so nothing is flung). A press inside a soft ring takes the ring's nearest particle.
+// Grab policy: how a press at a point holds what is under it. Rigid bodies, and the particle frames their descriptor
+// grips softly, are held softly at the point (the engine scales the pull by the body's mass); other particles firmly
+// (the engine caps the drag speed, so nothing is flung). A press inside a soft ring takes the ring's nearest particle.
 import type { Handle, World } from '../../engine/index.js';
 import type { Bindings } from './bindings.js';
 
@@ -11,7 +11,10 @@ const FIRM_STIFFNESS = 1e6;
 export function grabAt(b: Bindings, x: number, y: number, stiffness?: number): Handle | null {
   try {
     const w = b.world;
-    const soft = w.bodiesAtPoint(x, y).some((h) => b.bodies.get(b.keyOf(h))?.descriptor?.grip === 'soft');
+    const soft = w.bodiesAtPoint(x, y).some((h) => {
+      const r = b.bodies.get(b.keyOf(h));
+      return r?.rigid || r?.descriptor?.grip === 'soft';
+    });
     if (soft) return w.grab(x, y, stiffness === undefined ? {} : { stiffness });
     const firm = { stiffness: stiffness ?? FIRM_STIFFNESS };
     const held = w.grab(x, y, firm);

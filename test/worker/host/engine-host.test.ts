@@ -7,6 +7,12 @@ import { EVERY_TYPE, decode, makeHost } from './harness.js';
 
 const clone = <T>(v: T): T => structuredClone(v);
 
+/** Each number within `tolerance` of the expected one. */
+function near(actual: ArrayLike<number>, expected: number[], tolerance = 1e-12): void {
+  expect(actual.length).to.equal(expected.length);
+  expected.forEach((v, k) => expect(actual[k], `[${k}]`).to.be.closeTo(v, tolerance));
+}
+
 /** The mean of the particles `indices` in a decoded frame. */
 function mean(positions: [number, number][], indices: Int32Array): [number, number] {
   let x = 0;
@@ -26,20 +32,27 @@ describe('EngineHost (no worker)', () => {
     expect(t.version).to.equal(1);
     expect(new Set(t.bodies.map((b) => b.type))).to.deep.equal(new Set(BODY_TYPES));
     expect(t.bodies.map((b) => b.key)).to.deep.equal([0, 1, 2, 3, 4, 5, 6, 7]);
-    expect(t.bodies.map((b) => b.indices.length)).to.deep.equal([4, 4, 1, 4, 13, 30, 13, RAGDOLL_JOINTS.length]);
-    expect(t.bodies.map((b) => b.kind)).to.deep.equal(['rigid', 'rigid', 'particle', 'rigid', 'rope', 'cloth', 'soft', 'ragdoll']);
+    // Boxes, balls and polygons are rigid bodies: one particle each, their centre of mass.
+    expect(t.bodies.map((b) => b.indices.length)).to.deep.equal([1, 1, 1, 1, 13, 30, 13, RAGDOLL_JOINTS.length]);
+    expect(t.bodies.map((b) => b.kind)).to.deep.equal(['rigid', 'rigid', 'rigid', 'rigid', 'rope', 'cloth', 'soft', 'ragdoll']);
+    expect(t.bodies.map((b) => b.rigid ?? false)).to.deep.equal([true, true, true, true, false, false, false, false]);
     // Every particle belongs to exactly one body.
     const all = t.bodies.flatMap((b) => Array.from(b.indices)).sort((a, b) => a - b);
-    expect(all).to.deep.equal(Array.from({ length: 80 }, (_, i) => i));
-    const [, , circle, , rope, cloth, soft, ragdoll] = t.bodies;
-    expect(circle.radius).to.equal(0.5);
+    expect(all).to.deep.equal(Array.from({ length: 71 }, (_, i) => i));
+    const [floor, box, circle, polygon, rope, cloth, soft, ragdoll] = t.bodies;
+    // Rigid shapes: an outline about the centre of mass (here the origin), or a disc's radius.
+    near(floor.outline!, [-8, -0.5, 8, -0.5, 8, 0.5, -8, 0.5]);
+    near(box.outline!, [-0.5, -0.5, 0.5, -0.5, 0.5, 0.5, -0.5, 0.5]);
+    near(polygon.outline!, [-1, -0.5, 1, -0.5, 1, 0.5, -1, 0.5]);
+    for (const b of [floor, box, circle, polygon]) near(b.center!, [0, 0]);
+    expect([circle.radius, circle.outline]).to.deep.equal([0.5, undefined]);
     expect(rope.radius).to.equal(0.05);
     expect([cloth.columns, cloth.rows, cloth.torn]).to.deep.equal([6, 5, undefined]);
     // The springs model's hub (its last particle) is not part of the ring.
     expect(soft.ring).to.equal(12);
     expect(ragdoll.radius).to.be.closeTo(0.075 * 1.5, 1e-12);
     const d = h.host.diagnostics();
-    expect([d.bodyCount, d.particleCount, d.linkCount, d.stepCount, d.running, d.inWorker, d.transport]).to.deep.equal([8, 80, 0, 0, false, false, 'direct']);
+    expect([d.bodyCount, d.particleCount, d.linkCount, d.stepCount, d.running, d.inWorker, d.transport]).to.deep.equal([8, 71, 0, 0, false, false, 'direct']);
     // A paused load publishes one frame of that topology.
     expect(h.publisher.frames.length).to.equal(1);
     expect(decode(h.frame).topology).to.equal(1);
@@ -47,13 +60,14 @@ describe('EngineHost (no worker)', () => {
 
   it('a frame holds the world\'s particles (bit for bit) and each body\'s pose as its type reads it', () => {
     const h = makeHost();
-    h.host.load({ world: {}, bodies: clone(EVERY_TYPE), links: [] });
-    // At load, poses are the described ones: a box its centre and angle, a ragdoll its pelvis.
+    // Besides every type, a box of the particle model (a frame of four particles).
+    const frameBox = { key: 8, desc: { type: 'box', model: 'particles', x: 6, y: 5, width: 1, height: 1, angle: 0.25 } as BodyDescription };
+    h.host.load({ world: {}, bodies: [...clone(EVERY_TYPE), frameBox], links: [] });
+    // At load, poses are the described ones: a rigid box its centre and angle, a ragdoll its pelvis.
     const start = decode(h.frame);
-    expect(start.poses[1][0]).to.be.closeTo(4, 1e-12);
-    expect(start.poses[1][1]).to.be.closeTo(2, 1e-12);
-    expect(start.poses[1][2]).to.be.closeTo(0.25, 1e-12);
+    expect(start.poses[1]).to.deep.equal([4, 2, 0.25]);
     expect(start.poses[2]).to.deep.equal([7, 1, 0]);
+    near(start.poses[8], [6, 5, 0.25]);
     expect(start.poses[7][0]).to.be.closeTo(2, 1e-12);
     expect(start.poses[7][1]).to.be.closeTo(5, 1e-12);
     // The host's world, copied into a World of our own by the engine's snapshot, stepped as often: the same state, the
@@ -71,22 +85,36 @@ describe('EngineHost (no worker)', () => {
       expect(y).to.equal(reference.particles.y[i]);
     });
     const t = h.topology.bodies;
-    // Box: its centre and its first edge's turn since the build, added to the described angle.
-    const b = t[1].indices;
+    // Rigid bodies (box, ball, polygon): their centre of mass and their angle, as the engine holds them.
+    for (const k of [1, 2, 3]) {
+      const i = t[k].indices[0];
+      expect(f.poses[k]).to.deep.equal([reference.particles.x[i], reference.particles.y[i], reference.particles.angle[i]]);
+    }
+    expect(f.poses[1][1]).to.be.greaterThan(2.1); // it fell
+    // The particle box: its centre and its first edge's turn since the build, added to the described angle.
+    const b = t[8].indices;
     const [bx, by] = mean(f.positions, b);
     const edge = (q: [number, number][]) => Math.atan2(q[b[1]][1] - q[b[0]][1], q[b[1]][0] - q[b[0]][0]);
-    expect(f.poses[1][0]).to.be.closeTo(bx, 1e-9);
-    expect(f.poses[1][1]).to.be.closeTo(by, 1e-9);
-    expect(f.poses[1][2]).to.be.closeTo(0.25 + edge(f.positions) - edge(start.positions), 1e-9);
-    expect(f.poses[1][1]).to.be.greaterThan(2.1); // it fell
-    // Circle: its particle. Rope, cloth, soft body: their particles' mean. Ragdoll: its pelvis.
-    expect(f.poses[2].slice(0, 2)).to.deep.equal(f.positions[t[2].indices[0]]);
-    for (const k of [4, 5, 6]) {
-      const [mx, my] = mean(f.positions, t[k].indices);
-      expect(f.poses[k][0]).to.be.closeTo(mx, 1e-9);
-      expect(f.poses[k][1]).to.be.closeTo(my, 1e-9);
-    }
+    near(f.poses[8], [bx, by, 0.25 + edge(f.positions) - edge(start.positions)], 1e-9);
+    // Rope, cloth, soft body: their particles' mean. Ragdoll: its pelvis.
+    for (const k of [4, 5, 6]) near(f.poses[k].slice(0, 2), mean(f.positions, t[k].indices), 1e-9);
     expect(f.poses[7].slice(0, 2)).to.deep.equal(f.positions[t[7].indices[RAGDOLL_JOINTS.indexOf('pelvis')]]);
+  });
+
+  it('a rigid polygon described off its centre: the frame poses its centre of mass, the topology says where that is', () => {
+    const h = makeHost();
+    // An L: its centre of mass is not its origin, nor the mean of its points.
+    const points = [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 3 }, { x: 0, y: 3 }];
+    h.host.load({ world: {}, params: { gravity: { x: 0, y: 0 } }, bodies: [{ key: 1, desc: { type: 'polygon', x: 5, y: 4, angle: 0.5, points } }], links: [] });
+    const body = h.topology.bodies[0];
+    // Area 4: the 2×1 foot (centre 1, 0.5) and the 1×2 leg (centre 0.5, 2), each half of it.
+    near(body.center!, [0.75, 1.25]);
+    // The outline is the one described (a concave one too, not its convex parts), about the centre of mass.
+    near(body.outline!, points.flatMap((q) => [q.x - 0.75, q.y - 1.25]));
+    const [x, y, angle] = decode(h.frame).poses[0];
+    const c = Math.cos(0.5);
+    const s = Math.sin(0.5);
+    near([x, y, angle], [5 + c * 0.75 - s * 1.25, 4 + s * 0.75 + c * 1.25, 0.5]);
   });
 
   it('step(n) takes n steps and publishes one frame; n is a count of at least 0', () => {
@@ -131,49 +159,64 @@ describe('EngineHost (no worker)', () => {
     expect(h.host.diagnostics().bodyCount).to.equal(9);
   });
 
-  it('links join the particles nearest their anchor, and follow their bodies through edits', () => {
+  it('links: a rigid body held at the anchor (or its centre), a body of particles at its nearest particle; they follow edits', () => {
     const h = makeHost();
     const links: KeyedLink[] = [
       { key: 100, desc: { type: 'joint', a: 1, b: 2 } },
       { key: 101, desc: { type: 'spring', a: 2, b: 0, stiffness: 20 } },
       { key: 102, desc: { type: 'pin', a: 1, x: 3.5, y: 1.5 } },
       { key: 103, desc: { type: 'pin', a: 4, x: 11, y: 1, particle: 3 } },
+      { key: 104, desc: { type: 'joint', a: 4, b: 5, x: 2, y: 1 } },
+      { key: 105, desc: { type: 'spring', a: 4, b: 6, stiffness: 5 } },
     ];
     expect(h.host.load({ world: {}, bodies: clone(EVERY_TYPE), links: clone(links) })).to.deep.equal([]);
-    const pairs = (): number[][] => {
-      const l = h.topology.links;
-      return Array.from({ length: l.length / 2 }, (_, k) => [l[2 * k], l[2 * k + 1]]);
-    };
     const t = h.topology.bodies;
     const f = decode(h.frame);
-    const [joint, spring, pin, ropePin] = pairs();
-    // The joint: the box's particle nearest the ball, and the ball.
-    expect(Array.from(t[1].indices)).to.include(joint[0]);
-    expect(joint[1]).to.equal(t[2].indices[0]);
+    const [joint, spring, pin, ropePin, ropeCloth, ropeSoft] = h.topology.links;
+    const centre = (body: number) => ({ body, particle: -1, x: 0, y: 0 });
+    const particle = (i: number) => ({ body: -1, particle: i, x: 0, y: 0 });
+    // Without an anchor, rigid bodies are joined at their centres: the joint (a stick, the default type) and the spring.
+    expect(joint).to.deep.equal({ a: centre(1), b: centre(2), pivot: false });
+    expect(spring).to.deep.equal({ a: centre(2), b: centre(0), pivot: false });
+    // A rigid body pinned at a point: that point of it (in its own frame, turned back by its angle 0.25) on the world's.
+    const [dx, dy] = [3.5 - 4, 1.5 - 2];
+    expect(pin.a.body).to.equal(1);
+    near([pin.a.x, pin.a.y], [Math.cos(0.25) * dx + Math.sin(0.25) * dy, -Math.sin(0.25) * dx + Math.cos(0.25) * dy]);
+    expect([pin.b, pin.pivot]).to.deep.equal([{ body: -1, particle: -1, x: 3.5, y: 1.5 }, true]);
+    // Bodies of particles: the particle named, or the one nearest the anchor, or nearest the other end.
+    expect(ropePin).to.deep.equal({ a: particle(t[4].indices[3]), b: { body: -1, particle: -1, x: 11, y: 1 }, pivot: true });
     const d2 = (i: number, x: number, y: number) => (f.positions[i][0] - x) ** 2 + (f.positions[i][1] - y) ** 2;
-    for (const i of t[1].indices) expect(d2(joint[0], 7, 1)).to.be.at.most(d2(i, 7, 1));
-    expect(Array.from(t[0].indices)).to.include(spring[1]);
-    // Pins hold one particle (the same index twice): nearest the anchor, or the one named.
-    expect(pin[0]).to.equal(pin[1]);
-    for (const i of t[1].indices) expect(d2(pin[0], 3.5, 1.5)).to.be.at.most(d2(i, 3.5, 1.5));
-    expect(ropePin).to.deep.equal([t[4].indices[3], t[4].indices[3]]);
-    expect(h.host.diagnostics().linkCount).to.equal(4);
+    for (const i of t[4].indices) expect(d2(ropeCloth.a.particle, 2, 1)).to.be.at.most(d2(i, 2, 1));
+    for (const i of t[5].indices) expect(d2(ropeCloth.b.particle, 2, 1)).to.be.at.most(d2(i, 2, 1));
+    expect(Array.from(t[5].indices)).to.include(ropeCloth.b.particle);
+    // Between particles a spring is a spring force; everything else an engine joint, or a pin.
+    const world = new World();
+    world.restore(h.host.snapshot().world as WorldSnapshot);
+    const kinds = h.host.snapshot().links.map((l) => l.handles.map((c) => world.constraintKindOf(c)));
+    expect(kinds).to.deep.equal([['joint'], ['joint'], ['joint'], ['pin'], ['joint'], ['spring']]);
+    expect(ropeSoft.a.particle).to.be.at.least(0);
+    expect(h.host.diagnostics().linkCount).to.equal(6);
     // Without the ball, its two links are out of force; with it back, in force again.
     h.host.removeBody(2);
-    expect(pairs().length).to.equal(2);
-    expect(h.host.diagnostics().linkCount).to.equal(2);
+    expect(h.topology.links.length).to.equal(4);
+    expect(h.host.diagnostics().linkCount).to.equal(4);
     h.host.addBody(clone(EVERY_TYPE[2]));
-    expect(pairs().length).to.equal(4);
+    expect(h.topology.links.length).to.equal(6);
+    // Ends on rigid bodies name the body by its place in the topology, which the re-added ball changed.
+    expect(h.topology.links.find((l) => l.a.body === 1 && l.b.body >= 0)!.b.body).to.equal(h.topology.bodies.findIndex((b) => b.key === 2));
     h.host.removeLink(100);
-    expect(pairs().length).to.equal(3);
-    expect(h.host.diagnostics().linkCount).to.equal(3);
+    expect(h.topology.links.length).to.equal(5);
+    expect(h.host.diagnostics().linkCount).to.equal(5);
     // A link to a body that does not exist waits for it, quietly; a bad one names its field.
-    expect(h.host.addLink({ key: 104, desc: { type: 'joint', a: 1, b: 77 } })).to.equal(null);
-    expect(pairs().length).to.equal(3);
+    expect(h.host.addLink({ key: 106, desc: { type: 'joint', a: 1, b: 77 } })).to.equal(null);
+    expect(h.topology.links.length).to.equal(5);
     const bad = h.host.updateLink({ key: 101, desc: { type: 'spring', a: 2, b: 0, stiffness: -1 } });
     expect(bad).to.include({ key: 101, field: 'stiffness' });
     expect(bad!.message).to.match(/stiffness/);
-    expect(pairs().length).to.equal(2);
+    expect(h.topology.links.length).to.equal(4);
+    const badJoint = h.host.addLink({ key: 107, desc: { type: 'joint', joint: 'revolute', a: 1, lowerAngle: 1, upperAngle: 0 } });
+    expect(badJoint).to.include({ key: 107 });
+    expect(badJoint!.message).to.match(/lowerAngle/);
   });
 
   it('refuses bad descriptions with the key, the field and a message; the rest of the scene loads', () => {
@@ -223,12 +266,23 @@ describe('EngineHost (no worker)', () => {
       links: [],
     });
     const pose = (k: number) => decode(h.frame).poses[k];
-    // The box, soft at the point: dragged 2 to the right.
-    const g = h.host.grab(4, 2);
+    // The rigid box, held softly at the pressed point (0.3, 0.2 from its centre) and dragged 2 to the right: that
+    // point of it follows the pointer while the box swings about it.
+    const g = h.host.grab(4.3, 2.2);
     expect(g).to.be.a('number');
-    h.host.moveGrab(g!, 6, 2);
-    h.host.step(120);
-    expect(pose(0)[0]).to.be.closeTo(6, 0.05);
+    for (let k = 1; k <= 40; k++) {
+      h.host.moveGrab(g!, 4.3 + 0.05 * k, 2.2);
+      h.host.step(2);
+    }
+    let farthest = 0;
+    for (let k = 0; k < 60; k++) {
+      h.host.step(1);
+      const [x, y, a] = pose(0);
+      const held = [x + Math.cos(a) * 0.3 - Math.sin(a) * 0.2, y + Math.sin(a) * 0.3 + Math.cos(a) * 0.2];
+      farthest = Math.max(farthest, Math.hypot(held[0] - 6.3, held[1] - 2.2));
+    }
+    expect(farthest).to.be.below(0.05);
+    expect(Math.abs(pose(0)[2])).to.be.greaterThan(0.1);
     h.host.release(g!);
     // The ring's centre is more than the pick radius away from every ring particle: still grabbed, by the ring.
     const ring = h.host.grab(10, 4);
@@ -269,7 +323,7 @@ describe('EngineHost (no worker)', () => {
     expect(h.host.diagnostics().linkCount).to.equal(1);
     expect(h.host.snapshot().links[0].handles).to.deep.equal([joint]);
     h.host.step(1);
-    expect(h.topology.links.length).to.equal(2);
+    expect(h.topology.links.length).to.equal(1);
   });
 
   it('applyImpulse and setVelocity move a body by its key; bodiesAt answers with keys', () => {
@@ -322,13 +376,42 @@ describe('EngineHost (no worker)', () => {
       if (invMass[i] === 0) fixed++;
       expect(x).to.be.closeTo(f.positions[i][0] + (invMass[i] === 0 ? 0 : 0.1), 1e-12);
     });
-    expect(fixed).to.equal(4 + 2 + 1);
+    // The rigid floor's centre, the cloth's 2 corners, the rope's first.
+    expect(fixed).to.equal(1 + 2 + 1);
     expect([g.stepCount, g.time]).to.deep.equal([25, 25 / 60]);
     // Not over another topology, nor when older than the snapshot: the snapshot alone.
     for (const bad of [{ ...patch, topology: snap.topology! + 1 }, { ...patch, stepCount: 19 }, { ...patch, positions: moved.subarray(2) }]) {
       h.host.restore(snap, bad);
       expect(decode(h.frame).positions).to.deep.equal(f.positions);
     }
+  });
+
+  it('the frame overlay also turns rigid bodies to the frame\'s angles and spins them at its angular velocities', () => {
+    const h = makeHost();
+    h.host.load({ world: {}, bodies: clone(EVERY_TYPE), links: [] });
+    h.host.step(10);
+    const snap = h.host.snapshot();
+    const f = decode(h.frame);
+    // As drawn 5 steps later: the box (body 1) turned to 1.2 rad and spinning at 3 rad/s, the ball at -2 rad/s.
+    const poses = new Float64Array(f.poses.flat());
+    poses[3 * 1 + 2] = 1.2;
+    const spins = new Float64Array(8);
+    spins[1] = 3;
+    spins[2] = -2;
+    const positions = new Float64Array(f.positions.flat());
+    const patch: FramePatch = { topology: snap.topology!, stepCount: 15, time: 15 / 60, positions, velocities: null, poses, spins };
+    h.host.restore(snap, patch);
+    expect(decode(h.frame).poses[1][2]).to.equal(1.2);
+    const world = new World();
+    world.restore(h.host.snapshot().world as WorldSnapshot);
+    const handle = (key: number) => h.host.snapshot().bodies.find((b) => b.key === key)!.handle;
+    expect(world.bodyPose(handle(1)).angle).to.equal(1.2);
+    expect(world.bodyAngularVelocity(handle(1))).to.equal(3);
+    expect(world.bodyAngularVelocity(handle(2))).to.equal(-2);
+    // The static floor keeps its angle; the box keeps turning from where the frame had it.
+    expect(world.bodyPose(handle(0)).angle).to.equal(0);
+    h.host.step(1);
+    expect(decode(h.frame).poses[1][2]).to.be.closeTo(1.2 + 3 / 60, 0.01);
   });
 
   it('collision events carry body keys and go out once per frame, only while enabled', () => {
@@ -354,14 +437,20 @@ describe('EngineHost (no worker)', () => {
     expect(h.host.diagnostics()).to.include({ events: false, eventsSent: sent });
   });
 
-  it('debug frames carry each body\'s bounding box and the contacts', () => {
+  it('debug frames carry each body\'s bounding box and the contacts, of rigid bodies and of bodies of particles', () => {
     const h = makeHost();
-    const bodies = [clone(EVERY_TYPE[0]), clone(EVERY_TYPE[1]), { key: 2, desc: { type: 'circle', x: 7, y: 7.4, radius: 0.5 } as BodyDescription }];
-    h.host.load({ world: {}, params: { debug: true }, bodies, links: [] });
+    const bodies = [
+      clone(EVERY_TYPE[0]),
+      clone(EVERY_TYPE[1]),
+      { key: 2, desc: { type: 'circle', x: 7, y: 7.4, radius: 0.5 } as BodyDescription },
+      { key: 3, desc: { type: 'box', model: 'particles', x: 10, y: 7.4, width: 1, height: 1 } as BodyDescription },
+    ];
+    // Awake, so every resting body keeps its contacts.
+    h.host.load({ world: { sleeping: false }, params: { debug: true }, bodies, links: [] });
     h.host.step(90);
     const f = decode(h.frame);
     expect(h.frame[8]).to.be.greaterThan(0); // F.cellSize
-    expect(f.aabbs.length).to.equal(3);
+    expect(f.aabbs.length).to.equal(4);
     h.topology.bodies.forEach((b, k) => {
       const [x0, y0, x1, y1] = f.aabbs[k];
       for (const i of b.indices) {
@@ -369,10 +458,132 @@ describe('EngineHost (no worker)', () => {
         expect(f.positions[i][1]).to.be.within(y0, y1);
       }
     });
-    expect(f.contacts.length).to.be.greaterThan(0);
-    for (const [, , nx, ny] of f.contacts) expect(Math.hypot(nx, ny)).to.be.closeTo(1, 1e-9);
+    // A rigid body's box is its turned outline's (or its disc's): the ball rests on the floor (top at y = 8).
+    const ball = f.poses[2];
+    near(f.aabbs[2], [ball[0] - 0.5, ball[1] - 0.5, ball[0] + 0.5, ball[1] + 0.5]);
+    expect(f.aabbs[2][3]).to.be.closeTo(8, 0.03);
+    const [bx, by, ba] = f.poses[1];
+    const corners = [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]].map(([u, v]) => [bx + Math.cos(ba) * u - Math.sin(ba) * v, by + Math.sin(ba) * u + Math.cos(ba) * v]);
+    near(f.aabbs[1], [Math.min(...corners.map((c) => c[0])), Math.min(...corners.map((c) => c[1])), Math.max(...corners.map((c) => c[0])), Math.max(...corners.map((c) => c[1]))]);
+    // Contacts of all three resting bodies, on the floor's top, normals vertical.
+    expect(f.contacts.length).to.be.at.least(3);
+    for (const [x, y, nx, ny] of f.contacts) {
+      expect(Math.hypot(nx, ny)).to.be.closeTo(1, 1e-9);
+      expect(Math.abs(ny)).to.be.closeTo(1, 1e-3);
+      expect(y).to.be.closeTo(8, 0.05);
+      expect(x).to.be.within(1, 12);
+    }
+    for (const x of [bx, ball[0], f.poses[3][0]]) expect(f.contacts.some((c) => Math.abs(c[0] - x) <= 0.75)).to.equal(true);
     h.host.setParams({ debug: false });
     expect(decode(h.frame).aabbs).to.deep.equal([]);
+  });
+
+  it('a rigid body\'s velocity, angular velocity and being kinematic change live, without a rebuild', () => {
+    const h = makeHost();
+    const box: BodyDescription = { type: 'box', x: 4, y: 2, width: 1, height: 1 };
+    h.host.load({ world: {}, params: { gravity: { x: 0, y: 0 } }, bodies: [{ key: 1, desc: box }], links: [] });
+    const topologies = h.topologies.length;
+    const pose = () => decode(h.frame).poses[0];
+    expect(h.host.updateBody({ key: 1, desc: { ...box, vx: 3, vy: -1, angularVelocity: 2 } })).to.equal(null);
+    h.host.step(30);
+    near(pose(), [4 + 1.5, 2 - 0.5, 1], 1e-9);
+    // Kinematic: it keeps moving by its velocities; another box does not stop it.
+    expect(h.host.updateBody({ key: 1, desc: { ...box, vx: 3, vy: -1, angularVelocity: 2, kinematic: true } })).to.equal(null);
+    h.host.addBody({ key: 2, desc: { type: 'box', x: 7.5, y: 1, width: 1, height: 1, mass: 100 } });
+    h.host.step(60);
+    near(pose(), [5.5 + 3, 1.5 - 1, 3], 1e-6);
+    // Back to dynamic, at rest: it stays put.
+    expect(h.host.updateBody({ key: 1, desc: { ...box, vx: 0, vy: 0, angularVelocity: 0 } })).to.equal(null);
+    const before = pose();
+    h.host.step(30);
+    near(pose(), before, 1e-9);
+    // One new topology (the added box), no rebuild of the first: it is where it went, not where it was described.
+    expect(h.topologies.length).to.equal(topologies + 1);
+    // A static body is rebuilt instead (static and kinematic do not mix: the engine names the field).
+    const error = h.host.updateBody({ key: 1, desc: { ...box, static: true, kinematic: true } });
+    expect(error).to.include({ key: 1 });
+    expect(error!.message).to.match(/static or kinematic/);
+  });
+
+  it('a body of particles takes its described velocity and angular velocity too', () => {
+    const h = makeHost();
+    h.host.load({
+      world: {},
+      params: { gravity: { x: 0, y: 0 } },
+      bodies: [{ key: 1, desc: { type: 'box', model: 'particles', x: 4, y: 2, width: 1, height: 1, vx: 2, angularVelocity: 1 } }],
+      links: [],
+    });
+    h.host.step(30);
+    const [x, y, angle] = decode(h.frame).poses[0];
+    expect(x).to.be.closeTo(5, 1e-3);
+    expect(y).to.be.closeTo(2, 1e-3);
+    expect(angle).to.be.closeTo(0.5, 0.02);
+  });
+
+  it('joints from descriptions hold: revolute, weld, prismatic, distance and spring, to bodies or the world', () => {
+    const h = makeHost();
+    const box = (x: number, y: number): BodyDescription => ({ type: 'box', x, y, width: 0.6, height: 0.4 });
+    h.host.load({
+      world: {},
+      params: { gravity: { x: 0, y: 9.81 } },
+      bodies: [
+        { key: 1, desc: box(2, 3) },
+        { key: 2, desc: box(7.5, 1) },
+        { key: 3, desc: box(8.5, 1) },
+        { key: 4, desc: box(12, 2) },
+        { key: 5, desc: box(15, 4) },
+        { key: 6, desc: { type: 'rope', from: { x: 18, y: 1 }, to: { x: 18, y: 3 }, segments: 8 } },
+        { key: 7, desc: box(18, 3.5) },
+      ],
+      links: [
+        // A pendulum: the box on a hinge to the world 2 above its centre.
+        { key: 10, desc: { type: 'joint', joint: 'revolute', a: 1, x: 2, y: 1 } },
+        // Two boxes welded together, hanging from the world by the first one's hinge.
+        { key: 11, desc: { type: 'joint', joint: 'revolute', a: 2, x: 7, y: 1 } },
+        { key: 12, desc: { type: 'joint', joint: 'weld', a: 2, b: 3, x: 8, y: 1 } },
+        // A box on a vertical rail, stopped 1 below where it starts.
+        { key: 13, desc: { type: 'joint', joint: 'prismatic', a: 4, axis: { x: 0, y: 1 }, lower: -1, upper: 1 } },
+        // A box on a spring from the world point 2 above it: it settles where k·stretch = m·g.
+        { key: 14, desc: { type: 'joint', joint: 'spring', a: 5, x1: 15, y1: 4, x2: 15, y2: 2, stiffness: 20, damping: 2 } },
+        // A box tied to the end of a rope: the rope's particle nearest the anchor, at a fixed distance.
+        { key: 15, desc: { type: 'joint', joint: 'distance', a: 7, b: 6, x1: 18, y1: 3.3, x2: 18, y2: 3 } },
+      ],
+    });
+    const t = h.topology;
+    const handles = h.host.snapshot().bodies;
+    const pose = (key: number) => {
+      const world = new World();
+      world.restore(h.host.snapshot().world as WorldSnapshot);
+      return world.bodyPose(handles.find((b) => b.key === key)!.handle);
+    };
+    // Local points of bodies: where (u, v) of body `key` is now.
+    const at = (key: number, u: number, v: number) => {
+      const p = pose(key);
+      return [p.x + Math.cos(p.angle) * u - Math.sin(p.angle) * v, p.y + Math.sin(p.angle) * u + Math.cos(p.angle) * v];
+    };
+    const weldStart = [pose(3).x - pose(2).x, pose(3).y - pose(2).y];
+    // Give the pendulum a push, so it swings.
+    h.host.setVelocity(1, 4, 0);
+    for (let k = 0; k < 120; k++) {
+      h.host.step(1);
+      const pivot = at(1, 0, -2);
+      expect(Math.hypot(pivot[0] - 2, pivot[1] - 1), 'revolute').to.be.below(1e-3);
+    }
+    expect(Math.abs(pose(1).angle)).to.be.greaterThan(0.3);
+    // The welded pair turned together, rigidly.
+    expect(pose(3).angle).to.be.closeTo(pose(2).angle, 1e-3);
+    expect(Math.abs(pose(2).angle)).to.be.greaterThan(0.3);
+    const [c, s] = [Math.cos(pose(2).angle), Math.sin(pose(2).angle)];
+    near([pose(3).x - pose(2).x, pose(3).y - pose(2).y], [c * weldStart[0] - s * weldStart[1], s * weldStart[0] + c * weldStart[1]], 1e-3);
+    // The rail: straight down, not turned, stopped at its limit.
+    near([pose(4).x, pose(4).y, pose(4).angle], [12, 3, 0], 1e-3);
+    // The spring: k·stretch = m·g with m = 0.24 (density 1), rest length 2.
+    h.host.step(600);
+    expect(pose(5).y - 2).to.be.closeTo(2 + (0.24 * 9.81) / 20, 0.01);
+    // The rope's end particle stays 0.3 from the box's top point.
+    const ropeEnd = decode(h.frame).positions[t.bodies[5].indices[8]];
+    const top = at(7, 0, -0.2);
+    expect(Math.hypot(ropeEnd[0] - top[0], ropeEnd[1] - top[1])).to.be.closeTo(0.3, 1e-3);
   });
 
   it('a torn cloth\'s topology names its broken links until reset()', () => {

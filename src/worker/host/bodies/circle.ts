@@ -1,9 +1,9 @@
-// A ball: one particle colliding as a circle, drawn with its radius.
+// A ball: a rigid disc (the engine's default), drawn from its pose with its radius; or (model 'particles') one
+// particle colliding as a circle.
 import type { BodyDescriptor } from './descriptor.js';
 import { DISC } from './pose.js';
 
 export const circle: BodyDescriptor<'circle'> = {
-  model: 'particles',
   grip: 'firm',
   pose: DISC,
   describe(t, d) {

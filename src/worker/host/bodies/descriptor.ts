@@ -1,7 +1,7 @@
 // What the host knows about one body type: how a grab holds it, where its pose is read, and which drawing facts it
 // puts in the topology. One module per type (box.ts, circle.ts, …), listed in index.ts. How a type is drawn is the
 // renderer's half, in src/render/bodies/: the worker never loads drawing code, the page never loads this.
-import type { BodyDescription, BodyModel, BodyType, Handle, World } from '../../../engine/index.js';
+import type { BodyDescription, BodyType, Handle, Vec2, World } from '../../../engine/index.js';
 import type { TopologyBody } from '../../protocol.js';
 
 /** The description of a body of type T. */
@@ -34,16 +34,17 @@ export interface BuiltBody {
 }
 
 export interface BodyDescriptor<T extends BodyType = BodyType> {
-  /** The engine model the host builds it with unless its description names one (boxes, polygons and circles: particle
-   * frames, until frames carry rigid poses). */
-  readonly model?: BodyModel;
   /**
-   * How a grab holds it. 'soft': at the point, pulled with the body's mass (rigid shapes). 'firm': its particle
-   * under the point, held tight — a soft pull on one light particle would lose to the rigid links of the rest of
-   * its body (cloth, ropes, ragdolls, soft rings, balls).
+   * How a grab holds it when built of particles (a rigid body is always held softly, at the point). 'soft': at the
+   * point, pulled with the body's mass (particle frames). 'firm': its particle under the point, held tight — a soft
+   * pull on one light particle would lose to the rigid links of the rest of its body (cloth, ropes, ragdolls, soft
+   * rings, particle balls).
    */
   readonly grip: 'soft' | 'firm';
+  /** Where its pose is read when built of particles (a rigid body's pose is its centre of mass and angle). */
   readonly pose: PoseModel;
+  /** The outline of its rigid model, in its own coordinates (boxes, polygons; a disc has its radius instead). */
+  rigidOutline?(desc: DescriptionOf<T>): Vec2[];
   /** Drawing facts beyond the particles (a radius, the cloth grid and its torn links, the soft ring's length). */
   describe?(topology: TopologyBody, desc: DescriptionOf<T>, body: BuiltBody): void;
   /** The closed loop of particles a press inside it grabs by its nearest particle (a soft ring). */
