@@ -22,7 +22,9 @@ interface ClothSetup {
 }
 
 /**
- * A cloth hanging from pins, ready to embed: one tag, no children. Drag it to pull; wind pushes it sideways in gusts.
+ * A cloth hanging from pins, ready to embed: one tag, no children. Drag it to pull. A gentle gusty breeze sways it by
+ * default (`wind`, `gusts`; `wind="0"` for still air); the gusts follow simulated time, so `step(n)` on a paused cloth
+ * blows it as running would.
  * Everything `<physics-scene>` has (attributes, methods, events, embedding behaviour) works here too; the cloth is
  * generated inside the shadow root, so the page's markup stays one tag.
  *
@@ -48,8 +50,11 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
   @property() pins?: string;
   /** 0 < stiffness <= 1: 1 (default) is inextensible, smaller values stretch. */
   @property({ type: Number, converter: numberAttribute }) stiffness = 1;
-  /** Wind: horizontal push in world units / s² (-1000..1000; negative blows left). Default 0 (none). */
-  @property({ type: Number, converter: numberAttribute }) wind = 0;
+  /**
+   * Wind: horizontal push in world units / s² (-1000..1000; negative blows left). Default 1.5, a gentle breeze that
+   * with the default gusts keeps the cloth swaying; 0 is still air.
+   */
+  @property({ type: Number, converter: numberAttribute }) wind = 1.5;
   /** How gusty the wind is, in [0, 1]: 0 is steady, 1 gusts from calm to twice the strength. Default 0.6. */
   @property({ type: Number, converter: numberAttribute }) gusts = 0.6;
   /**
@@ -62,9 +67,6 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
   /** Cloth line colour (CSS colour or "none"). Default "#2f6fb5". */
   @property() stroke?: string;
 
-  private windTimer: ReturnType<typeof setInterval> | null = null;
-  private windStart = 0;
-
   constructor() {
     super();
   }
@@ -75,7 +77,8 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
 
   protected override updated(changed: Map<string, unknown>): void {
     super.updated(changed);
-    if (changed.has('wind') || changed.has('gusts')) this.runningChanged(this.running);
+    // Wind 0 turns the ticks off: the push must go now, not at the next tick.
+    if (changed.has('wind') || changed.has('gusts')) this.tick(this.seconds);
   }
 
   protected override renderBodies(): TemplateResult | typeof nothing {
@@ -96,33 +99,15 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     </div>`;
   }
 
-  protected override runningChanged(running: boolean): void {
-    const wind = this.setup?.wind ?? 0;
-    const on = running && wind !== 0;
-    if (!on) {
-      if (this.windTimer !== null) clearInterval(this.windTimer);
-      this.windTimer = null;
-      this.setGravityOffset(0, 0);
-      return;
-    }
-    if (this.windTimer === null) {
-      this.windStart = performance.now();
-      this.windTimer = setInterval(() => this.blow(), 120);
-    }
-    this.blow();
+  protected override ticks(setup: ClothSetup): boolean {
+    return setup.wind !== 0;
   }
 
-  override disconnectedCallback(): void {
-    super.disconnectedCallback();
-    if (this.windTimer !== null) clearInterval(this.windTimer);
-    this.windTimer = null;
-  }
-
-  /** The wind now: the steady strength scaled by a smooth gust factor in [1 − gusts, 1 + gusts]. */
-  private blow(): void {
+  /** The wind at simulated time `seconds`: the steady strength scaled by a smooth gust factor in [1 − gusts, 1 + gusts]. */
+  protected override tick(seconds: number): void {
     const s = this.setup;
     if (!s) return;
-    const t = (performance.now() - this.windStart) / 1000;
+    const t = seconds;
     const n = (Math.sin(t * 1.7) + 0.6 * Math.sin(t * 4.3 + 1.1) + 0.4 * Math.sin(t * 9.1 + 2.3)) / 2;
     this.setGravityOffset(s.wind * (1 + s.gusts * n), 0);
   }
@@ -148,7 +133,7 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     const stiffness = check.number('stiffness', this.stiffness, { positive: true, max: 1, fallback: 1 })!;
     // XPBD compliance (inverse stiffness): 0 at stiffness 1, about 1e-5 at 0.1.
     const compliance = ((1 - stiffness) / stiffness) * 1e-6;
-    const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 0 })!;
+    const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 1.5 })!;
     const gusts = check.number('gusts', this.gusts, { min: 0, max: 1, fallback: 0.6 })!;
     const tear = check.number('tear', this.tear, { positive: true });
     const fill = check.color('fill', this.fill, null) === null && this.fill !== 'none' ? undefined : this.fill;

@@ -18,13 +18,24 @@ interface RagdollSetup {
   problems: Problem[];
 }
 
-/** Seconds a ragdoll must lie still before it is put back at the top (with `respawn`). */
+/** Simulated seconds a ragdoll must lie still before it is put back at the top (with `respawn`). */
 const REST_SECONDS = 1.5;
+
+/** `respawn` values that turn it off; no attribute, an empty one, "on" or "true" leave it on. */
+const RESPAWN_OFF = ['off', 'false'];
+const RESPAWN_ON = ['', 'on', 'true'];
+
+/** Lit converter for `respawn`, on unless the attribute says "off" (or "false"); removing the attribute turns it on again. */
+const respawnAttribute = {
+  fromAttribute: (value: string | null): boolean => value === null || !RESPAWN_OFF.includes(value.trim().toLowerCase()),
+};
 
 /**
  * Ragdolls tumbling down stairs or through pegs, ready to embed: one tag, no children. Limbs bend within angle limits;
- * grab a ragdoll to drag it and let go to throw it. With `respawn`, a ragdoll that has come to rest is put back at
- * the top. Everything `<physics-scene>` has (attributes, methods, events, embedding behaviour) works here too.
+ * grab a ragdoll to drag it and let go to throw it. A ragdoll that has come to rest is put back at the top (unless
+ * `respawn="off"`), so the scene never goes still; rest is judged in simulated time, so `step(n)` on a paused scene
+ * respawns as running would. Everything `<physics-scene>` has (attributes, methods, events, embedding behaviour) works
+ * here too.
  *
  * @summary A ragdoll preset.
  *
@@ -44,8 +55,11 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   @property({ type: Number, converter: numberAttribute }) size = 1.6;
   /** What they fall over: "stairs" (default), "pegs" or "none". */
   @property() obstacles = 'stairs';
-  /** Put a ragdoll back at the top once it has lain still for 1.5 s. */
-  @property({ type: Boolean }) respawn = false;
+  /**
+   * Put a ragdoll back at the top once it has lain still for 1.5 s of simulated time. On by default (an empty
+   * attribute, "on" or "true" too); `respawn="off"` (or "false") lets them lie.
+   */
+  @property({ converter: respawnAttribute }) respawn = true;
   /** Ragdoll line colour (CSS colour). Default "#333a44". */
   @property() stroke?: string;
   /** Obstacle fill colour (CSS colour). Default "#8a8f98". */
@@ -54,12 +68,12 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   /** Ragdolls put back at the top so far. */
   respawned = 0;
 
-  private watchTimer: ReturnType<typeof setInterval> | null = null;
+  /** Per ragdoll: where it was last seen moving, and since when (simulated seconds) it has stayed there. */
   private readonly still = new Map<Element, { x: number; y: number; since: number }>();
 
   constructor() {
     super();
-    // Off the top step with a push to the right, so they tumble down the stairs.
+    // Off the top steps with a push to the right and up, so they tumble down the stairs.
     this.addEventListener('physics-ready', () => {
       for (const doll of this.dolls()) this.push(doll);
     });
@@ -70,16 +84,11 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   }
 
   private push(doll: PhysicsRagdollElement): void {
-    if (this.setup?.obstacles === 'stairs') doll.setVelocity(2.5, 0);
+    if (this.setup?.obstacles === 'stairs') doll.setVelocity(4.5, -2);
   }
 
   protected override get defaultLabel(): string {
     return 'Ragdoll simulation: drag a ragdoll and let go to throw it';
-  }
-
-  protected override updated(changed: Map<string, unknown>): void {
-    super.updated(changed);
-    if (changed.has('respawn')) this.runningChanged(this.running);
   }
 
   /**
@@ -141,44 +150,37 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
     return html`<div class="bodies">${obstacles}${dolls}</div>`;
   }
 
-  protected override runningChanged(running: boolean): void {
-    const on = running && (this.setup?.respawn ?? false);
-    if (on && this.watchTimer === null) this.watchTimer = setInterval(() => this.checkRest(), 250);
-    else if (!on && this.watchTimer !== null) {
-      clearInterval(this.watchTimer);
-      this.watchTimer = null;
-      this.still.clear();
-    }
+  protected override ticks(setup: RagdollSetup): boolean {
+    return setup.respawn;
   }
 
-  override disconnectedCallback(): void {
-    super.disconnectedCallback();
-    if (this.watchTimer !== null) clearInterval(this.watchTimer);
-    this.watchTimer = null;
-  }
-
-  /** Ragdolls that lay still for REST_SECONDS go back to their spawn point. */
-  private checkRest(): void {
+  /**
+   * Ragdolls that lay still for REST_SECONDS go back to their spawn point, and are pushed again once the engine has
+   * their new description.
+   */
+  protected override async tick(seconds: number): Promise<void> {
     const s = this.setup;
-    if (!s) return;
-    const now = performance.now();
+    if (!s?.respawn) return;
+    const moved: Promise<void>[] = [];
     this.dolls().forEach((doll, k) => {
-      const x = doll.x;
-      const y = doll.y;
+      const pose = this.poseOf(doll);
+      if (!pose) return; // not simulated yet, or being rebuilt
+      const [x, y] = pose;
       const prev = this.still.get(doll);
-      if (!prev || Math.hypot(x - prev.x, y - prev.y) > s.size * 0.03) {
-        this.still.set(doll, { x, y, since: now });
+      if (!prev || seconds < prev.since || Math.hypot(x - prev.x, y - prev.y) > s.size * 0.03) {
+        this.still.set(doll, { x, y, since: seconds });
         return;
       }
-      if (now - prev.since < REST_SECONDS * 1000) return;
+      if (seconds - prev.since < REST_SECONDS) return;
       const p = this.spawnPoint(k, s);
       this.respawned++;
       // A tiny offset per respawn makes the description differ from the last one sent, so the body is rebuilt.
       doll.x = p.x + (this.respawned % 2 ? 1e-3 : -1e-3);
       doll.y = p.y;
       this.still.delete(doll);
-      void doll.updateComplete.then(() => this.push(doll));
+      moved.push(doll.updateComplete.then(() => this.push(doll)));
     });
+    await Promise.all(moved);
   }
 
   protected override readSetup(): RagdollSetup {
@@ -188,6 +190,10 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
     const obstacles = check.oneOf('obstacles', this.obstacles, ['stairs', 'pegs', 'none'] as const, 'stairs');
     const stroke = check.color('stroke', this.stroke, null) === null ? undefined : this.stroke;
     const obstacleFill = check.color('obstacle-fill', this.obstacleFill, null) === null ? undefined : this.obstacleFill;
+    const respawnText = this.getAttribute('respawn');
+    if (respawnText !== null && ![...RESPAWN_ON, ...RESPAWN_OFF].includes(respawnText.trim().toLowerCase())) {
+      check.fail('respawn', respawnText, 'must be "on" or "off"');
+    }
     return { count, size, obstacles, respawn: this.respawn, stroke, obstacleFill, problems: check.problems };
   }
 }
