@@ -13,6 +13,51 @@ import type { EngineCommands } from './session.js';
 
 type Child = PhysicsBodyElement | PhysicsLinkElement;
 
+/** The tags a scene simulates: its body elements, then its link elements. */
+export const BODY_TAGS = ['physics-box', 'physics-circle', 'physics-polygon', 'physics-rope', 'physics-cloth', 'physics-softbody', 'physics-ragdoll'];
+export const LINK_TAGS = ['physics-joint', 'physics-spring', 'physics-pin'];
+const KNOWN_TAGS = [...BODY_TAGS, ...LINK_TAGS];
+
+/**
+ * Children that are not bodies or links and are not mistakes either: they hold no markup for the scene (templates,
+ * scripts, styles), or they are what the page shows instead of the scene (`<noscript>`, an image, anything given a
+ * `slot`).
+ */
+const NOT_A_MISTAKE = new Set(['template', 'script', 'style', 'noscript', 'img', 'picture']);
+
+/** Levenshtein distance: single-character insertions, deletions and substitutions. */
+function editDistance(a: string, b: string): number {
+  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const next = [i];
+    for (let j = 1; j <= b.length; j++) next.push(Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1)));
+    row = next;
+  }
+  return row[b.length];
+}
+
+/**
+ * What to tell the author of a child that is not a body or link: the known tag closest to it by edit distance (a
+ * `physics-*` tag always gets one; another tag only when it is close to a known one without the prefix, as `<circle>`
+ * is to `<physics-circle>`), else that it is ignored. Exported for tests.
+ */
+export function unknownChildMessage(tag: string): string {
+  const prefixed = tag.startsWith('physics-');
+  const name = prefixed ? tag : `physics-${tag}`;
+  let best = '';
+  let bestDistance = Infinity;
+  for (const known of KNOWN_TAGS) {
+    const d = editDistance(name, known);
+    if (d < bestDistance) [best, bestDistance] = [known, d];
+  }
+  const close = prefixed || bestDistance <= Math.max(1, Math.floor(tag.length / 3));
+  const list = (tags: string[]) => tags.map((t) => `<${t}>`).join(', ');
+  const known = `bodies are ${list(BODY_TAGS)}; links are ${list(LINK_TAGS)}`;
+  if (!close || customElements.get(tag) !== undefined) return `not a body or link element, so the scene ignores it (${known})`;
+  // A far guess is still the nearest tag, but the whole list says more.
+  return `unknown element, ignored: did you mean <${best}>?${bestDistance > 2 ? ` (${known})` : ''}`;
+}
+
 interface Entry {
   element: Child;
   kind: 'body' | 'link';
@@ -36,6 +81,8 @@ export class MarkupSync implements SceneHost {
   private nextKey = 1;
   private keys = new WeakMap<Element, number>();
   private readonly entries = new Map<number, Entry>();
+  /** Children that are neither bodies nor links, reported (each is its own source of problems). */
+  private unknown = new Set<Element>();
   private readonly observer = new MutationObserver(() => this.sync());
 
   constructor(private readonly options: MarkupOptions) {}
@@ -49,6 +96,8 @@ export class MarkupSync implements SceneHost {
   reset(): void {
     this.observer.disconnect();
     for (const key of [...this.entries.keys()]) this.forget(key);
+    for (const el of this.unknown) this.options.problems.forget(el);
+    this.unknown.clear();
     this.keys = new WeakMap();
   }
 
@@ -138,11 +187,20 @@ export class MarkupSync implements SceneHost {
 
   // ---- internals ---------------------------------------------------------------------------------------------
 
+  /** The body and link elements of the container; the other element children are reported (once each) instead. */
   private children(): Child[] {
     const out: Child[] = [];
+    const unknown = new Set<Element>();
     for (const el of Array.from(this.options.container().children)) {
       if (el instanceof PhysicsBodyElement || el instanceof PhysicsLinkElement) out.push(el);
+      // A known tag not upgraded yet (its module loads later) is not a mistake.
+      else if (!NOT_A_MISTAKE.has(el.localName) && !el.hasAttribute('slot') && !(KNOWN_TAGS.includes(el.localName) && !customElements.get(el.localName))) unknown.add(el);
     }
+    for (const el of this.unknown) if (!unknown.has(el)) this.options.problems.forget(el);
+    for (const el of unknown) {
+      if (!this.unknown.has(el)) this.options.problems.set(el, el, [{ attribute: '', value: el.localName, message: unknownChildMessage(el.localName) }]);
+    }
+    this.unknown = unknown;
     return out;
   }
 

@@ -1,0 +1,108 @@
+// Children of a scene that are not bodies or links (a typo such as <physics-boxx>, a tag that does not exist such as
+// <physics-triangle>, a <div>) are reported: a physics-error on the child, one console warning naming its tag and the
+// closest known tag, a line in the error box. Text, comments, templates, scripts and styles are not mistakes.
+import { expect } from '@open-wc/testing';
+import * as api from '../../src/index.js';
+import type { PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
+import { BODY_TAGS, LINK_TAGS, unknownChildMessage } from '../../src/elements/physics-scene/markup.js';
+import { mount, unmount, waitFor } from './helpers.js';
+
+/** Mounts a scene with `children`, recording its physics-error details and the console's warnings from the start. */
+async function mountRecording(children: string): Promise<{ scene: PhysicsSceneElement; errors: PhysicsErrorDetail[]; warnings: string[] }> {
+  const errors: PhysicsErrorDetail[] = [];
+  const scene = await mount('paused', children, {
+    before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+  });
+  return { scene, errors, warnings };
+}
+
+const errorBox = (scene: PhysicsSceneElement) => scene.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
+
+let warnings: string[] = [];
+const warn = console.warn;
+
+describe('unknown children of a scene', () => {
+  let scene: PhysicsSceneElement | null = null;
+  beforeEach(() => {
+    warnings = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.join(' '));
+  });
+  afterEach(() => {
+    console.warn = warn;
+    unmount(scene);
+  });
+
+  it('a typo, a tag that does not exist and a <div> are each reported once; text, comments, template, script and style are not', async () => {
+    const rec = await mountRecording(`
+      text between the tags
+      <!-- a comment -->
+      <physics-box x="8" y="4" width="1" height="1"></physics-box>
+      <physics-boxx x="4" y="4" width="1" height="1"></physics-boxx>
+      <physics-triangle id="tri" x="10" y="4"></physics-triangle>
+      <div>a div</div>
+      <template><physics-box></physics-box></template>
+      <script type="text/plain">not run</script>
+      <style>p { color: red }</style>`);
+    scene = rec.scene;
+    expect((await scene.diagnostics()).bodyCount, 'only the <physics-box> is simulated').to.equal(1);
+    const tags = ['physics-boxx', 'physics-triangle', 'div'];
+    expect(rec.errors.map((e) => [e.element.localName, e.attribute, e.value])).to.deep.equal(tags.map((t) => [t, '', t]));
+    expect(warnings.length, warnings.join('\n')).to.equal(3);
+    expect(warnings[0]).to.contain('<physics-boxx>').and.contain('did you mean <physics-box>?');
+    expect(warnings[1]).to.contain('<physics-triangle id="tri">').and.contain('did you mean <physics-circle>?').and.contain('<physics-polygon>');
+    expect(warnings[2]).to.contain('<div>').and.contain('the scene ignores it');
+    expect(errorBox(scene).textContent!.split('\n')).to.have.length(3);
+
+    // Nothing is reported again while they stay, whatever else changes.
+    scene.querySelector('physics-box')!.setAttribute('x', '7');
+    scene.append(document.createElement('physics-circle'));
+    await waitFor(async () => (await scene!.diagnostics()).bodyCount === 2, 'the new circle');
+    expect(warnings.length).to.equal(3);
+    expect(rec.errors.length).to.equal(3);
+  });
+
+  it('children added later are checked too; removed, they leave the error box', async () => {
+    const rec = await mountRecording('<physics-box x="8" y="4" width="1" height="1"></physics-box>');
+    scene = rec.scene;
+    expect(rec.errors).to.deep.equal([]);
+    expect(errorBox(scene).hidden).to.equal(true);
+    const typo = document.createElement('physics-cirlce');
+    scene.append(typo);
+    await waitFor(() => rec.errors.length === 1, 'a physics-error for <physics-cirlce>');
+    expect(rec.errors[0].element).to.equal(typo);
+    expect(warnings).to.have.length(1);
+    expect(warnings[0]).to.contain('<physics-cirlce>').and.contain('did you mean <physics-circle>?');
+    expect(errorBox(scene).hidden).to.equal(false);
+    typo.remove();
+    await waitFor(() => errorBox(scene!).hidden === true, 'the error box to empty');
+    expect(rec.errors).to.have.length(1);
+  });
+
+  it('content the page shows instead of the scene (an image, <noscript>, anything with a slot) is not a mistake', async () => {
+    const rec = await mountRecording('<img alt="a cloth" width="1" height="1"><noscript>no script</noscript><p slot="fallback">Loading…</p><physics-box x="8" y="4" width="1" height="1"></physics-box>');
+    scene = rec.scene;
+    expect(rec.errors).to.deep.equal([]);
+    expect(warnings).to.deep.equal([]);
+  });
+
+  it('the closest known tag: physics-* tags always get one, others only when close; elements that are not bodies are ignored', () => {
+    expect(unknownChildMessage('physics-boxx')).to.equal('unknown element, ignored: did you mean <physics-box>?');
+    expect(unknownChildMessage('physics-soft-body')).to.equal('unknown element, ignored: did you mean <physics-softbody>?');
+    expect(unknownChildMessage('physics-spirng')).to.equal('unknown element, ignored: did you mean <physics-spring>?');
+    expect(unknownChildMessage('circle')).to.equal('unknown element, ignored: did you mean <physics-circle>?');
+    expect(unknownChildMessage('rope')).to.equal('unknown element, ignored: did you mean <physics-rope>?');
+    for (const tag of ['div', 'span', 'p', 'cloth-sim', 'physics-scene']) expect(unknownChildMessage(tag), tag).to.match(/^not a body or link element, so the scene ignores it \(bodies are <physics-box>/);
+  });
+
+  it('the known tags are exactly the body and link elements the library defines', () => {
+    const defined = { body: [] as string[], link: [] as string[] };
+    for (const value of Object.values(api)) {
+      if (typeof value !== 'function' || value === api.PhysicsBodyElement || value === api.PhysicsLinkElement) continue;
+      const tag = customElements.getName(value as CustomElementConstructor);
+      if (value.prototype instanceof api.PhysicsBodyElement) defined.body.push(tag!);
+      else if (value.prototype instanceof api.PhysicsLinkElement) defined.link.push(tag!);
+    }
+    expect([...BODY_TAGS].sort()).to.deep.equal(defined.body.sort());
+    expect([...LINK_TAGS].sort()).to.deep.equal(defined.link.sort());
+  });
+});
