@@ -199,6 +199,60 @@ function correctPoint(j: Joints, r: BodyRows, i: number, a: number, b: number): 
 }
 
 /**
+ * A weld as one 3×3 system (Box2D's weld joint): the anchors meet and the relative angle is the rest angle, both at
+ * once. Solved one after the other, on a long lever the angle's turn would throw the anchor far off and the point's
+ * correction turn it back: the pair oscillates and can blow up.
+ *   K = [[mA+mB+iA·lAy²+iB·lBy², −iA·lAx·lAy−iB·lBx·lBy, −iA·lAy−iB·lBy], [·, mA+mB+iA·lAx²+iB·lBx², iA·lAx+iB·lBx],
+ *        [·, ·, iA+iB]],  K·Δλ = −(pA − pB, θA − θB − θrest)  (point compliance α̃ on the first two diagonals).
+ */
+function correctWeld(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
+  const alphaT = arg[3];
+  const mA = r.invMass[a];
+  const iA = r.invInertia[a];
+  const mB = b < 0 ? 0 : r.invMass[b];
+  const iB = b < 0 ? 0 : r.invInertia[b];
+  const lax = at[0];
+  const lay = at[1];
+  const lbx = at[4];
+  const lby = at[5];
+  const k11 = mA + mB + iA * lay * lay + iB * lby * lby + alphaT;
+  const k12 = -iA * lax * lay - iB * lbx * lby;
+  const k22 = mA + mB + iA * lax * lax + iB * lbx * lbx + alphaT;
+  const k13 = -iA * lay - iB * lby;
+  const k23 = iA * lax + iB * lbx;
+  const k33 = iA + iB;
+  const e1 = -(at[2] - at[6]) - alphaT * j.lambda[i];
+  const e2 = -(at[3] - at[7]) - alphaT * j.lambdaY[i];
+  const e3 = -(r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i]);
+  // Cramer's rule on the symmetric 3×3 (no rotation freedom at all: fall back to the point alone).
+  const c11 = k22 * k33 - k23 * k23;
+  const c12 = k13 * k23 - k12 * k33;
+  const c13 = k12 * k23 - k13 * k22;
+  const det = k11 * c11 + k12 * c12 + k13 * c13;
+  if (!(det > 1e-14 * k11 * k22 * Math.max(k33, 1e-300))) {
+    correctPoint(j, r, i, a, b);
+    return;
+  }
+  const c22 = k11 * k33 - k13 * k13;
+  const c23 = k12 * k13 - k11 * k23;
+  const c33 = k11 * k22 - k12 * k12;
+  const px = (c11 * e1 + c12 * e2 + c13 * e3) / det;
+  const py = (c12 * e1 + c22 * e2 + c23 * e3) / det;
+  const pt = (c13 * e1 + c23 * e2 + c33 * e3) / det;
+  j.lambda[i] += px;
+  j.lambdaY[i] += py;
+  r.x[a] += mA * px;
+  r.y[a] += mA * py;
+  by[0] = lax * py - lay * px + pt;
+  turnRow(r, a, 1);
+  if (b < 0) return;
+  r.x[b] -= mB * px;
+  r.y[b] -= mB * py;
+  by[0] = lbx * py - lby * px + pt;
+  turnRow(r, b, -1);
+}
+
+/**
  * Turns A and B towards their rest angle (θA − θB = refAngle: a weld, a prismatic joint) or, `limited`, back into
  * refAngle + [lower, upper] (a revolute joint's limits), sharing the turn by inverse inertia.
  */
@@ -231,13 +285,15 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
       solvePrismatic(j, r, i, a, b);
       continue;
     }
-    if (kind === JointKind.Revolute || kind === JointKind.Weld) {
-      // Angle first (weld lock, revolute limits and motor), then the point, which the angle's turn moved.
-      if (kind === JointKind.Weld) correctAngle(j, r, i, a, b, false);
-      else {
-        if (j.motor[i] === 1) solveMotor(j, r, i, a, b);
-        if (j.limit[i] === 1) correctAngle(j, r, i, a, b, true);
-      }
+    if (kind === JointKind.Weld) {
+      loadAnchors(j, r, i);
+      correctWeld(j, r, i, a, b);
+      continue;
+    }
+    if (kind === JointKind.Revolute) {
+      // Motor and limits first, then the point, which their turn moved.
+      if (j.motor[i] === 1) solveMotor(j, r, i, a, b);
+      if (j.limit[i] === 1) correctAngle(j, r, i, a, b, true);
       loadAnchors(j, r, i);
       correctPoint(j, r, i, a, b);
       continue;
@@ -297,19 +353,44 @@ function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number): vo
 
 /** Prismatic: no relative turn, B's anchor on A's axis line, and within [lower, upper] along it when limited. */
 function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
-  correctAngle(j, r, i, a, b, false);
   loadAnchors(j, r, i);
   const ca = r.rc[a];
   const sa = r.rs[a];
   const ux = ca * j.axisX[i] - sa * j.axisY[i];
   const uy = sa * j.axisX[i] + ca * j.axisY[i];
-  // Perpendicular error: A's anchor minus B's, across the axis.
-  const dx = at[2] - at[6];
-  const dy = at[3] - at[7];
-  arg[0] = -dx * uy + dy * ux;
-  arg[1] = -uy;
-  arg[2] = ux;
-  if (arg[0] !== 0) correct(j, r, i);
+  // Across the axis (p = (−uy, ux)) and the relative angle together, as a 2×2 system like the weld's: A's anchor
+  // minus B's, across the axis, goes to 0, and so does θA − θB − θrest. (The axis turning with A is left out of the
+  // gradient, as usual for prismatic joints; the angle lock keeps that turn small.)
+  const px = -uy;
+  const py = ux;
+  const e1 = -((at[2] - at[6]) * px + (at[3] - at[7]) * py);
+  const e2 = -(r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i]);
+  const mA = r.invMass[a];
+  const iA = r.invInertia[a];
+  const mB = b < 0 ? 0 : r.invMass[b];
+  const iB = b < 0 ? 0 : r.invInertia[b];
+  const rA = at[0] * py - at[1] * px;
+  const rB = at[4] * py - at[5] * px;
+  const k11 = mA + mB + iA * rA * rA + iB * rB * rB;
+  const k12 = iA * rA + iB * rB;
+  const k22 = iA + iB;
+  const det = k11 * k22 - k12 * k12;
+  let l1 = 0;
+  let l2 = 0;
+  if (det > 1e-12 * k11 * Math.max(k22, 1e-300)) {
+    l1 = (k22 * e1 - k12 * e2) / det;
+    l2 = (k11 * e2 - k12 * e1) / det;
+  } else if (k11 > 0) l1 = e1 / k11;
+  r.x[a] += mA * l1 * px;
+  r.y[a] += mA * l1 * py;
+  by[0] = rA * l1 + l2;
+  turnRow(r, a, 1);
+  if (b >= 0) {
+    r.x[b] -= mB * l1 * px;
+    r.y[b] -= mB * l1 * py;
+    by[0] = rB * l1 + l2;
+    turnRow(r, b, -1);
+  }
   if (j.limit[i] !== 1) return;
   loadAnchors(j, r, i);
   // Translation of B's anchor along the axis from A's, pushed back within [lower, upper].

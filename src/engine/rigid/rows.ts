@@ -90,6 +90,9 @@ export function syncRotation(b: BodyRows, rows: Int32Array, count: number, exact
   }
 }
 
+/** The most a rigid body turns in one substep (radians). */
+export const MAX_TURN = 0.5;
+
 /**
  * The angular half of a substep's integration for the listed rigid rows: remember the angle, add the torque's
  * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles).
@@ -104,7 +107,11 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
     const i = rows[k];
     pangle[i] = angle[i];
     const iI = invInertia[i];
-    const w = iI > 0 ? (omega[i] + h * torque[i] * iI) * damp : omega[i];
+    let w = iI > 0 ? (omega[i] + h * torque[i] * iI) * damp : omega[i];
+    // At most half a radian a substep (Box2D caps a step's turn likewise): a body spun faster than the substeps can
+    // resolve would tunnel through its contacts and feed its own blow-up.
+    if (w * h > MAX_TURN) w = MAX_TURN / h;
+    else if (w * h < -MAX_TURN) w = -MAX_TURN / h;
     omega[i] = w;
     angle[i] += h * w;
   }

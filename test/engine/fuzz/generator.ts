@@ -22,13 +22,16 @@ function randomBody(rnd: () => number): BodyDescription {
   const y = -rnd() * 40;
   const mass = 10 ** (rnd() * 3 - 1.5); // 0.03 .. 30: ratios up to 1:1000
   const common = { friction: rnd() * 1.2, restitution: rnd() < 0.3 ? rnd() : 0, static: rnd() < 0.1 };
+  // Boxes, circles and polygons: rigid bodies mostly (some kinematic, some spinning), particle frames sometimes.
+  const model = rnd() < 0.25 ? ('particles' as const) : ('rigid' as const);
+  const motion = model === 'rigid' ? { kinematic: !common.static && rnd() < 0.05, angularVelocity: rnd() < 0.2 ? (rnd() * 2 - 1) * 20 : 0, model } : { model };
   switch (pick(['box', 'box', 'thin', 'circle', 'polygon', 'rope', 'cloth', 'soft', 'springs', 'ragdoll'])) {
     case 'box':
-      return { type: 'box', x, y, width: 0.2 + rnd() * 3, height: 0.2 + rnd() * 3, angle: rnd() * 7, mass, ...common };
+      return { type: 'box', x, y, width: 0.2 + rnd() * 3, height: 0.2 + rnd() * 3, angle: rnd() * 7, mass, ...common, ...motion };
     case 'thin': // a sliver: valid but nearly degenerate
-      return { type: 'box', x, y, width: 0.01 + rnd() * 0.02, height: 1 + rnd() * 5, angle: rnd() * 7, mass, ...common };
+      return { type: 'box', x, y, width: 0.01 + rnd() * 0.02, height: 1 + rnd() * 5, angle: rnd() * 7, mass, ...common, ...motion };
     case 'circle':
-      return { type: 'circle', x, y, radius: 0.05 + rnd() * 1.5, mass, ...common };
+      return { type: 'circle', x, y, radius: 0.05 + rnd() * 1.5, mass, ...common, ...motion };
     case 'polygon': {
       const n = 3 + Math.floor(rnd() * 6);
       const r = 0.3 + rnd() * 2;
@@ -36,7 +39,7 @@ function randomBody(rnd: () => number): BodyDescription {
         const t = (2 * Math.PI * k) / n + rnd() * 0.3;
         return { x: r * Math.cos(t), y: r * Math.sin(t) };
       });
-      return { type: 'polygon', x, y, points, mass, ...common };
+      return { type: 'polygon', x, y, points, mass, ...common, ...motion };
     }
     case 'rope':
       return { type: 'rope', from: { x, y }, to: { x: x + (rnd() * 2 - 1) * 8, y: y + rnd() * 5 }, segments: 2 + Math.floor(rnd() * 30), mass, collide: rnd() < 0.5, radius: 0.05, pinStart: rnd() < 0.7 };
@@ -86,6 +89,40 @@ export function fuzzScene(seed: number): FuzzRun {
     if (rnd() < 0.5) world.addDistance(pa, pb, { minLength: 0, maxLength: gap * (1 + rnd()) });
     else world.addSpring(pa, pb, { stiffness: rnd() * 500, damping: rnd() * 3 });
   }
+  // Rigid joints between a rigid body and a rigid body near it, a particle near it, or the world, at a point near it
+  // (as markup joins neighbours; a joint across half the scene would make a lever whose spinning tip outruns the
+  // invariants' speed limit without anything being wrong).
+  const rigid = bodies.filter((h) => world.bodyKindOf(h) === 'rigid' && world.bodyParticleHandles(h).length === 1);
+  const near = (h: Handle, p: { x: number; y: number }) => {
+    const q = world.getPosition(world.bodyParticleHandles(h)[0]);
+    return Math.hypot(q.x - p.x, q.y - p.y) < 4;
+  };
+  for (let k = 0; k < Math.floor(rnd() * 5) && rigid.length > 0; k++) {
+    const a = rigid[Math.floor(rnd() * rigid.length)];
+    const pose = world.bodyPose(a);
+    const anchor = { x: pose.x + (rnd() * 2 - 1), y: pose.y + (rnd() * 2 - 1) };
+    const type = (['revolute', 'weld', 'prismatic', 'distance', 'spring'] as const)[Math.floor(rnd() * 5)];
+    const neighbours = rigid.filter((h) => h !== a && near(h, anchor));
+    const loose = bodies.filter((h) => world.bodyKindOf(h) !== 'rigid' && near(h, anchor));
+    const other = rnd();
+    const side =
+      other < 0.3 || (neighbours.length === 0 && loose.length === 0)
+        ? {}
+        : (other < 0.7 && neighbours.length > 0) || loose.length === 0
+          ? { b: neighbours[Math.floor(rnd() * neighbours.length)] }
+          : { particleB: world.bodyParticleHandles(loose[Math.floor(rnd() * loose.length)])[0] };
+    world.addJoint({
+      type, a, ...side, anchor,
+      lowerAngle: type === 'revolute' && rnd() < 0.5 ? -rnd() : undefined,
+      upperAngle: type === 'revolute' && rnd() < 0.5 ? rnd() : undefined,
+      motorSpeed: type === 'revolute' && rnd() < 0.3 ? (rnd() * 2 - 1) * 10 : undefined,
+      maxMotorTorque: type === 'revolute' && rnd() < 0.3 ? rnd() * 100 : undefined,
+      lower: type === 'prismatic' ? -rnd() * 2 : undefined,
+      upper: type === 'prismatic' ? rnd() * 2 : undefined,
+      stiffness: type === 'spring' ? 1 + rnd() * 500 : undefined,
+      damping: type === 'spring' ? rnd() * 5 : undefined,
+    });
+  }
   let grab: Handle | null = null;
   return {
     world,
@@ -126,7 +163,7 @@ export function violation(world: World, speedLimit = 5000): string | null {
   const margin = 1;
   for (let i = 0; i < p.count; i++) {
     if (!p.alive[i]) continue;
-    for (const [name, col] of [['x', p.x], ['y', p.y], ['px', p.px], ['py', p.py], ['vx', p.vx], ['vy', p.vy], ['invMass', p.invMass]] as const) {
+    for (const [name, col] of [['x', p.x], ['y', p.y], ['px', p.px], ['py', p.py], ['vx', p.vx], ['vy', p.vy], ['invMass', p.invMass], ['angle', p.angle], ['omega', p.omega], ['invInertia', p.invInertia]] as const) {
       if (!Number.isFinite(col[i])) return `particle ${i}: ${name} is ${col[i]}`;
     }
     if (p.x[i] < FUZZ_BOUNDS.minX - margin || p.x[i] > FUZZ_BOUNDS.maxX + margin || p.y[i] < FUZZ_BOUNDS.minY - margin || p.y[i] > FUZZ_BOUNDS.maxY + margin) {
