@@ -1,8 +1,8 @@
 // Named regressions for the examples of issue 13 (contact points and manifolds right on every convex input).
 import { expect } from 'chai';
 import {
-  Manifold, Penetration, RayHit, circle, gjkEpa, pointInShape, polygon, polygonManifold, raycast, sat, shapeArea,
-  type Shape,
+  Manifold, Penetration, RayHit, assertConvex, circle, gjkEpa, pointInShape, polygon, polygonManifold, polygonView,
+  raycast, sat, shapeArea, type Shape,
 } from '../../../src/engine/collision/index.js';
 import { boundaryDistance, checkFeatures, edgeNormalOverlaps, rotated, throwsNaming } from './helpers.js';
 
@@ -126,6 +126,9 @@ describe('issue 13 regressions', () => {
       throwsNaming(() => poly([[0, 0], [1e200, 0], [0, 1e200]]), RangeError, 'points[1].x', '1e+200');
       throwsNaming(() => polygon([0, 0, 1, 0, 0, -2e150]), RangeError, 'points[5]', '-2e+150');
       throwsNaming(() => circle(0, 0, 1e151), RangeError, 'r', '1e+151');
+      // A view is checked the same way, once, by assertConvex.
+      const view = polygonView(Float64Array.of(0, 1e200, 0), Float64Array.of(0, 0, 1e200), Int32Array.of(0, 1, 2));
+      throwsNaming(() => assertConvex(view, 'body'), RangeError, 'body vertex 1 x', '1e+200');
     });
 
     it('at the limit a box inside a huge square is found by sat, gjkEpa and the manifold (a 1e200 square missed it)', () => {
