@@ -47,7 +47,7 @@ describe('embedding', () => {
     expect(scene.tabIndex).to.equal(0);
     expect(scene.getAttribute('role')).to.equal('group');
     expect(scene.getAttribute('aria-label')).to.equal('Physics simulation');
-    expect(scene.getAttribute('aria-keyshortcuts')).to.equal('Space');
+    expect(scene.getAttribute('aria-keyshortcuts')).to.equal('Space R');
     unmount(scene);
     scene = await mount('role="img" aria-label="Crates falling" tabindex="-1"', '');
     expect(scene.getAttribute('role')).to.equal('img');

@@ -4,12 +4,14 @@
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
 import type { DrawHook } from '../../render/renderer.js';
-import type { Diagnostics, HostParams, HostScene, HostSnapshot, Transport } from '../../worker/protocol.js';
+import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import { CollisionEventsController } from './collisions.js';
 import { changedParams, ConfigController } from './config.js';
 import { firePhysicsEvent } from './events.js';
+import { KeyboardController, type PickableBody } from './keyboard.js';
 import { MarkupSync } from './markup.js';
+import { BodyOutlines } from './outlines.js';
 import { PointerDragController } from './pointer.js';
 import { ProblemsController } from './problems.js';
 import { RecoveryController } from './recovery.js';
@@ -18,11 +20,26 @@ import { StageController } from './stage.js';
 import { sceneStyles } from './styles.js';
 import { VisibilityController } from './visibility.js';
 
+/** CSS pixels around a body within which a touch still takes it (a fingertip is about 8 mm wide). */
+const TOUCH_SLOP = 8;
+/** Velocity one press of an arrow key adds, in view heights per second. */
+const KEY_PUSH = 1 / 3;
+/** What a picked body is called when its element has no aria-label or title. */
+const TYPE_NAMES: Partial<Record<TopologyBody['type'], string>> = { softbody: 'soft body' };
+
 /**
  * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
  * scene simulates them in a Web Worker at a fixed step and draws them with p5 into a canvas in its shadow root.
  * The markup is the source of truth: adding, removing or changing a child or an attribute updates the running
  * simulation. World units: `width` × `height` is the visible box (like an SVG viewBox), y grows downward.
+ *
+ * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
+ * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable: Space
+ * toggles pause, Tab picks the bodies one by one, the arrow keys push the picked body, Escape lets go, R resets (told to
+ * screen readers in a live region); it gets `role="group"`, `aria-label`, `aria-keyshortcuts="Space R"` and
+ * `aria-description` unless the page sets them. A touch where no body is drawn scrolls or zooms the page; a touch on a
+ * body drags it. Before the script runs, a page reserves the element's box with `style="display:block;
+ * aspect-ratio:16/9;overflow:hidden"` (its view's width / height), so nothing moves when it starts.
  *
  * @summary A declarative 2D physics scene.
  *
@@ -36,10 +53,13 @@ import { VisibilityController } from './visibility.js';
  * @csspart status - The loading message shown until the engine runs.
  * @csspart error - The visible list of current problems (bad attributes, a failing engine).
  * @csspart play-button - The play control, shown when the scene started paused for `prefers-reduced-motion` or was paused with Space.
+ * @csspart fallback - The box that shows the fallback content until the scene is ready.
+ * @csspart focus-ring - The ring around the body picked with the keyboard.
  *
- * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
- * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable and
- * Space toggles pause; it gets `role="group"`, `aria-label` and `aria-keyshortcuts="Space"` unless the page sets them.
+ * @slot fallback - Content shown until the scene is ready, and by browsers that never run the script (a 404, no
+ * JavaScript): e.g. `<img slot="fallback" src="still.png" alt="…">`. Text written directly inside the tag is fallback
+ * too. Body and link elements are never shown.
+ * @slot - The scene's body and link elements (never shown themselves), and fallback text.
  *
  * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height).
  */
@@ -95,6 +115,10 @@ export class PhysicsSceneElement extends LitElement {
 
   /** The loading message is shown. */
   @state() private loading = true;
+  /** The engine has loaded the scene (since the last start): the fallback content is hidden. */
+  @state() private loaded = false;
+  /** The page wrote fallback content (an element with slot="fallback", or text in the tag): no loading message. */
+  @state() private hasFallback = false;
 
   /** @internal What is wrong: physics-error, warnings, the error box. */
   private readonly problems = new ProblemsController(this, {
@@ -112,6 +136,7 @@ export class PhysicsSceneElement extends LitElement {
       describe: () => this.describe(),
       loaded: (engine, errors) => {
         this.loading = false;
+        this.loaded = true;
         this.recovery.keepSnapshot();
         for (const e of errors) this.problems.refused(e);
         // Visibility may have changed while the scene loaded.
@@ -157,10 +182,29 @@ export class PhysicsSceneElement extends LitElement {
   });
   /** @internal On screen, page visible, reduced motion, Space. */
   private readonly visibility = new VisibilityController(this, { changed: () => this.syncRunning(), label: () => this.defaultLabel });
+  /** @internal The bodies as drawn in the newest frame: hit tests for touches, boxes and speeds for the keyboard. */
+  private readonly outlines = new BodyOutlines(
+    () => this.session.shown,
+    () => this.stage.mapping,
+  );
   /** @internal Drag and throw. */
   private readonly pointer = new PointerDragController(this, {
     engine: () => this.session.engine,
     toWorld: (x, y) => this.clientToWorld(x, y),
+    hit: (x, y) => {
+      const p = this.stage.clientToCanvas(x, y);
+      const on = this.outlines.bodyAt(p.x, p.y, TOUCH_SLOP, (body) => this.movable(body));
+      return on && { x: x + on.x - p.x, y: y + on.y - p.y };
+    },
+  });
+  /** @internal Pick, push and reset with the keyboard. */
+  private readonly keyboard = new KeyboardController(this, {
+    bodies: () => this.pickableBodies(),
+    bounds: (key) => this.outlines.bounds(key),
+    push: (key, dx, dy) => this.pushBody(key, dx, dy),
+    reset: () => void this.reset(),
+    ring: () => this.renderRoot?.querySelector<HTMLElement>('.ring') ?? null,
+    liveRegion: () => this.renderRoot?.querySelector<HTMLElement>('.announcer') ?? null,
   });
   /** @internal physics-collision events. */
   private readonly collisions = new CollisionEventsController(this, {
@@ -327,6 +371,12 @@ export class PhysicsSceneElement extends LitElement {
 
   // ---- lifecycle ---------------------------------------------------------------------------------------------
 
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // Known before the first render (slotchange comes after it), so the loading message never flashes over it.
+    this.fallbackChanged();
+  }
+
   override disconnectedCallback(): void {
     super.disconnectedCallback();
     // A move (disconnect then connect in the same task) keeps the running engine.
@@ -363,22 +413,34 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   protected override render() {
-    return html`<div
+    return html`<div class="fallback" part="fallback" ?hidden=${this.loaded}>
+        <slot name="fallback" @slotchange=${this.fallbackChanged}></slot><slot @slotchange=${this.fallbackChanged}></slot>
+      </div>
+      <div
         class="stage"
         part="stage"
         @pointerdown=${this.pointer.down}
         @pointermove=${this.pointer.move}
         @pointerup=${this.pointer.up}
         @pointercancel=${this.pointer.up}
+        @touchstart=${{ handleEvent: this.pointer.touchStart, passive: false }}
       ></div>
-      ${this.loading ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      ${this.loading && !this.hasFallback ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      <div class="ring" part="focus-ring" hidden></div>
+      <div class="announcer" aria-live="polite" aria-atomic="true"></div>
       ${this.visibility.playControl && this.paused
         ? html`<button class="play" part="play-button" type="button" aria-label="Play the simulation" @click=${this.visibility.onPlayClick}>▶</button>`
         : nothing}
       <div class="error" part="error" role="alert" hidden></div>
-      ${this.renderBodies()}
-      <slot></slot>`;
+      ${this.renderBodies()}`;
   }
+
+  /** Fallback content: an element with slot="fallback", or text (not only white space) among the children. */
+  private readonly fallbackChanged = (): void => {
+    this.hasFallback = [...this.childNodes].some((n) =>
+      n.nodeType === Node.TEXT_NODE ? n.textContent!.trim() !== '' : n instanceof Element && n.getAttribute('slot') === 'fallback',
+    );
+  };
 
   protected override updated(changed: PropertyValues): void {
     const { width, height } = this.settings.config;
@@ -427,6 +489,34 @@ export class PhysicsSceneElement extends LitElement {
     if (this.session.setRunning(running)) this.runningChanged(running);
   }
 
+  /** A body a finger or the keyboard may move: any but a static one. */
+  private movable(body: TopologyBody): boolean {
+    return !this.markup.elementOf(body.key)?.hasAttribute('static');
+  }
+
+  /** The bodies the keyboard picks, in the engine's order, each called by its element's label or its type. */
+  private pickableBodies(): PickableBody[] {
+    const bodies = this.session.shown?.topology?.bodies ?? [];
+    return bodies
+      .filter((b) => this.movable(b))
+      .map((b) => {
+        const el = this.markup.elementOf(b.key);
+        return { key: b.key, label: el?.getAttribute('aria-label') || el?.getAttribute('title') || TYPE_NAMES[b.type] || b.type };
+      });
+  }
+
+  /**
+   * One press of an arrow key: adds KEY_PUSH × the view's height per second to the body's velocity in direction
+   * (dx, dy), the same for a light and a heavy body (as a drag moves both), up to three presses' worth.
+   */
+  private pushBody(key: number, dx: number, dy: number): void {
+    const dv = KEY_PUSH * this.settings.config.height;
+    const v = this.outlines.velocity(key) ?? { x: 0, y: 0 };
+    const along = v.x * dx + v.y * dy;
+    const added = Math.min(dv, Math.max(0, 3 * dv - along));
+    if (Number.isFinite(added)) this.session.send('setVelocity', key, v.x + dx * added, v.y + dy * added);
+  }
+
   /** The engine is ended (the scene left the page, or its worker attribute changed): each concern back to its start. */
   private stop(): void {
     this.session.stop();
@@ -434,8 +524,10 @@ export class PhysicsSceneElement extends LitElement {
     this.runningChanged(false);
     this.stage.close();
     this.loading = true;
+    this.loaded = false;
     this.problems.clear();
     this.pointer.cancel();
+    this.keyboard.cancel();
     this.markup.reset();
   }
 }

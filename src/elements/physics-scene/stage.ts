@@ -3,6 +3,13 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { SceneRenderer, type BodyStyle, type DrawHook, type FrameSource } from '../../render/renderer.js';
 
+/** World → canvas CSS pixels: px = offsetX + x · scale, py = offsetY + y · scale. */
+export interface ViewMapping {
+  scale: number;
+  offsetX: number;
+  offsetY: number;
+}
+
 /** What the canvas shows, from the scene's attributes. */
 export interface StageView {
   width: number;
@@ -91,6 +98,23 @@ export class StageController implements ReactiveController {
 
   deleteStyle(key: number): void {
     this.renderer?.deleteStyle(key);
+  }
+
+  /** World → canvas CSS pixels as the canvas is drawn now (px = offsetX + x · scale), or null without a canvas. */
+  get mapping(): ViewMapping | null {
+    const r = this.renderer;
+    if (!r || !this.canvas) return null;
+    const origin = r.worldToCanvas(0, 0);
+    const unit = r.worldToCanvas(1, 0);
+    return { scale: unit.x - origin.x, offsetX: origin.x, offsetY: origin.y };
+  }
+
+  /** A viewport point in canvas CSS pixels; NaN without a canvas. */
+  clientToCanvas(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!canvas) return { x: NaN, y: NaN };
+    const r = canvas.getBoundingClientRect();
+    return { x: x - r.left, y: y - r.top };
   }
 
   /** A world point in viewport (client) coordinates; NaN without a canvas. */

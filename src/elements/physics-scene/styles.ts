@@ -1,4 +1,9 @@
 // The styles of <physics-scene> (and of the presets built on it).
+//
+// The box: a block as wide as its container, `aspect-ratio` from the view (width / height) unless CSS gives it a height,
+// overflow hidden. A page reserves the same box before the script has run with the snippet's inline style
+// (style="display:block;aspect-ratio:16/9;overflow:hidden", which wins over these styles once defined), so nothing
+// moves when the element upgrades. Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
 import { css } from 'lit';
 
 /** @internal */
@@ -8,7 +13,7 @@ export const sceneStyles = css`
     position: relative;
     aspect-ratio: var(--physics-scene-aspect, 16 / 9);
     overflow: hidden;
-    touch-action: none;
+    touch-action: manipulation;
     user-select: none;
     -webkit-user-select: none;
     contain: layout paint;
@@ -23,6 +28,32 @@ export const sceneStyles = css`
   .stage {
     position: absolute;
     inset: 0;
+  }
+  /* Under the stage: seen until the canvas draws its first frame over it, hidden once the scene is ready. */
+  .fallback {
+    position: absolute;
+    inset: 0;
+    overflow: hidden;
+  }
+  .fallback[hidden],
+  .ring[hidden] {
+    display: none;
+  }
+  .ring {
+    position: absolute;
+    box-sizing: border-box;
+    border: 2px solid #2f6fb5;
+    border-radius: 6px;
+    box-shadow: 0 0 0 2px #ffffffcc;
+    pointer-events: none;
+  }
+  .announcer {
+    position: absolute;
+    width: 1px;
+    height: 1px;
+    overflow: hidden;
+    clip-path: inset(50%);
+    white-space: nowrap;
   }
   .status {
     position: absolute;
@@ -72,7 +103,8 @@ export const sceneStyles = css`
     outline: 3px solid #fff;
     outline-offset: -6px;
   }
-  ::slotted(*) {
+  /* Body and link elements (the default slot) are never shown; fallback elements keep their own display. */
+  slot:not([name])::slotted(*) {
     display: none;
   }
 `;

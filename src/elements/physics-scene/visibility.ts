@@ -1,6 +1,7 @@
 // When the scene may run: on screen (IntersectionObserver) with the page visible (Page Visibility) and not paused.
 // With `prefers-reduced-motion: reduce` it starts paused and shows a play control; Space toggles pause while the
-// scene has focus (it is focusable, with a role, a label and its key shortcut, unless the page set its own).
+// scene has focus (it is focusable, with a role, a label and its key shortcuts, unless the page set its own; the other
+// keys are the keyboard controller's).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { track } from '../../worker/resources.js';
 
@@ -80,7 +81,7 @@ export class VisibilityController implements ReactiveController {
     if (!host.hasAttribute('tabindex')) host.tabIndex = 0;
     if (!host.hasAttribute('role')) host.setAttribute('role', 'group');
     if (!host.hasAttribute('aria-label') && !host.hasAttribute('aria-labelledby')) host.setAttribute('aria-label', this.options.label());
-    if (!host.hasAttribute('aria-keyshortcuts')) host.setAttribute('aria-keyshortcuts', 'Space');
+    if (!host.hasAttribute('aria-keyshortcuts')) host.setAttribute('aria-keyshortcuts', 'Space R');
     if (!this.motionChecked) {
       this.motionChecked = true;
       if (!this.host.paused && !this.playRequested && this.reducedMotion()) {

@@ -123,7 +123,7 @@ describe('VisibilityController', () => {
     const r = rig();
     host = r.host;
     document.body.append(host);
-    expect([host.tabIndex, host.getAttribute('role'), host.getAttribute('aria-label'), host.getAttribute('aria-keyshortcuts')]).to.deep.equal([0, 'group', 'Crates falling', 'Space']);
+    expect([host.tabIndex, host.getAttribute('role'), host.getAttribute('aria-label'), host.getAttribute('aria-keyshortcuts')]).to.deep.equal([0, 'group', 'Crates falling', 'Space R']);
     const other = rig();
     other.host.setAttribute('tabindex', '-1');
     other.host.setAttribute('role', 'img');
