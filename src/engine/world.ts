@@ -3,7 +3,7 @@ import { ParticleFlag, type ParticleStore } from './particles.js';
 import type { Column } from './table.js';
 import { signedAngle, type AngleConstraints } from './constraints/angle.js';
 import { loopArea, type AreaConstraints } from './constraints/area.js';
-import type { DistanceConstraints } from './constraints/distance.js';
+import { stretchOf, type DistanceConstraints } from './constraints/distance.js';
 import type { PinConstraints } from './constraints/pin.js';
 import type { Springs } from './constraints/spring.js';
 import type { GrabConstraints } from './constraints/grab.js';
@@ -28,10 +28,10 @@ import type { Limits, ParticleOptions, PinOptions, RayCastHit, SpringOptions, Ve
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { JointOptions, MassInfo, Pose, RigidBodyOptions } from './options.js';
-import { circleShape, compoundShape, polygonShape, withDensity } from './rigid/outline.js';
-import { BODY_TYPES, BodyType, type BodyTypeName, type RigidShapeSource } from './rigid/shapes.js';
-import { applyForceAt, applyImpulseAt, initRigidRow, poseOf, setPose, setType } from './rigid/bodies.js';
-import { jointRow, type JointSide } from './rigid/joint-setup.js';
+import { BodyType, type BodyTypeName } from './rigid/shapes.js';
+import { initRigidRow } from './rigid/bodies.js';
+import { jointRow } from './rigid/joint-setup.js';
+import * as api from './rigid/body-api.js';
 import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
@@ -249,27 +249,13 @@ export class World {
     ctx.particleIds.release(handle);
   }
 
-  hasParticle(handle: unknown): boolean {
-    return this.ctx.particleIds.isValid(handle);
-  }
-
+  hasParticle(handle: unknown): boolean { return this.ctx.particleIds.isValid(handle); }
   /** The storage index of a live particle handle (index into world.particles' arrays). */
-  particleIndex(handle: Handle): number {
-    return this.ctx.particleIds.slotOf(handle, 'particle');
-  }
-
+  particleIndex(handle: Handle): number { return this.ctx.particleIds.slotOf(handle, 'particle'); }
   /** The handle of the particle stored at `index`. */
-  particleHandle(index: number): Handle {
-    return this.ctx.particleIds.handleOf(index);
-  }
-
+  particleHandle(index: number): Handle { return this.ctx.particleIds.handleOf(index); }
   /** Live particle count. */
-  get particleCount(): number {
-    const p = this.ctx.particles;
-    let n = 0;
-    for (let i = 0; i < p.count; i++) n += p.alive[i];
-    return n;
-  }
+  get particleCount(): number { return this.particles.alive.subarray(0, this.particles.count).reduce((n, a) => n + a, 0); }
 
   getPosition(handle: Handle): Vec2 {
     const i = this.particleIndex(handle);
@@ -312,12 +298,10 @@ export class World {
   /** Changes the velocity by impulse / mass at once. */
   applyImpulse(handle: Handle, ix: number, iy: number): void {
     const i = this.particleIndex(handle);
+    const [jx, jy] = [finite('ix', ix), finite('iy', iy)];
     wakeParticle(this.ctx, i);
-    const w = this.particles.invMass[i];
-    const jx = finite('ix', ix);
-    const jy = finite('iy', iy);
-    this.particles.vx[i] += jx * w;
-    this.particles.vy[i] += jy * w;
+    this.particles.vx[i] += jx * this.particles.invMass[i];
+    this.particles.vy[i] += jy * this.particles.invMass[i];
   }
 
   getMass(handle: Handle): number {
@@ -439,58 +423,28 @@ export class World {
   }
 
   /** Which kind of constraint a handle names. */
-  constraintKindOf(handle: Handle): ConstraintKind {
-    return this.ctx.constraints.kindOf(handle);
-  }
-
-  hasConstraint(handle: unknown): boolean {
-    return this.ctx.constraints.ids.isValid(handle);
-  }
-
-  get constraintCount(): number {
-    return this.ctx.constraints.count;
-  }
+  constraintKindOf(handle: Handle): ConstraintKind { return this.ctx.constraints.kindOf(handle); }
+  hasConstraint(handle: unknown): boolean { return this.ctx.constraints.ids.isValid(handle); }
+  get constraintCount(): number { return this.ctx.constraints.count; }
 
   /** Length error of a distance constraint: how far the current length is outside [minLength, maxLength]. */
-  distanceError(handle: Handle): number {
-    const row = this.ctx.constraints.rowOf(handle, Kind.Distance, 'distance constraint');
-    const t = this.distances;
-    const p = this.particles;
-    const d = Math.sqrt((p.x[t.b[row]] - p.x[t.a[row]]) ** 2 + (p.y[t.b[row]] - p.y[t.a[row]]) ** 2);
-    return d > t.maxLength[row] ? d - t.maxLength[row] : d < t.minLength[row] ? t.minLength[row] - d : 0;
-  }
-
+  distanceError(handle: Handle): number { return stretchOf(this.distances, this.distanceRow(handle), this.particles, false); }
   /** The particle indices (slots in the state arrays) a distance constraint joins. */
   distanceParticleIndices(handle: Handle): [number, number] {
-    const row = this.ctx.constraints.rowOf(handle, Kind.Distance, 'distance constraint');
+    const row = this.distanceRow(handle);
     return [this.distances.a[row], this.distances.b[row]];
   }
-
   /** How many distance constraints have broken (torn) so far. */
-  get brokenLinkCount(): number {
-    const { broken, count } = this.distances;
-    let n = 0;
-    for (let i = 0; i < count; i++) n += broken[i];
-    return n;
-  }
-
+  get brokenLinkCount(): number { return this.distances.broken.subarray(0, this.distances.count).reduce((n, b) => n + b, 0); }
   /** Whether a distance constraint made with breakStrain has broken (it then no longer acts). */
-  isBroken(handle: Handle): boolean {
-    return this.distances.broken[this.ctx.constraints.rowOf(handle, Kind.Distance, 'distance constraint')] === 1;
-  }
-
+  isBroken(handle: Handle): boolean { return this.distances.broken[this.distanceRow(handle)] === 1; }
   /** The largest relative stretch |d − L| / L over all distance constraints with L > 0 (0 when none). */
   maxStrain(): number {
-    const t = this.distances;
-    const { x, y } = this.particles;
     let worst = 0;
-    for (let i = 0; i < t.count; i++) {
-      const d = Math.sqrt((x[t.b[i]] - x[t.a[i]]) ** 2 + (y[t.b[i]] - y[t.a[i]]) ** 2);
-      const over = d > t.maxLength[i] ? (d - t.maxLength[i]) / t.maxLength[i] : d < t.minLength[i] ? (t.minLength[i] - d) / t.minLength[i] : 0;
-      if (over > worst && Number.isFinite(over)) worst = over;
-    }
+    for (let i = 0; i < this.distances.count; i++) worst = Math.max(worst, stretchOf(this.distances, i, this.particles, true));
     return worst;
   }
+  private distanceRow(handle: Handle): number { return this.ctx.constraints.rowOf(handle, Kind.Distance, 'distance constraint'); }
 
   private pair(a: Handle, b: Handle, nameA = 'a', nameB = 'b'): [number, number] {
     const ia = this.ctx.particleIds.slotOf(a, nameA);
@@ -585,12 +539,9 @@ export class World {
     const idx = this.bodyParticleIndices(handle);
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
+    if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) return api.pushBody(this.ctx, handle, jx, jy, x, y, true);
     this.wake(handle);
-    const p = this.particles;
-    if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) {
-      const i = idx[0];
-      applyImpulseAt(p, i, jx, jy, x === undefined ? p.x[i] : finite('x', x), y === undefined ? p.y[i] : finite('y', y));
-    } else applyImpulseByMass(p, idx, jx, jy);
+    applyImpulseByMass(this.particles, idx, jx, jy);
   }
 
   *bodies(): IterableIterator<Handle> {
@@ -606,130 +557,45 @@ export class World {
    * its one particle (bodyParticleHandles) is its centre of mass.
    */
   addRigidBody(o: RigidBodyOptions): Handle {
-    if (o == null || typeof o !== 'object') throw new TypeError(`rigid body options must be an object, got ${String(o)}`);
-    if ([o.points, o.radius, o.outlines].filter((v) => v !== undefined).length !== 1) throw new TypeError('a rigid body needs one of points (an outline), radius (a disc) or outlines');
-    const shape = o.points !== undefined ? polygonShape(o.points) : o.outlines !== undefined ? compoundShape(o.outlines) : circleShape(o.radius as number);
-    const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
-    if (o.mass !== undefined && o.density !== undefined) throw new TypeError('give a rigid body either mass or density, not both');
-    const density = o.mass !== undefined ? positive('mass', o.mass) / shape.source.mass : positive('density', o.density ?? 1);
-    const source = withDensity(shape, density);
-    const [x, y, angle] = [finite('x', o.x), finite('y', o.y), finite('angle', o.angle ?? 0)];
-    const [vx, vy, w] = [finite('vx', o.vx ?? 0), finite('vy', o.vy ?? 0), finite('angularVelocity', o.angularVelocity ?? 0)];
-    const collider = resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3);
-    const particle = this.addParticle({ x, y });
+    const plan = api.rigidBodyPlan(o);
+    const particle = this.addParticle({ x: plan.x, y: plan.y });
     const i = this.particleIndex(particle);
-    initRigidRow(this.particles, i, source, type, x, y, angle);
+    initRigidRow(this.particles, i, plan.source, plan.type, plan.x, plan.y, plan.angle);
     const body = this.addBody('rigid', [particle], [], { shape: 'none' });
-    this.ctx.rigidShapes.set(handleSlot(body), i, source, type);
-    this.writeCollider(handleSlot(body), collider);
-    if (type !== BodyType.Static) this.setBodyVelocity(body, vx, vy);
-    this.particles.omega[i] = type === BodyType.Static ? 0 : w;
+    this.ctx.rigidShapes.set(handleSlot(body), i, plan.source, plan.type);
+    this.writeCollider(handleSlot(body), plan.collider);
+    if (plan.type !== BodyType.Static) [this.particles.vx[i], this.particles.vy[i], this.particles.omega[i]] = [plan.vx, plan.vy, plan.w];
     return body;
   }
 
-  /** The rigid body's row and shape; a RangeError naming `what` for any other body. */
-  private rigid(body: Handle, what = 'body'): { i: number; slot: number; source: RigidShapeSource } {
-    const slot = this.ctx.bodies.slotOf(body, what);
-    const source = this.ctx.rigidShapes.source(slot);
-    if (!source) throw new RangeError(`${what} ${body} is not a rigid body (it is a ${this.ctx.bodies.kind[slot]} built of particles)`);
-    return { i: this.ctx.bodies.particles[slot][0], slot, source };
-  }
-
   /** A rigid body's origin (where its points were placed) and angle. */
-  bodyPose(body: Handle): Pose {
-    const r = this.rigid(body);
-    return poseOf(this.particles, r.i, r.source);
-  }
-
+  bodyPose(body: Handle): Pose { return api.bodyPose(this.ctx, body); }
   /** Moves and turns a rigid body to a pose (its velocities are kept). */
-  setBodyPose(body: Handle, x: number, y: number, angle: number): void {
-    const r = this.rigid(body);
-    setPose(this.particles, r.i, r.source, finite('x', x), finite('y', y), finite('angle', angle));
-    this.wake(body);
-  }
-
+  setBodyPose(body: Handle, x: number, y: number, angle: number): void { api.setBodyPose(this.ctx, body, x, y, angle); }
   /** Velocity of a rigid body's centre of mass at the end of the last step (semi-implicit Euler's). */
-  bodyVelocity(body: Handle): Vec2 {
-    const { i } = this.rigid(body);
-    return { x: this.particles.vx[i], y: this.particles.vy[i] };
-  }
-
-  setBodyVelocity(body: Handle, vx: number, vy: number): void {
-    const { i } = this.rigid(body);
-    this.particles.vx[i] = finite('vx', vx);
-    this.particles.vy[i] = finite('vy', vy);
-    this.wake(body);
-  }
-
+  bodyVelocity(body: Handle): Vec2 { return api.bodyVelocity(this.ctx, body); }
+  setBodyVelocity(body: Handle, vx: number, vy: number): void { api.setBodyVelocity(this.ctx, body, vx, vy); }
   /** Angular velocity (rad/s; positive turns x toward y). */
-  bodyAngularVelocity(body: Handle): number {
-    return this.particles.omega[this.rigid(body).i];
-  }
-
-  setBodyAngularVelocity(body: Handle, w: number): void {
-    const { i } = this.rigid(body);
-    this.particles.omega[i] = finite('angularVelocity', w);
-    this.wake(body);
-  }
-
+  bodyAngularVelocity(body: Handle): number { return this.particles.omega[api.rigidOf(this.ctx, body).i]; }
+  setBodyAngularVelocity(body: Handle, w: number): void { api.setBodyAngularVelocity(this.ctx, body, w); }
   /** A force for the next step at a world point (default the centre of mass), with the torque it makes there. */
-  applyBodyForce(body: Handle, fx: number, fy: number, x?: number, y?: number): void {
-    const { i } = this.rigid(body);
-    const p = this.particles;
-    applyForceAt(p, i, finite('fx', fx), finite('fy', fy), x === undefined ? p.x[i] : finite('x', x), y === undefined ? p.y[i] : finite('y', y));
-    this.wake(body);
-  }
-
+  applyBodyForce(body: Handle, fx: number, fy: number, x?: number, y?: number): void { api.pushBody(this.ctx, body, fx, fy, x, y, false); }
   /** A torque for the next step. */
-  applyBodyTorque(body: Handle, torque: number): void {
-    const { i } = this.rigid(body);
-    this.particles.torque[i] += finite('torque', torque);
-    this.wake(body);
-  }
-
+  applyBodyTorque(body: Handle, torque: number): void { api.applyBodyTorque(this.ctx, body, torque); }
   /** Mass, moment of inertia about the centre of mass, and that centre now. */
-  bodyMassInfo(body: Handle): MassInfo {
-    const r = this.rigid(body);
-    return { mass: r.source.mass, inertia: r.source.inertia, centerX: this.particles.x[r.i], centerY: this.particles.y[r.i] };
-  }
-
-  bodyType(body: Handle): BodyTypeName {
-    return BODY_TYPES[this.ctx.rigidShapes.type[this.rigid(body).slot]];
-  }
-
+  bodyMassInfo(body: Handle): MassInfo { return api.bodyMassInfo(this.ctx, body); }
+  bodyType(body: Handle): BodyTypeName { return api.bodyType(this.ctx, body); }
   /** Makes a rigid body dynamic, static (it stops) or kinematic (it keeps its velocities and moves by them). */
-  setBodyType(body: Handle, type: BodyTypeName): void {
-    const r = this.rigid(body);
-    const t = BODY_TYPES.indexOf(oneOf('type', type, BODY_TYPES)) as BodyType;
-    this.wake(body);
-    this.ctx.rigidShapes.set(r.slot, r.i, r.source, t);
-    setType(this.particles, r.i, r.source, t);
-    this.ctx.collidersDirty = true;
-    topologyChanged(this.ctx);
-  }
+  setBodyType(body: Handle, type: BodyTypeName): void { api.setBodyType(this.ctx, body, type); }
 
   /** A joint between two bodies, a body and the world, or a body and a particle (see JointOptions). */
   addJoint(o: JointOptions): Handle {
     if (o == null || typeof o !== 'object') throw new TypeError(`joint options must be an object, got ${String(o)}`);
-    const A = this.jointSide(o.a, o.particleA, 'a', 'particleA');
-    const B = this.jointSide(o.b, o.particleB, 'b', 'particleB');
+    const A = api.jointSide(this.ctx, o.a, o.particleA, 'a', 'particleA');
+    const B = api.jointSide(this.ctx, o.b, o.particleB, 'b', 'particleB');
     if (A.row < 0) throw new TypeError('a joint needs side a: a body (a) or a particle (particleA)');
     if (A.row === B.row) throw new RangeError('a joint must join two different bodies or particles');
     return this.added(this.ctx.constraints.add(this.ctx.constraints.joints, jointRow(o, A, B, this.particles)));
-  }
-
-  private jointSide(body: Handle | null | undefined, particle: Handle | undefined, bodyName: string, particleName: string): JointSide {
-    if (body != null && particle !== undefined) throw new TypeError(`give ${bodyName} or ${particleName}, not both`);
-    if (particle !== undefined) {
-      const row = this.ctx.particleIds.slotOf(particle, particleName);
-      return { row, rigid: false };
-    }
-    if (body == null) return { row: -1, rigid: false };
-    const slot = this.ctx.bodies.slotOf(body, bodyName);
-    const rigid = this.ctx.rigidShapes.source(slot) !== undefined;
-    const members = this.ctx.bodies.particles[slot];
-    if (!rigid && members.length !== 1) throw new RangeError(`${bodyName} ${body} is built of ${members.length} particles: join it by one of them (${particleName})`);
-    return { row: members[0], rigid };
   }
 
   // ---- pointer drag and queries ------------------------------------------------------------------------------
@@ -740,11 +606,9 @@ export class World {
    * null when nothing movable is there.
    */
   grab(x: number, y: number, options: GrabOptions = {}): Handle | null {
-    finite('x', x);
-    finite('y', y);
+    this.query(['x', 'y'], x, y);
     const stiffness = positive('stiffness', options.stiffness ?? 2000);
     const pickRadius = nonNegative('pickRadius', options.pickRadius ?? 0.5);
-    this.poseShapes();
     const g = pickGrabPoint(this.ctx, x, y, pickRadius);
     if (!g) return null;
     wakeParticle(this.ctx, g.p0);
@@ -768,29 +632,28 @@ export class World {
 
   /** Bodies whose collision shape contains (x, y), the last created first. */
   bodiesAtPoint(x: number, y: number): Handle[] {
-    finite('x', x);
-    finite('y', y);
-    this.poseShapes();
+    this.query(['x', 'y'], x, y);
     return bodiesAtPoint(this.colliders, this.particles, this.ctx.rigidShapes, x, y).map(this.ctx.bodyHandleOf);
   }
 
   /** Bodies whose collision shape overlaps the box. */
   bodiesInBox(minX: number, minY: number, maxX: number, maxY: number): Handle[] {
-    [minX, minY, maxX, maxY].forEach((v, k) => finite(['minX', 'minY', 'maxX', 'maxY'][k], v));
-    this.poseShapes();
+    this.query(['minX', 'minY', 'maxX', 'maxY'], minX, minY, maxX, maxY);
     return bodiesInBox(this.colliders, this.particles, this.ctx.rigidShapes, minX, minY, maxX, maxY).map(this.ctx.bodyHandleOf);
   }
 
   /** The nearest body hit by the segment from (x0, y0) to (x1, y1), or null. */
   rayCast(x0: number, y0: number, x1: number, y1: number): RayCastHit | null {
-    [x0, y0, x1, y1].forEach((v, k) => finite(['x0', 'y0', 'x1', 'y1'][k], v));
-    this.poseShapes();
+    this.query(['x0', 'y0', 'x1', 'y1'], x0, y0, x1, y1);
     const hit = rayCast(this.colliders, this.particles, this.ctx.rigidShapes, x0, y0, x1, y1);
-    return hit && { body: this.ctx.bodyHandleOf(hit.slot), x: hit.x, y: hit.y, normalX: hit.normalX, normalY: hit.normalY, distance: hit.distance };
+    if (!hit) return null;
+    const { slot, ...where } = hit;
+    return { body: this.ctx.bodyHandleOf(slot), ...where };
   }
 
-  /** Current bookkeeping and rigid shapes where their bodies are now (queries run between steps). */
-  private poseShapes(): void {
+  /** Checks a query's numbers (by name), then brings the bookkeeping and rigid shapes to where the bodies are now. */
+  private query(names: readonly string[], ...values: number[]): void {
+    values.forEach((v, k) => finite(names[k], v));
     ensureTopology(this.ctx);
     if (this.ctx.rigidShapes.polygonCount > 0) this.ctx.rigidShapes.updateWorld(this.particles);
   }

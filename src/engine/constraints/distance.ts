@@ -94,3 +94,16 @@ export function breakOverstretched(c: DistanceConstraints, p: ParticleStore, onB
     onBreak(i);
   }
 }
+
+/**
+ * How far constraint `row`'s length is outside [minLength, maxLength] (`relative`: as a fraction of the limit it
+ * passes; a non-finite fraction, from a zero limit, counts as 0).
+ */
+export function stretchOf(t: DistanceConstraints, row: number, p: ParticleStore, relative: boolean): number {
+  const { x, y } = p;
+  const d = Math.sqrt((x[t.b[row]] - x[t.a[row]]) ** 2 + (y[t.b[row]] - y[t.a[row]]) ** 2);
+  const over = d > t.maxLength[row] ? d - t.maxLength[row] : d < t.minLength[row] ? t.minLength[row] - d : 0;
+  if (!relative || over === 0) return over;
+  const fraction = over / (d > t.maxLength[row] ? t.maxLength[row] : t.minLength[row]);
+  return Number.isFinite(fraction) ? fraction : 0;
+}

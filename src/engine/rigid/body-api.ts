@@ -1,0 +1,126 @@
+// The World's calls on a rigid body, behind its facade: each checks its arguments, finds the body's row and shape,
+// and reads or writes the row (rigid/bodies.ts); anything it does to a body wakes it.
+import type { Handle } from '../handles.js';
+import { resolveCollider, type MassInfo, type Pose, type ResolvedCollider, type RigidBodyOptions, type Vec2 } from '../options.js';
+import { positive } from '../validate.js';
+import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
+import type { StepContext } from '../pipeline/context.js';
+import { topologyChanged } from '../pipeline/topology.js';
+import { finite, oneOf } from '../validate.js';
+import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
+import type { JointSide } from './joint-setup.js';
+import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
+
+/** What addRigidBody makes, checked before anything is made: a TypeError/RangeError naming the option otherwise. */
+export function rigidBodyPlan(o: RigidBodyOptions): {
+  source: RigidShapeSource; type: BodyType; collider: ResolvedCollider; x: number; y: number; angle: number; vx: number; vy: number; w: number;
+} {
+  if (o == null || typeof o !== 'object') throw new TypeError(`rigid body options must be an object, got ${String(o)}`);
+  if ([o.points, o.radius, o.outlines].filter((v) => v !== undefined).length !== 1) throw new TypeError('a rigid body needs one of points (an outline), radius (a disc) or outlines');
+  const shape = o.points !== undefined ? polygonShape(o.points) : o.outlines !== undefined ? compoundShape(o.outlines) : circleShape(o.radius as number);
+  const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
+  if (o.mass !== undefined && o.density !== undefined) throw new TypeError('give a rigid body either mass or density, not both');
+  const density = o.mass !== undefined ? positive('mass', o.mass) / shape.source.mass : positive('density', o.density ?? 1);
+  return {
+    source: withDensity(shape, density),
+    type,
+    collider: resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3),
+    x: finite('x', o.x),
+    y: finite('y', o.y),
+    angle: finite('angle', o.angle ?? 0),
+    vx: finite('vx', o.vx ?? 0),
+    vy: finite('vy', o.vy ?? 0),
+    w: finite('angularVelocity', o.angularVelocity ?? 0),
+  };
+}
+
+/** A rigid body's row, slot and shape; a RangeError naming `what` for any other body. */
+export function rigidOf(ctx: StepContext, body: Handle, what = 'body'): { i: number; slot: number; source: RigidShapeSource } {
+  const slot = ctx.bodies.slotOf(body, what);
+  const source = ctx.rigidShapes.source(slot);
+  if (!source) throw new RangeError(`${what} ${body} is not a rigid body (it is a ${ctx.bodies.kind[slot]} built of particles)`);
+  return { i: ctx.bodies.particles[slot][0], slot, source };
+}
+
+function wake(ctx: StepContext, slot: number): void {
+  ctx.sleep.wakeBody(slot, ctx.bodies.particles[slot], ctx.particles);
+}
+
+export function bodyPose(ctx: StepContext, body: Handle): Pose {
+  const r = rigidOf(ctx, body);
+  return poseOf(ctx.particles, r.i, r.source);
+}
+
+export function setBodyPose(ctx: StepContext, body: Handle, x: number, y: number, angle: number): void {
+  const r = rigidOf(ctx, body);
+  setPose(ctx.particles, r.i, r.source, finite('x', x), finite('y', y), finite('angle', angle));
+  wake(ctx, r.slot);
+}
+
+export function bodyVelocity(ctx: StepContext, body: Handle): Vec2 {
+  const { i } = rigidOf(ctx, body);
+  return { x: ctx.particles.vx[i], y: ctx.particles.vy[i] };
+}
+
+export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: number): void {
+  const r = rigidOf(ctx, body);
+  const [x, y] = [finite('vx', vx), finite('vy', vy)];
+  ctx.particles.vx[r.i] = x;
+  ctx.particles.vy[r.i] = y;
+  wake(ctx, r.slot);
+}
+
+export function setBodyAngularVelocity(ctx: StepContext, body: Handle, w: number): void {
+  const r = rigidOf(ctx, body);
+  ctx.particles.omega[r.i] = finite('angularVelocity', w);
+  wake(ctx, r.slot);
+}
+
+/** A force (or with `impulse`, an impulse) at a world point, by default the centre of mass. */
+export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number, x: number | undefined, y: number | undefined, impulse: boolean): void {
+  const r = rigidOf(ctx, body);
+  const p = ctx.particles;
+  const names = impulse ? ['ix', 'iy'] : ['fx', 'fy'];
+  const [jx, jy] = [finite(names[0], fx), finite(names[1], fy)];
+  const [px, py] = [x === undefined ? p.x[r.i] : finite('x', x), y === undefined ? p.y[r.i] : finite('y', y)];
+  wake(ctx, r.slot);
+  if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
+  else applyForceAt(p, r.i, jx, jy, px, py);
+}
+
+export function applyBodyTorque(ctx: StepContext, body: Handle, torque: number): void {
+  const r = rigidOf(ctx, body);
+  ctx.particles.torque[r.i] += finite('torque', torque);
+  wake(ctx, r.slot);
+}
+
+export function bodyMassInfo(ctx: StepContext, body: Handle): MassInfo {
+  const r = rigidOf(ctx, body);
+  return { mass: r.source.mass, inertia: r.source.inertia, centerX: ctx.particles.x[r.i], centerY: ctx.particles.y[r.i] };
+}
+
+export function bodyType(ctx: StepContext, body: Handle): BodyTypeName {
+  return BODY_TYPES[ctx.rigidShapes.type[rigidOf(ctx, body).slot]];
+}
+
+export function setBodyType(ctx: StepContext, body: Handle, type: BodyTypeName): void {
+  const r = rigidOf(ctx, body);
+  const t = BODY_TYPES.indexOf(oneOf('type', type, BODY_TYPES)) as BodyType;
+  wake(ctx, r.slot);
+  ctx.rigidShapes.set(r.slot, r.i, r.source, t);
+  setType(ctx.particles, r.i, r.source, t);
+  ctx.collidersDirty = true;
+  topologyChanged(ctx);
+}
+
+/** One side of a joint: a rigid body (or a body of one particle), a particle, or the world (row −1). */
+export function jointSide(ctx: StepContext, body: Handle | null | undefined, particle: Handle | undefined, bodyName: string, particleName: string): JointSide {
+  if (body != null && particle !== undefined) throw new TypeError(`give ${bodyName} or ${particleName}, not both`);
+  if (particle !== undefined) return { row: ctx.particleIds.slotOf(particle, particleName), rigid: false };
+  if (body == null) return { row: -1, rigid: false };
+  const slot = ctx.bodies.slotOf(body, bodyName);
+  const rigid = ctx.rigidShapes.source(slot) !== undefined;
+  const members = ctx.bodies.particles[slot];
+  if (!rigid && members.length !== 1) throw new RangeError(`${bodyName} ${body} is built of ${members.length} particles: join it by one of them (${particleName})`);
+  return { row: members[0], rigid };
+}
