@@ -17,8 +17,9 @@ export abstract class PhysicsLinkElement extends LitElement {
   `;
 
   /**
-   * Anchor point in world units (with `y`): a rigid body is held at this point, a body of particles at its particle
-   * nearest to it. Without one, a rigid body at its centre, a body of particles at its particle nearest to the other.
+   * Anchor point in world units (with `y`; one without the other is no anchor): a rigid body is held at this point, a
+   * body of particles at its particle nearest to it. Without one, a rigid body at its centre, a body of particles at
+   * its particle nearest to the other.
    */
   @property({ type: Number, converter: numberAttribute }) x?: number;
   /** Anchor point's y (with `x`). */
@@ -47,12 +48,10 @@ export abstract class PhysicsLinkElement extends LitElement {
     return p ? { x: p[0], y: p[1] } : {};
   }
 
-  /** A point from two coordinate attributes: both or neither (one alone is reported as a missing other). */
+  /** A point from two coordinate attributes, each checked; one without the other is no point. */
   protected point(check: Checker, xName: string, x: unknown, yName: string, y: unknown): [number, number] | null {
     const px = check.number(xName, x);
     const py = check.number(yName, y);
-    const given = (v: unknown) => v !== undefined && v !== null;
-    if (given(x) !== given(y)) check.fail(given(x) ? yName : xName, '', `is required with ${given(x) ? xName : yName}`);
     return px !== undefined && py !== undefined ? [px, py] : null;
   }
 

@@ -178,7 +178,7 @@ export class EngineHost implements EngineApi {
       stepCount: w.stepCount,
       particleCount: w.particleCount,
       bodyCount: this.#frames.bodyCount,
-      linkCount: [...this.#bindings.links.values()].filter((l) => l.handles.length > 0).length,
+      linkCount: this.#bindings.activeLinks().length,
       brokenLinks: w.brokenLinkCount,
       published: this.#frames.published,
       skipped: this.#frames.skipped,

@@ -160,6 +160,32 @@ describe('fault recovery', () => {
     expect(uncaught.seen).to.deep.equal([]);
   });
 
+  it('a turning rigid box resumes at the angle it was drawn at last (not the snapshot\'s, up to a second older) and keeps turning', async () => {
+    // 90°/s: a snapshot a second old would be 90° behind.
+    const s = await mountScene('width="30" height="30" gravity="0 0"', '<physics-box id="crate" x="15" y="15" width="4" height="1" angular-velocity="90"></physics-box>');
+    const box = s.querySelector('physics-box')!;
+    let angleAtError = Number.NaN;
+    let angleAtResume: Promise<number> | null = null;
+    s.addEventListener('physics-error', () => {
+      angleAtError = box.angle;
+      angleAtResume = s.ready.then(() => box.angle);
+    });
+    await waitFor(() => box.angle > 150, 'the box to turn past 150°');
+    await s._debugFault('throw');
+    await waitFor(() => errors.length === 1, 'physics-error');
+    const after = await angleAtResume!;
+    await s.ready;
+    expect(angleAtError).to.be.above(150);
+    expect(Math.abs(after - angleAtError), `${after}° after the restart, ${angleAtError}° at the kill`).to.be.below(10);
+    // Still turning, about its centre, at the same rate (its angular velocity came back from the two newest frames).
+    const t0 = s.stepCount;
+    await waitFor(() => box.angle > after + 45 && s.stepCount > t0 + 20, 'the box to keep turning');
+    expect((box.angle - after) / ((s.stepCount - t0) / 60)).to.be.closeTo(90, 15);
+    expect(box.x).to.be.closeTo(15, 0.01);
+    expect(box.y).to.be.closeTo(15, 0.01);
+    expect(uncaught.seen).to.deep.equal([]);
+  });
+
   it('markup changed after the last snapshot still applies after the restore; untouched bodies keep their place', async () => {
     const s = await mountScene(ATTRS, `${BOX}
       <physics-circle id="ball" x="5" y="1" radius="0.5"></physics-circle>

@@ -8,24 +8,36 @@ describe('<physics-scene> pointer drag', () => {
   let scene: PhysicsSceneElement | null = null;
   afterEach(() => unmount(scene));
 
-  it('drags a body with the pointer and throws it on release', async () => {
-    scene = await mount('width="10" height="10" gravity="0 0" paused', `<physics-box id="crate" x="3" y="5" width="1" height="1"></physics-box>`);
+  it('drags a rigid body by the pressed point and throws it on release: it flies on in a straight line, spinning', async () => {
+    // No walls: nothing in its way once thrown.
+    scene = await mount('width="10" height="10" gravity="0 0" bounds="none" paused', `<physics-box id="crate" x="3" y="5" width="1" height="1"></physics-box>`);
     const crate = scene.querySelector<PhysicsBoxElement>('#crate')!;
+    // The point of the crate under the pointer: pressed 0.2 right of and 0.1 below its centre.
+    const held = () => {
+      const a = (crate.angle * Math.PI) / 180;
+      return { x: crate.x + 0.2 * Math.cos(a) - 0.1 * Math.sin(a), y: crate.y + 0.2 * Math.sin(a) + 0.1 * Math.cos(a) };
+    };
     // 3.8 units in 20 moves of 2 steps: the pointer moves at 5.7 units/s.
     await steppedDrag(scene, [3.2, 5.1], [7, 5.1], 20, 2);
-    const atRelease = { x: crate.x, y: crate.y };
-    // The crate followed the pointer to the right, held near where it was taken (0.2 right of and 0.1 below its centre).
-    expect(atRelease.x).to.be.within(6, 7.1);
-    expect(atRelease.y).to.be.closeTo(5, 0.3);
+    // The crate followed the pointer to the right, held at the pressed point (softly: within a spring's swing of it).
+    const atRelease = { x: crate.x, y: crate.y, angle: crate.angle };
+    expect(held().x).to.be.closeTo(7, 0.15);
+    expect(held().y).to.be.closeTo(5.1, 0.15);
+    expect(atRelease.x).to.be.above(6);
     pointerAt(scene, 'pointerup', 7, 5.1);
-    // Thrown: it flies on with the speed the drag gave it (no gravity, no friction in the air), straight on.
-    await scene.step(15);
-    expect(crate.x - atRelease.x, 'distance flown in 0.25 s').to.be.within(0.5, 2);
-    expect(crate.y).to.be.closeTo(5, 0.3);
-    const x = crate.x;
-    await scene.step(15);
-    // Still flying at about the same speed (before it reaches the wall at x = 10).
-    expect(crate.x - x).to.be.closeTo(x - atRelease.x, 0.2);
+    // Thrown: it flies on with the speed the drag gave it (no gravity, no friction in the air), in a straight line at
+    // a steady speed, and the pull off its centre set it spinning, steadily.
+    const samples = [atRelease];
+    for (let k = 0; k < 2; k++) {
+      await scene.step(15);
+      samples.push({ x: crate.x, y: crate.y, angle: crate.angle });
+    }
+    const [a, b, c] = samples;
+    expect(b.x - a.x, 'distance flown in 0.25 s').to.be.within(0.5, 2);
+    expect(c.x - b.x).to.be.closeTo(b.x - a.x, 1e-6);
+    expect(c.y - b.y).to.be.closeTo(b.y - a.y, 1e-6);
+    expect(c.angle - b.angle).to.be.closeTo(b.angle - a.angle, 1e-6);
+    expect(Math.abs(b.angle - a.angle), 'degrees turned in 0.25 s').to.be.above(1);
   });
 
   it('a press on empty space moves nothing; a drag pulls a cloth particle', async () => {

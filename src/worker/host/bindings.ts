@@ -353,11 +353,19 @@ export class Bindings {
     l.drawn = { a: A.drawn, b: B.drawn, pivot: false };
   }
 
-  /** An engine joint (World.addJoint) between the ends. */
+  /**
+   * An engine joint (World.addJoint) between the ends. A distance limited on one side only is free on the other (at
+   * least `lower`; at most `upper`, a rope); a spring of stiffness 0 pulls with no force (drawn, nothing made).
+   */
   #joint(l: LinkRecord, d: JointLink, a: BodyRecord, b: BodyRecord | null): void {
     const type = d.joint ?? 'distance';
     const single = type === 'revolute' || type === 'weld' || type === 'prismatic';
-    const [A, B] = this.#ends(d, a, b, single);
+    const [A, B, anchor] = this.#ends(d, a, b, single);
+    const together = A.at.x === B.at.x && A.at.y === B.at.y;
+    l.drawn = { a: A.drawn, b: B.drawn, pivot: PIVOTS.has(type) || (type === 'distance' && together) };
+    if (type === 'spring' && d.stiffness === 0) return;
+    const limited = type === 'distance' || type === 'prismatic';
+    const oneSided = type === 'distance' && (d.lower === undefined) !== (d.upper === undefined);
     l.handles = [
       this.world.addJoint({
         type,
@@ -365,7 +373,7 @@ export class Bindings {
         particleA: A.particle,
         b: B.body ?? null,
         particleB: B.particle,
-        anchor: single ? B.at : undefined,
+        anchor: single ? anchor : undefined,
         anchorA: single ? undefined : A.at,
         anchorB: single ? undefined : B.at,
         axis: d.axis,
@@ -373,8 +381,8 @@ export class Bindings {
         upperAngle: d.upperAngle,
         motorSpeed: d.motorSpeed,
         maxMotorTorque: d.maxMotorTorque,
-        lower: d.lower,
-        upper: d.upper,
+        lower: !limited ? undefined : oneSided ? (d.lower ?? 0) : d.lower,
+        upper: !limited ? undefined : oneSided ? (d.upper ?? Infinity) : d.upper,
         length: d.length,
         stiffness: d.stiffness,
         damping: d.damping,
@@ -382,24 +390,24 @@ export class Bindings {
         collideConnected: d.collideConnected,
       }),
     ];
-    const together = A.at.x === B.at.x && A.at.y === B.at.y;
-    l.drawn = { a: A.drawn, b: B.drawn, pivot: PIVOTS.has(type) || (type === 'distance' && together) };
   }
 
   /**
-   * Where a link's ends are. With anchors (x, y for both ends; x1, y1 and x2, y2 for each), a rigid body at the
-   * anchor itself, a body of particles at its particle nearest to it, the world at the anchor. Without, a rigid body
-   * at its centre of mass and a body of particles at its particle nearest to the other end (the two bodies' nearest
-   * particles), the world where a's end is. `single`: one anchor for both ends (b's is where a's end is).
+   * Where a link's ends are, and the one anchor of a joint that has one (`single`: revolute, weld, prismatic). With
+   * anchors (x, y for both ends; x1, y1 and x2, y2 for each), a rigid body at the anchor itself, a body of particles at
+   * its particle nearest to it, the world at the anchor. Without, a rigid body at its centre of mass and a body of
+   * particles at its particle nearest to the other end (the two bodies' nearest particles), the world where a's end
+   * is; a single anchor is then where a's end is.
    */
-  #ends(d: JointLink | Extract<LinkDescription, { type: 'spring' }>, a: BodyRecord, b: BodyRecord | null, single: boolean): [End, End] {
+  #ends(d: JointLink | Extract<LinkDescription, { type: 'spring' }>, a: BodyRecord, b: BodyRecord | null, single: boolean): [End, End, Vec2] {
     const anchor = d.x !== undefined && d.y !== undefined ? { x: d.x, y: d.y } : null;
     const j = d as JointLink;
     const first = j.x1 !== undefined && j.y1 !== undefined ? { x: j.x1, y: j.y1 } : anchor;
     const second = j.x2 !== undefined && j.y2 !== undefined ? { x: j.x2, y: j.y2 } : anchor;
     const A = this.#end(a, single ? anchor : first, this.world.bodyCentroid((b ?? a).handle!));
-    const B = this.#end(b, single ? A.at : second, A.at);
-    return [A, B];
+    const at = single ? (anchor ?? A.at) : A.at;
+    const B = this.#end(b, single ? at : second, A.at);
+    return [A, B, at];
   }
 
   /** The end on body r (null: the world) at `anchor`, or without one toward the point `toward`. */
