@@ -8,8 +8,8 @@
 // and core depth + r_A + r_B when they overlap.
 import { core, coreDistance, intersect, supportAB, supportAX, supportAY, supportBX, supportBY } from './gjk.js';
 import { Simplex, type Penetration } from './results.js';
-import { shapeSize, type Shape } from './shape.js';
-import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, mid, onFace } from './scratch.js';
+import { shapeSize, supportIndex, vertexX, vertexY, type Shape } from './shape.js';
+import { ax, ay, bx, by, face, faceEnds, faceMidpoint, load, mid, neighbourOnLine } from './scratch.js';
 
 /** Convergence: the support along the closest edge's normal is within this fraction of the shapes' size of it. */
 const EPA_TOLERANCE = 1e-10;
@@ -185,35 +185,26 @@ function polytope(a: Shape, b: Shape, simplex: Simplex, out: Penetration): boole
 function parallelFaces(a: Shape, b: Shape, out: Penetration): void {
   const nx = out.normalX;
   const ny = out.normalY;
+  const va = supportIndex(a, nx, ny);
+  const vb = supportIndex(b, -nx, -ny);
+  if (!hasFace(a, va, nx, ny) || !hasFace(b, vb, nx, ny)) return;
   load(a, b);
-  const na = a.count;
-  const nb = b.count;
-  let va = 0;
-  let vb = 0;
-  let hiA = -Infinity;
-  let loB = Infinity;
-  for (let k = 0; k < na; k++) {
-    const d = nx * ax[k] + ny * ay[k];
-    if (d > hiA) {
-      hiA = d;
-      va = k;
-    }
-  }
-  for (let k = 0; k < nb; k++) {
-    const d = nx * bx[k] + ny * by[k];
-    if (d < loB) {
-      loB = d;
-      vb = k;
-    }
-  }
-  if (!onFace(ax, ay, na, va, nx, ny) || !onFace(bx, by, nb, vb, -nx, -ny)) return;
-  faceEnds(ax, ay, na, va, va, nx, ny);
+  faceEnds(ax, ay, a.count, va, va, nx, ny);
   const a0 = face.first;
   const a1 = face.last;
-  faceEnds(bx, by, nb, vb, vb, -nx, -ny);
+  faceEnds(bx, by, b.count, vb, vb, nx, ny);
   faceMidpoint(a0, a1, face.first, face.last, nx, ny);
   out.pointX = 0.5 * (mid.ax + mid.bx);
   out.pointY = 0.5 * (mid.ay + mid.by);
+}
+
+/** Whether vertex v of a shape has a neighbour on the line through it with normal ±(nx, ny) (read through the view). */
+function hasFace(s: Shape, v: number, nx: number, ny: number): boolean {
+  const n = s.count;
+  if (n < 2) return false;
+  const prev = v === 0 ? n - 1 : v - 1;
+  const next = v + 1 === n ? 0 : v + 1;
+  return neighbourOnLine(vertexX(s, v), vertexY(s, v), vertexX(s, prev), vertexY(s, prev), vertexX(s, next), vertexY(s, next), nx, ny);
 }
 
 /**

@@ -88,12 +88,15 @@ export function faceEnds(px: Float64Array, py: Float64Array, n: number, first: n
 /** Whether vertex v of polygon P (n vertices) has a neighbour on the line through it with normal ±(nx, ny): a face. */
 export function onFace(px: Float64Array, py: Float64Array, n: number, v: number, nx: number, ny: number): boolean {
   if (n < 2) return false;
-  const x = px[v];
-  const y = py[v];
-  const rounding = FACE_ROUNDING * (Math.abs(x) + Math.abs(y));
   const prev = v === 0 ? n - 1 : v - 1;
   const next = v + 1 === n ? 0 : v + 1;
-  return onFaceLine(px[prev] - x, py[prev] - y, rounding, nx, ny) || onFaceLine(px[next] - x, py[next] - y, rounding, nx, ny);
+  return neighbourOnLine(px[v], py[v], px[prev], py[prev], px[next], py[next], nx, ny);
+}
+
+/** Whether (px, py) or (qx, qy) lies on the line through (x, y) with normal ±(nx, ny), within the face tolerance. */
+export function neighbourOnLine(x: number, y: number, px: number, py: number, qx: number, qy: number, nx: number, ny: number): boolean {
+  const rounding = FACE_ROUNDING * (Math.abs(x) + Math.abs(y));
+  return onFaceLine(px - x, py - y, rounding, nx, ny) || onFaceLine(qx - x, qy - y, rounding, nx, ny);
 }
 
 /** Result registers of faceMidpoint: a point of A's outline and the point of B's outline opposite it. */
