@@ -1,13 +1,14 @@
-// The page's side of the engine: starts the comlink worker (or, with worker="none" or when no Worker can be made, an
-// EngineHost on the main thread), gives every call a timeout, and keeps the two newest published frames for the
-// renderer. Both modes expose the same promise-returning EngineApi.
-import * as Comlink from 'comlink';
+// The page's side of the engine: a world in one of the page's pooled engine workers (or, with worker="none" or when no
+// Worker can be made, an EngineHost on the main thread), with a timeout on every call, and the two newest published
+// frames kept for the renderer. Both modes expose the same promise-returning EngineApi.
 import { EngineHost } from './engine-host.js';
 import { TripleBuffer } from './triple-buffer.js';
 import { TripleBufferPublisher } from './publishers.js';
 import { F, HEADER, POSE, frameLength, poseOffset, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
-import type { WorkerEndpoint } from './engine.worker.js';
+import { TimeoutError, WorkerPool, defaultPoolSize, type WorldLink } from './pool.js';
 import { track } from './resources.js';
+
+export { TimeoutError } from './pool.js';
 
 export type Remote = { [K in keyof EngineApi]: (...args: Parameters<EngineApi[K]>) => Promise<ReturnType<EngineApi[K]>> };
 
@@ -16,17 +17,20 @@ export interface ClientOptions {
   worker?: 'auto' | 'none';
   /** Milliseconds a call (and the worker's start) may take before it fails. Default 8000. */
   timeout?: number;
-  /** Makes the worker (tests replace it). */
+  /** Makes the workers (tests replace it): the page's pool for this factory is used. */
   createWorker?: () => Worker;
+  /** The pool to open the world in (default: the page's pool for `createWorker`). */
+  pool?: WorkerPool;
   onTopology?: (topology: Topology) => void;
   onEvents?: (data: Float64Array, count: number) => void;
   /** Problems during start: the fallback to the main thread (and a worker death when there is no onDeath). */
   onError?: (message: string) => void;
   /**
    * The worker died after start: an uncaught exception in it (`error`), a message it sent that cannot be read
-   * (`messageerror`), a call it did not answer in time (hung or terminated), or a failed probe(). Called once; by
-   * then every pending call has failed with a WorkerDiedError (the timed-out one with its TimeoutError), the worker
-   * is terminated and the client disposed. The owner starts a new client if it wants one.
+   * (`messageerror`), a call it did not answer in time (hung or terminated), or a failed probe() — of this world or
+   * of any other world in the same worker. Called once; by then every pending call has failed with a
+   * WorkerDiedError (the timed-out one with its TimeoutError), the worker is terminated and the client disposed. The
+   * owner starts a new client if it wants one.
    */
   onDeath?: (reason: string) => void;
 }
@@ -36,9 +40,33 @@ export function createEngineWorker(): Worker {
   return new Worker(new URL('./engine.worker.js', import.meta.url), { type: 'module' });
 }
 
-/** A call that got no answer within the timeout; the message names the method. */
-export class TimeoutError extends Error {
-  override name = 'TimeoutError';
+/** The most engine workers the page's scenes share (null: defaultPoolSize()). */
+let workerLimit: number | null = null;
+
+/** The most engine workers the page's pools make: `max(1, min(2, hardwareConcurrency − 1))` unless set. */
+export function maxWorkers(): number {
+  return workerLimit ?? defaultPoolSize();
+}
+
+/** Sets the most engine workers the page's pools make (null: the default). Workers already made stay. */
+export function setMaxWorkers(limit: number | null): void {
+  if (limit !== null && (typeof limit !== 'number' || !Number.isInteger(limit) || limit < 1)) {
+    throw new RangeError(`maxWorkers must be an integer of at least 1 (or null for the default), got ${String(limit)}`);
+  }
+  workerLimit = limit;
+}
+
+/** The page's pools, one per worker factory (a page normally has one). */
+const pools = new WeakMap<() => Worker, WorkerPool>();
+
+/** The page's pool of engine workers made by `createWorker`. */
+export function pageWorkers(createWorker: () => Worker = createEngineWorker): WorkerPool {
+  let pool = pools.get(createWorker);
+  if (!pool) {
+    pool = new WorkerPool({ createWorker, size: maxWorkers });
+    pools.set(createWorker, pool);
+  }
+  return pool;
 }
 
 /** A call that was pending (or made) when the worker died; the message names the method and the cause. */
@@ -89,8 +117,8 @@ export class EngineClient {
   private deathReason: string | null = null;
   /** Pending calls: how to fail each, and its method (for the error message). */
   private readonly pending = new Map<(error: Error) => void, string>();
-  /** Terminates the worker behind everyone's back (test hook). */
-  private killRaw: (() => void) | null = null;
+  /** The pool world this client talks to (worker mode). */
+  private link: WorldLink | null = null;
 
   private constructor(
     /** 'worker' or 'main': where the engine runs. */
@@ -123,54 +151,16 @@ export class EngineClient {
 
   private static async startWorker(options: ClientOptions): Promise<EngineClient> {
     if (typeof Worker !== 'function') throw new Error('Worker is not available');
-    const worker = (options.createWorker ?? createEngineWorker)();
-    track('workers', 1);
-    let terminated = false;
-    const terminate = () => {
-      if (terminated) return;
-      terminated = true;
-      worker.terminate();
-      track('workers', -1);
-    };
-    const remote = Comlink.wrap<WorkerEndpoint>(worker);
-    const channel = new MessageChannel();
+    const pool = options.pool ?? pageWorkers(options.createWorker);
     let client: EngineClient | null = null;
-    let failed: ((error: Error) => void) | null = null;
-    const onError = (event: ErrorEvent | MessageEvent) => {
-      const message = 'message' in event && typeof event.message === 'string' && event.message ? event.message : 'the worker script failed to load';
-      if (failed) failed(new Error(message));
-      if (client) {
-        // Handled here: not also reported as an uncaught error of the page.
-        event.preventDefault();
-        client.die(event.type === 'messageerror' ? 'a message from the worker could not be read' : `uncaught error in the worker: ${message}`);
-      }
-    };
-    worker.addEventListener('error', onError);
-    worker.addEventListener('messageerror', onError);
-    const cleanup = () => {
-      worker.removeEventListener('error', onError);
-      worker.removeEventListener('messageerror', onError);
-      remote[Comlink.releaseProxy]();
-      channel.port1.close();
-      terminate();
-    };
-    try {
-      const ready = remote.init(Comlink.transfer(channel.port2, [channel.port2]), typeof SharedArrayBuffer === 'function' && globalThis.crossOriginIsolated === true);
-      const info = await new Promise<{ transport: Transport }>((resolve, reject) => {
-        failed = reject;
-        const timer = setTimeout(() => reject(new TimeoutError(`the worker did not answer within ${options.timeout ?? 8000} ms`)), options.timeout ?? 8000);
-        ready.then(resolve, reject).finally(() => clearTimeout(timer));
-      });
-      failed = null;
-      client = new EngineClient('worker', info.transport, (method, args) => remote.invoke(method, args), cleanup, options);
-      client.killRaw = () => worker.terminate();
-      const c = client;
-      channel.port1.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data, channel.port1);
-      return client;
-    } catch (error) {
-      cleanup();
-      throw error;
-    }
+    let diedEarly: string | null = null;
+    const link = await pool.open({ died: (reason) => (client ? client.die(reason) : (diedEarly = reason)) }, options.timeout ?? 8000);
+    client = new EngineClient('worker', link.transport, (method, args) => link.invoke(method, args), () => link.close(), options);
+    client.link = link;
+    const c = client;
+    link.port.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data, link.port);
+    if (diedEarly !== null) c.die(diedEarly);
+    return client;
   }
 
   private static startMain(options: ClientOptions): EngineClient {
@@ -208,8 +198,9 @@ export class EngineClient {
       };
       const timer = setTimeout(() => {
         fail(new TimeoutError(`${method}() did not answer within ${timeout} ms`));
-        // A worker that does not answer is hung or gone: nothing else it was asked will be answered either.
-        if (this.mode === 'worker') this.die(hung ?? `${method}() did not answer within ${timeout} ms`);
+        // A worker that does not answer is hung or gone: nothing else it was asked will be answered either, for this
+        // world or any other in it.
+        if (this.mode === 'worker') this.workerFailed(hung ?? `${method}() did not answer within ${timeout} ms`);
       }, timeout);
       this.pending.set(fail, method);
       track('pendingCalls', 1);
@@ -242,6 +233,17 @@ export class EngineClient {
     this.dispose();
     if (this.options.onDeath) this.options.onDeath(reason);
     else this.options.onError?.(`engine worker died: ${reason}`);
+  }
+
+  /** The worker is hung or gone: every world in it dies (this one too), or just this client when it has no pool world. */
+  private workerFailed(reason: string): void {
+    if (this.link && !this.disposed) this.link.fail(reason);
+    else this.die(reason);
+  }
+
+  /** Which pool worker holds this world (a serial number unique on the page), or null on the main thread. */
+  get worker(): number | null {
+    return this.link?.worker ?? null;
   }
 
   /** Why the worker died, or null. */
@@ -286,9 +288,12 @@ export class EngineClient {
     return { topology: f[F.topology], stepCount: f[F.stepCount], time: f[F.time], positions, velocities, poses, spins };
   }
 
-  /** @internal Test hook: terminates the worker from outside and tells no one (as if the browser had killed it). */
+  /**
+   * @internal Test hook: terminates the worker from outside and tells no one (as if the browser had killed it); every
+   * world in it stops.
+   */
   debugTerminate(): void {
-    this.killRaw?.();
+    this.link?.kill();
   }
 
   private receive(message: PortMessage, port: MessagePort | null): void {

@@ -2,37 +2,10 @@
 // frame port, the host) on this page. What the client does with answers, frames, silence and errors, without a real
 // worker.
 import { expect } from '@open-wc/testing';
-import * as Comlink from 'comlink';
 import { EngineClient, EngineStoppedError, TimeoutError, WorkerDiedError } from '../../src/worker/client.js';
-import { workerEndpoint } from '../../src/worker/engine.worker.js';
+import { FakeWorker } from './fake-worker.js';
 import type { HostScene, Topology } from '../../src/worker/protocol.js';
 import { waitFor } from '../elements/helpers.js';
-
-/** Looks like a Worker to the client. `mute` drops every message from then on (a hung worker). */
-class FakeWorker extends EventTarget {
-  mute = false;
-  terminated = false;
-  readonly port: MessagePort;
-
-  constructor(answer: boolean) {
-    super();
-    const channel = new MessageChannel();
-    this.port = channel.port1;
-    this.port.onmessage = (e) => {
-      if (!this.mute) this.dispatchEvent(new MessageEvent('message', { data: e.data }));
-    };
-    if (answer) Comlink.expose(workerEndpoint(), channel.port2);
-  }
-
-  postMessage(data: unknown, transfer: Transferable[] = []): void {
-    if (!this.mute) this.port.postMessage(data, transfer);
-  }
-
-  terminate(): void {
-    this.terminated = true;
-    this.port.close();
-  }
-}
 
 const SCENE: HostScene = {
   world: {},
@@ -176,7 +149,9 @@ describe('EngineClient (fake worker)', () => {
     client.dispose();
     expect(await pending).to.be.instanceOf(EngineStoppedError);
     expect(await client.api.step(1).catch((e) => e)).to.be.instanceOf(EngineStoppedError);
-    expect(worker.terminated).to.equal(true);
-    await waitFor(() => !client.alive, 'disposed');
+    expect(client.alive).to.equal(false);
+    // Its worker, holding no other world, is terminated after the pool's grace period.
+    expect(worker.terminated).to.equal(false);
+    await waitFor(() => worker.terminated, 'the empty worker to be terminated');
   });
 });

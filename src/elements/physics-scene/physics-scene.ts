@@ -4,6 +4,7 @@
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
 import type { DrawHook } from '../../render/renderer.js';
+import { maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import { CollisionEventsController } from './collisions.js';
@@ -71,6 +72,18 @@ export class PhysicsSceneElement extends LitElement {
   /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error`. */
   static callTimeout = 8000;
 
+  /**
+   * The most engine workers the page's scenes share: each scene is a world in the least-loaded one. Default
+   * `max(1, min(2, navigator.hardwareConcurrency − 1))`; set an integer ≥ 1 (workers already made stay), or null
+   * for the default.
+   */
+  static get maxWorkers(): number {
+    return maxWorkers();
+  }
+  static set maxWorkers(limit: number | null) {
+    setMaxWorkers(limit);
+  }
+
   /** World units across the view. Default 16. */
   @property({ type: Number }) width = 16;
   /** World units down the view. Default 9. */
@@ -128,6 +141,8 @@ export class PhysicsSceneElement extends LitElement {
   /** @internal The engine from start to stop, and ready. */
   private readonly session: EngineSession = new EngineSession(this, {
     connect: () => this.connect(),
+    nearby: () => this.visibility.whenNear(),
+    demand: () => this.visibility.demand(),
     scene: {
       prepare: () => {
         this.stage.open(this.renderRoot.querySelector<HTMLElement>('.stage')!, this.onScreen);
@@ -213,8 +228,12 @@ export class PhysicsSceneElement extends LitElement {
     engine: this.session,
   });
 
-  /** Resolves when the engine has loaded the scene (after each start). */
+  /**
+   * Resolves when the engine has loaded the scene (after each start). Asking for it starts a scene that waits to come
+   * near the viewport.
+   */
   get ready(): Promise<void> {
+    this.visibility.demand();
     return this.session.ready;
   }
 

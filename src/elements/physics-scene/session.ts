@@ -8,7 +8,7 @@ import type { EngineApi, HostError, HostScene } from '../../worker/protocol.js';
 /** What a scene uses of an engine client (an EngineClient; unit tests pass fakes). */
 export type Engine = Pick<
   EngineClient,
-  'mode' | 'transport' | 'api' | 'died' | 'latestStep' | 'frames' | 'topology' | 'poll' | 'pose' | 'lastFrame' | 'frameAt' | 'synced' | 'probe' | 'debugTerminate' | 'dispose'
+  'mode' | 'transport' | 'worker' | 'api' | 'died' | 'latestStep' | 'frames' | 'topology' | 'poll' | 'pose' | 'lastFrame' | 'frameAt' | 'synced' | 'probe' | 'debugTerminate' | 'dispose'
 >;
 
 /** Makes an engine: a worker, or the main-thread fallback. */
@@ -45,6 +45,13 @@ export interface SessionScene {
 
 export interface SessionOptions {
   connect: EngineFactory;
+  /**
+   * What a start waits for first: the scene near the viewport (VisibilityController.whenNear), so off-screen scenes
+   * make no canvas and no world until a reader comes near. Default: nothing.
+   */
+  nearby?: () => Promise<void>;
+  /** A caller wants the engine (whenReady(), running()): the start waits for nothing (VisibilityController.demand). */
+  demand?: () => void;
   /**
    * What a start waits for before each piece of its heavy work: before the canvas (p5) by default afterPaint(), before
    * the engine nextTask(). So the script's evaluation, the page's first paint, each scene's canvas and each scene's
@@ -155,8 +162,9 @@ export class EngineSession implements ReactiveController, EngineCommands {
     return !this.current && !this.starting;
   }
 
-  /** The engine once ready, or null when there is none (never started, given up). */
+  /** The engine once ready, or null when there is none (never started, given up). A start waiting to be near goes on. */
   async whenReady(): Promise<Engine | null> {
+    this.options.demand?.();
     await this.ready;
     return this.current;
   }
@@ -169,8 +177,9 @@ export class EngineSession implements ReactiveController, EngineCommands {
   }
 
   /**
-   * Makes an engine and loads the scene into it, after the page's next paint and in tasks of their own: the canvas
-   * (p5), then the engine. A stop() meanwhile makes this start stale: it cleans up and ends.
+   * Makes an engine and loads the scene into it once the scene is near the viewport, after the page's next paint and
+   * in tasks of their own: the canvas (p5), then the engine. A stop() meanwhile makes this start stale: it cleans up
+   * and ends.
    */
   async start(): Promise<void> {
     const gen = ++this.gen;
@@ -180,6 +189,8 @@ export class EngineSession implements ReactiveController, EngineCommands {
     const current = () => gen === this.gen && this.host.isConnected;
     try {
       await this.host.updateComplete;
+      if (!current()) return;
+      await this.options.nearby?.();
       if (!current()) return;
       await wait('canvas');
       if (!current()) return;

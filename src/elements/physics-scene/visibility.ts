@@ -1,4 +1,7 @@
 // When the scene may run: on screen (IntersectionObserver) with the page visible (Page Visibility) and not paused.
+// When it may start: once it comes near the viewport (within about a viewport's height or width of it, a second
+// observer with a root margin), or once a script asks for it (ready, step(), …): a post with many scenes starts only
+// those a reader is about to see.
 // With `prefers-reduced-motion: reduce` it starts paused and shows a play control; Space toggles pause while the
 // scene has focus (it is focusable, with a role, a label and its key shortcuts, unless the page set its own; the other
 // keys are the keyboard controller's).
@@ -10,8 +13,14 @@ export interface VisibilityHost extends ReactiveControllerHost, HTMLElement {
   paused: boolean;
 }
 
-/** Something that reports whether an element is on screen (an IntersectionObserver), until disconnected. */
-export type IntersectionWatch = (target: Element, changed: (onScreen: boolean) => void) => { disconnect(): void };
+/**
+ * Something that reports whether an element is on screen (an IntersectionObserver), until disconnected; with
+ * `margin` (a CSS rootMargin), whether it is within that margin of the viewport.
+ */
+export type IntersectionWatch = (target: Element, changed: (onScreen: boolean) => void, margin?: string) => { disconnect(): void };
+
+/** How near the viewport a scene starts: one viewport's size around it. */
+export const NEAR_MARGIN = '100% 100% 100% 100%';
 
 export interface VisibilityOptions {
   /** On screen or the page's visibility changed. */
@@ -20,15 +29,20 @@ export interface VisibilityOptions {
   label(): string;
   /** Watches the element on screen; default: an IntersectionObserver (none where there is no IntersectionObserver). */
   intersection?: IntersectionWatch | null;
+  /** Watches the element come near the viewport (called with NEAR_MARGIN); default: as `intersection`'s default. */
+  nearby?: IntersectionWatch | null;
   /** Whether the user asks for reduced motion; default: the `prefers-reduced-motion` media query. */
   reducedMotion?: () => boolean;
 }
 
-const intersectionObserver: IntersectionWatch = (target, changed) => {
-  const io = new IntersectionObserver((entries) => {
-    const e = entries[entries.length - 1];
-    if (e) changed(e.isIntersecting);
-  });
+const intersectionObserver: IntersectionWatch = (target, changed, margin) => {
+  const io = new IntersectionObserver(
+    (entries) => {
+      const e = entries[entries.length - 1];
+      if (e) changed(e.isIntersecting);
+    },
+    margin ? { rootMargin: margin } : undefined,
+  );
   io.observe(target);
   return io;
 };
@@ -44,17 +58,25 @@ export class VisibilityController implements ReactiveController {
   private pageVisible = typeof document === 'undefined' || document.visibilityState !== 'hidden';
   private watch: { disconnect(): void } | null = null;
   private watching = false;
+  /** Near the viewport once (or asked for by a script) since connected: the scene may start. */
+  private near = false;
+  private nearWatch: { disconnect(): void } | null = null;
+  /** Starts waiting for the scene to come near. */
+  private nearWaiters: (() => void)[] = [];
   private motionChecked = false;
   /** play() was called: the page wants motion, reduced-motion preference or not. */
   private playRequested = false;
   private readonly intersection: IntersectionWatch | null;
+  private readonly nearby: IntersectionWatch | null;
   private readonly reducedMotion: () => boolean;
 
   constructor(
     private readonly host: VisibilityHost,
     private readonly options: VisibilityOptions,
   ) {
-    this.intersection = options.intersection !== undefined ? options.intersection : typeof IntersectionObserver === 'function' ? intersectionObserver : null;
+    const observer = typeof IntersectionObserver === 'function' ? intersectionObserver : null;
+    this.intersection = options.intersection !== undefined ? options.intersection : observer;
+    this.nearby = options.nearby !== undefined ? options.nearby : observer;
     this.reducedMotion = options.reducedMotion ?? prefersReducedMotion;
     host.addController(this);
     host.addEventListener('keydown', this.onKeyDown);
@@ -68,6 +90,20 @@ export class VisibilityController implements ReactiveController {
   /** Not paused, on screen and the page visible (the engine steps). */
   get running(): boolean {
     return !this.host.paused && this.onScreen;
+  }
+
+  /**
+   * Resolves once the scene is near the viewport, or a script asked for it (demand()), or it left the document (the
+   * start waiting on it is then stale). At once where there is no IntersectionObserver.
+   */
+  whenNear(): Promise<void> {
+    if (this.near || !this.host.isConnected) return Promise.resolve();
+    return new Promise((resolve) => this.nearWaiters.push(resolve));
+  }
+
+  /** A script wants the scene (ready, step(), …): it starts wherever it is. */
+  demand(): void {
+    this.nowNear();
   }
 
   /** Runs the scene (clears `paused`); from now on a reduced-motion preference does not pause it. */
@@ -96,6 +132,9 @@ export class VisibilityController implements ReactiveController {
 
   hostDisconnected(): void {
     this.setWatching(false);
+    // Back in the document it waits to come near again; starts waiting now are stale and let go.
+    this.near = false;
+    this.releaseNear();
   }
 
   hostUpdate(): void {
@@ -125,6 +164,14 @@ export class VisibilityController implements ReactiveController {
         });
         track('observers', 1);
       }
+      if (!this.near) {
+        if (this.nearby) {
+          this.nearWatch = this.nearby(this.host, (near) => near && this.nowNear(), NEAR_MARGIN);
+          track('observers', 1);
+          // A watch that answered at once.
+          if (this.near) this.stopNearWatch();
+        } else this.nowNear();
+      }
       this.pageVisible = document.visibilityState !== 'hidden';
       document.addEventListener('visibilitychange', this.onVisibility);
       track('listeners', 1);
@@ -134,9 +181,28 @@ export class VisibilityController implements ReactiveController {
         this.watch = null;
         track('observers', -1);
       }
+      this.stopNearWatch();
       document.removeEventListener('visibilitychange', this.onVisibility);
       track('listeners', -1);
     }
+  }
+
+  /** Near for good (until disconnected): the near watch ends, the starts waiting go on. */
+  private nowNear(): void {
+    this.near = true;
+    this.stopNearWatch();
+    this.releaseNear();
+  }
+
+  private stopNearWatch(): void {
+    if (!this.nearWatch) return;
+    this.nearWatch.disconnect();
+    this.nearWatch = null;
+    track('observers', -1);
+  }
+
+  private releaseNear(): void {
+    for (const resolve of this.nearWaiters.splice(0)) resolve();
   }
 
   private readonly onVisibility = (): void => {

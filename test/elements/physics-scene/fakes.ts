@@ -74,6 +74,7 @@ type Answer = (...args: never[]) => unknown;
 export class FakeEngine implements Engine {
   mode: 'worker' | 'main' = 'worker';
   transport: Transport = 'transfer';
+  worker: number | null = 1;
   died: string | null = null;
   latestStep = 0;
   disposed = false;

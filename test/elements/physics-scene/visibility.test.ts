@@ -1,7 +1,7 @@
 // Visibility on its own: a fake intersection watch and a reduced-motion answer instead of the browser's. Off screen or
 // on a hidden page the scene does not run; reduced motion starts it paused with the play control; Space toggles.
 import { expect } from '@open-wc/testing';
-import { VisibilityController, type IntersectionWatch } from '../../../src/elements/physics-scene/visibility.js';
+import { NEAR_MARGIN, VisibilityController, type IntersectionWatch } from '../../../src/elements/physics-scene/visibility.js';
 import { liveResources } from '../../../src/worker/resources.js';
 import { makeHost, type FakeHost } from './fakes.js';
 
@@ -15,13 +15,25 @@ function rig(reducedMotion = false) {
     watching++;
     return { disconnect: () => void watching-- };
   };
+  let nearReport: ((near: boolean) => void) | null = null;
+  let nearWatching = 0;
+  const margins: (string | undefined)[] = [];
+  const nearby: IntersectionWatch = (target, changed, margin) => {
+    expect(target).to.equal(host);
+    nearReport = changed;
+    margins.push(margin);
+    nearWatching++;
+    return { disconnect: () => void nearWatching-- };
+  };
   let changes = 0;
-  const visibility = new VisibilityController(host, { changed: () => changes++, label: () => 'Crates falling', intersection, reducedMotion: () => reducedMotion });
+  const visibility = new VisibilityController(host, { changed: () => changes++, label: () => 'Crates falling', intersection, nearby, reducedMotion: () => reducedMotion });
   return {
-    host, visibility,
+    host, visibility, margins,
     changes: () => changes,
     watching: () => watching,
+    nearWatching: () => nearWatching,
     scroll: (onScreen: boolean) => report!(onScreen),
+    approach: (near: boolean) => nearReport!(near),
   };
 }
 
@@ -66,14 +78,68 @@ describe('VisibilityController', () => {
     const before = liveResources();
     document.body.append(host);
     expect(r.watching()).to.equal(1);
-    expect(liveResources().observers - before.observers).to.equal(1);
+    // The on-screen watch and, until the scene has come near, the near watch.
+    expect(r.nearWatching()).to.equal(1);
+    expect(liveResources().observers - before.observers).to.equal(2);
     expect(liveResources().listeners - before.listeners).to.equal(1);
     host.remove();
-    expect(r.watching()).to.equal(0);
+    expect([r.watching(), r.nearWatching()]).to.deep.equal([0, 0]);
     expect(liveResources()).to.deep.include({ observers: before.observers, listeners: before.listeners });
     // Hidden while out of the document: no one is told.
     document.dispatchEvent(new Event('visibilitychange'));
     expect(r.changes()).to.equal(1);
+  });
+
+  it('whenNear() waits until the scene comes within a viewport of the screen, then the near watch ends', async () => {
+    const r = rig();
+    host = r.host;
+    const before = liveResources().observers;
+    document.body.append(host);
+    expect(r.margins).to.deep.equal([NEAR_MARGIN]);
+    let near = false;
+    void r.visibility.whenNear().then(() => (near = true));
+    r.approach(false);
+    await Promise.resolve();
+    expect(near).to.equal(false);
+    r.approach(true);
+    await Promise.resolve();
+    expect(near).to.equal(true);
+    expect(r.nearWatching()).to.equal(0);
+    expect(liveResources().observers - before).to.equal(1);
+    // Near once is near for good while connected: far again, a new start does not wait.
+    r.scroll(false);
+    let again = false;
+    await r.visibility.whenNear().then(() => (again = true));
+    expect(again).to.equal(true);
+    // Out of the document and back: it waits to come near again.
+    host.remove();
+    document.body.append(host);
+    expect(r.nearWatching()).to.equal(1);
+    let third = false;
+    void r.visibility.whenNear().then(() => (third = true));
+    await Promise.resolve();
+    expect(third).to.equal(false);
+    r.approach(true);
+    await Promise.resolve();
+    expect(third).to.equal(true);
+  });
+
+  it('demand() (a script asks for the scene) ends the wait wherever it is; leaving the document lets a waiting start go', async () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    let near = false;
+    void r.visibility.whenNear().then(() => (near = true));
+    r.visibility.demand();
+    await Promise.resolve();
+    expect([near, r.nearWatching()]).to.deep.equal([true, 0]);
+    host.remove();
+    document.body.append(host);
+    let stale = false;
+    void r.visibility.whenNear().then(() => (stale = true));
+    host.remove();
+    await Promise.resolve();
+    expect([stale, r.nearWatching()]).to.deep.equal([true, 0]);
   });
 
   it('prefers-reduced-motion: paused at connect with the play control, which play() hides; not once play() was called', () => {
