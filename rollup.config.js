@@ -1,8 +1,10 @@
 // Builds (npm run build):
 //  dist/engine/index.js             the headless engine, no dependencies (physics-elements/engine)
 //  dist/lib/index.js                the element library, lit/comlink/p5 left to the consumer's bundler, worker as its own chunk
-//  dist/physics-elements.bundle.js  one self-contained file for <script type="module" src="...">, worker inlined as a blob: URL;
-//                                   exports the elements, not the headless engine's API (that is dist/engine)
+//  dist/physics-elements.iife.js    one self-contained classic script for a plain <script src="..."> (what a blog or CMS
+//                                   page copies), worker inlined as a blob: URL; its exports on window.PhysicsElements
+//  dist/physics-elements.bundle.js  the same as an ES module, for <script type="module" src="...">; both export the
+//                                   elements, not the headless engine's API (that is dist/engine)
 //  dist/physics-elements.no-p5.js   the same without p5 (size report only; needs an import map for 'p5')
 // Sizes: npm run sizes (scripts/sizes.mjs).
 import { rollup } from 'rollup';
@@ -180,7 +182,11 @@ export default [
   },
   {
     input: 'src/index.ts',
-    output: { file: 'dist/physics-elements.bundle.js', format: 'es', inlineDynamicImports: true },
+    // One build, two files: the same code as an ES module and as a classic script (its exports on window.PhysicsElements).
+    output: [
+      { file: 'dist/physics-elements.bundle.js', format: 'es', inlineDynamicImports: true },
+      { file: 'dist/physics-elements.iife.js', format: 'iife', name: 'PhysicsElements', inlineDynamicImports: true },
+    ],
     plugins: [sharedEngine(), ...basePlugins(), worker({ inline: true }), terser()],
   },
   {

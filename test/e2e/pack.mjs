@@ -1,0 +1,188 @@
+// End-to-end: the package as npm ships it, embedded the way a blogger would.
+//
+// 1. `npm pack` (its prepack builds) makes the tarball. Its files must hold the three browser builds, the types, the
+//    manifest and the README; package.json must not be private. The README's first HTML snippet must load a file the
+//    tarball holds, at this version's CDN address.
+// 2. The tarball is installed into an empty folder (`npm install <tarball>`, npm's cache first; with no registry at
+//    all, the tarball is unpacked there instead, as the browser builds need nothing else), and that
+//    folder is served from a second origin (a "CDN" on localhost, with CORS, at jsDelivr's path layout; and once more
+//    without CORS).
+// 3. Pages on the first origin (127.0.0.1) embed the installed files: the README's snippet as written (the classic
+//    script, dist/physics-elements.iife.js, in a plain <script src>), the same from the CDN without CORS, and the ES
+//    module single file with <script type="module">. In each, <cloth-sim> and <ragdoll-sim> run their engine in a
+//    worker (a blob: URL, so the other origin does not matter), their canvases change, and the console stays clean.
+//    The ES module file in a plain <script src> (the mix-up the README warns about) must fail with a SyntaxError.
+//
+// In Chromium (playwright-core) and in Firefox ESR (puppeteer-core over WebDriver BiDi) where /usr/bin/firefox-esr is
+// installed (`apt-get install -y firefox-esr`); without it the Firefox part prints SKIP and why.
+// Usage: node test/e2e/pack.mjs [--no-build]   (--no-build: npm pack --ignore-scripts, for a dist/ just built)
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { extname, join, normalize, resolve } from 'node:path';
+import { animates, artifacts, checker, launch, listen, root } from './harness.mjs';
+
+const started = Date.now();
+const elapsed = () => `${((Date.now() - started) / 1000).toFixed(1)} s`;
+const check = checker();
+const pkg = JSON.parse(readFileSync(resolve(root, 'package.json'), 'utf8'));
+const work = mkdtempSync(join(tmpdir(), 'physics-elements-pack-'));
+const npm = (args, cwd) => execFileSync('npm', args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], maxBuffer: 1 << 26 });
+
+// ---- 1. the tarball ----------------------------------------------------------------------------------------------
+
+check(pkg.private !== true, 'package.json is not private');
+check(/\bnpm run build\b/.test(pkg.scripts?.prepack ?? ''), `prepack builds ("${pkg.scripts?.prepack}")`);
+const build = !process.argv.includes('--no-build');
+console.log(`npm pack${build ? ' (prepack: npm run build)' : ' --ignore-scripts'} ...`);
+const [packed] = JSON.parse(npm(['pack', '--json', '--pack-destination', work, ...(build ? [] : ['--ignore-scripts'])], root).replace(/^[^[]*/, ''));
+const files = new Set(packed.files.map((f) => f.path));
+console.log(`${packed.filename}: ${(packed.size / 1024).toFixed(0)} KB, ${packed.entryCount} files (${elapsed()})`);
+for (const f of ['dist/physics-elements.iife.js', 'dist/physics-elements.bundle.js', 'dist/lib/index.js', 'dist/engine/index.js', 'dist/types/index.d.ts', 'custom-elements.json', 'README.md', 'package.json']) {
+  check(files.has(f), `the tarball holds ${f}`);
+}
+const stray = [...files].filter((f) => /^(test|demo|bench|scripts|artifacts|node_modules)\//.test(f));
+check(stray.length === 0, `no tests, demos, benchmarks or scripts in the tarball${stray.length ? `: ${stray.slice(0, 5).join(', ')}` : ''}`);
+
+// The README's first HTML snippet is the one a blogger copies: this version's CDN address of a file in the tarball.
+const readme = readFileSync(resolve(root, 'README.md'), 'utf8');
+const snippet = /```html\n([\s\S]*?)```/.exec(readme)?.[1] ?? '';
+const cdnPrefix = `https://cdn.jsdelivr.net/npm/${pkg.name}@${pkg.version}/`;
+const snippetFile = new RegExp(`<script (?:defer )?src="${cdnPrefix.replace(/[.]/g, '\\.')}([^"]+)"></script>`).exec(snippet)?.[1];
+check(snippetFile !== undefined, `the README's first snippet loads ${cdnPrefix}… with a plain <script src>`);
+check(files.has(snippetFile), `that file (${snippetFile}) is in the tarball`);
+
+// ---- 2. installed into an empty folder, served from a second origin ----------------------------------------------
+
+const site = join(work, 'site');
+execFileSync('mkdir', ['-p', site]);
+writeFileSync(join(site, 'package.json'), JSON.stringify({ name: 'blog', private: true }));
+const installed = join(site, 'node_modules', pkg.name);
+try {
+  npm(['install', join(work, packed.filename), '--prefer-offline', '--no-audit', '--no-fund'], site);
+  console.log(`npm install <tarball>: done (${elapsed()})`);
+} catch (e) {
+  // No registry (its dependencies' metadata not in npm's cache): the browser builds need only the tarball's own files.
+  console.log(`npm install <tarball> failed (${String(e.stderr ?? e).split('\n').find((l) => /error/.test(l)) ?? e}): unpacking the tarball instead`);
+  execFileSync('mkdir', ['-p', installed]);
+  execFileSync('tar', ['-xzf', join(work, packed.filename), '-C', installed, '--strip-components=1']);
+}
+check(existsSync(join(installed, snippetFile ?? '-')), `installed: node_modules/${pkg.name}/${snippetFile} (${elapsed()})`);
+check(!/\bexport\s*\{/.test(readFileSync(join(installed, snippetFile ?? 'package.json'), 'utf8').slice(-4000)), `${snippetFile} is a classic script (it does not end in an export statement)`);
+
+const TYPES = { '.js': 'text/javascript', '.json': 'application/json', '.map': 'application/json', '.ts': 'text/plain' };
+// /npm/<name>@<version>/<file> as jsDelivr lays it out; /nocors/npm/… the same without Access-Control-Allow-Origin.
+const cdn = await listen('localhost', (req, res) => {
+  const url = new URL(req.url, 'http://x');
+  const cors = !url.pathname.startsWith('/nocors/');
+  const path = url.pathname.replace(/^\/nocors/, '');
+  const prefix = `/npm/${pkg.name}@${pkg.version}/`;
+  const file = path.startsWith(prefix) ? normalize(join(installed, decodeURIComponent(path.slice(prefix.length)))) : '';
+  if (!file.startsWith(installed + '/') || !existsSync(file)) {
+    res.writeHead(404);
+    res.end();
+    return;
+  }
+  res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', ...(cors ? { 'access-control-allow-origin': '*' } : {}) });
+  res.end(readFileSync(file));
+});
+const cdnBase = `http://localhost:${cdn.address().port}`;
+const local = (url) => url.replace('https://cdn.jsdelivr.net', cdnBase);
+
+// ---- 3. pages on the first origin ------------------------------------------------------------------------------
+
+const post = (head, body) => `<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>a blog post</title><link rel="icon" href="data:,">
+<style>body { margin: 20px; max-width: 560px; font: 16px/1.5 Georgia, serif; } cloth-sim, ragdoll-sim { margin: 12px 0; }</style>${head}</head>
+<body><h1>A blog post</h1><p>Some text before the embed.</p>
+${body}
+<ragdoll-sim id="dolls" count="3"></ragdoll-sim>
+<p>Some text after it.</p></body></html>`;
+// The snippet as the README has it (its element gets an id so the checks can find it).
+const asWritten = local(snippet).replace('<cloth-sim', '<cloth-sim id="cloth"');
+const moduleUrl = `${cdnBase}/npm/${pkg.name}@${pkg.version}/dist/physics-elements.bundle.js`;
+const pages = {
+  '/readme.html': { what: "the README's snippet (classic script, defer, CDN with CORS)", html: post('', asWritten) },
+  '/nocors.html': { what: 'the classic script from a CDN without CORS', html: post('', asWritten.replace(cdnBase, `${cdnBase}/nocors`)) },
+  '/module.html': { what: 'the ES module single file with <script type="module">', html: post(`<script type="module" src="${moduleUrl}"></script>`, '<cloth-sim id="cloth"></cloth-sim>') },
+  '/mixup.html': { what: 'the ES module file in a plain <script src>', html: post(`<script src="${moduleUrl}"></script>`, '<cloth-sim id="cloth"></cloth-sim>'), fails: true },
+};
+const server = await listen('127.0.0.1', (req, res) => {
+  const page = pages[new URL(req.url, 'http://x').pathname];
+  res.writeHead(page ? 200 : 404, page ? { 'content-type': 'text/html' } : {});
+  res.end(page?.html ?? '');
+});
+const siteUrl = `http://127.0.0.1:${server.address().port}`;
+
+/** The checks of one page in one browser; `tab` is a playwright or puppeteer page, `problems` its console lines. */
+async function checkPage(browserName, tab, problems, path) {
+  const page = pages[path];
+  problems.length = 0;
+  await tab.goto(siteUrl + path);
+  const label = `${browserName}: ${page.what}`;
+  if (page.fails) {
+    await new Promise((r) => setTimeout(r, 1500));
+    const defined = await tab.evaluate(() => customElements.get('cloth-sim') !== undefined);
+    check(!defined && problems.some((p) => /SyntaxError|export/i.test(p)), `${label}: fails loudly (${problems.find((p) => /export/i.test(p)) ?? problems[0] ?? 'no error'})`);
+    return;
+  }
+  const info = await tab.evaluate(async () => {
+    await Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
+    const out = {};
+    for (const id of ['cloth', 'dolls']) {
+      const el = document.getElementById(id);
+      await Promise.race([el.ready, new Promise((r) => setTimeout(r, 20000))]);
+      out[id] = { mode: el.mode, height: Math.round(el.getBoundingClientRect().height) };
+    }
+    out.global = typeof window.PhysicsElements?.PhysicsSceneElement === 'function' && window.PhysicsElements.PhysicsSceneElement === customElements.get('physics-scene');
+    return out;
+  });
+  check(info.cloth.mode === 'worker' && info.dolls.mode === 'worker', `${label}: both engines run in a worker (${info.cloth.mode}, ${info.dolls.mode})`);
+  check(info.cloth.height > 100 && info.dolls.height > 100, `${label}: the elements have a box (${info.cloth.height} px, ${info.dolls.height} px tall)`);
+  if (path !== '/module.html') check(info.global, `${label}: window.PhysicsElements holds the element classes`);
+  for (const id of ['cloth', 'dolls']) check(await animates(tab, id), `${label}: #${id}'s canvas changes`);
+  check(problems.length === 0, `${label}: no console errors or warnings${problems.length ? `:\n  ${problems.join('\n  ')}` : ''}`);
+  await tab.screenshot({ path: resolve(artifacts, `pack-${browserName}-${path.slice(1, -5)}.png`) });
+}
+
+try {
+  // Chromium, through playwright-core.
+  const chromium = await launch();
+  try {
+    const tab = await chromium.newPage({ viewport: { width: 640, height: 1100 } });
+    const problems = [];
+    tab.on('console', (m) => ['error', 'warning'].includes(m.type()) && problems.push(`${m.type()}: ${m.text()}`));
+    tab.on('pageerror', (e) => problems.push(`pageerror: ${e}`));
+    tab.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+    for (const path of Object.keys(pages)) await checkPage('chromium', tab, problems, path);
+  } finally {
+    await chromium.close();
+  }
+  console.log(`(chromium done, ${elapsed()})`);
+
+  // Firefox ESR, through puppeteer-core over WebDriver BiDi.
+  const firefoxPath = process.env.FIREFOX_PATH ?? '/usr/bin/firefox-esr';
+  if (!existsSync(firefoxPath)) {
+    console.log(`SKIP firefox: ${firefoxPath} is not installed (apt-get install -y firefox-esr; or set FIREFOX_PATH)`);
+  } else {
+    const { default: puppeteer } = await import('puppeteer-core');
+    const firefox = await puppeteer.launch({ browser: 'firefox', executablePath: firefoxPath, headless: true, defaultViewport: { width: 640, height: 1100 } });
+    try {
+      const tab = await firefox.newPage();
+      const problems = [];
+      tab.on('console', (m) => ['error', 'warn'].includes(m.type()) && problems.push(`${m.type()}: ${m.text()}`));
+      tab.on('pageerror', (e) => problems.push(`pageerror: ${e}`));
+      tab.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+      for (const path of Object.keys(pages)) await checkPage('firefox', tab, problems, path);
+    } finally {
+      await firefox.close();
+    }
+    console.log(`(firefox done, ${elapsed()})`);
+  }
+} finally {
+  cdn.close();
+  server.close();
+  rmSync(work, { recursive: true, force: true });
+}
+console.log(`pack: ${check.failures.length ? `${check.failures.length} failed` : 'all passed'} in ${elapsed()}; screenshots in artifacts/`);
+process.exit(check.failures.length ? 1 : 0);
