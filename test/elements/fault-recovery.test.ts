@@ -1,6 +1,7 @@
 // Fault recovery: a worker that is terminated, throws or hangs is found out (pending calls fail naming their method),
 // reported with physics-error, replaced by a new worker and the scene restored where it was drawn last; past
-// max-restarts the scene stops with a visible error. One live worker per scene throughout. Positions are compared at
+// max-restarts the scene stops with a visible error. One live worker per scene throughout (each test's scene is alone
+// in the page's pool; several scenes of a dying pool worker: pool.test.ts). Positions are compared at
 // the moments that matter (when the death is reported, when the scene resumes), never after some wall-clock time; the
 // keeper's timing itself (1.5 s without a step, a 1 s probe) is tested with a fake clock in physics-scene/recovery.
 import { expect } from '@open-wc/testing';
@@ -61,7 +62,9 @@ describe('fault recovery', () => {
   let atError: number[];
   let atResume: Promise<number>[];
 
-  beforeEach(() => {
+  beforeEach(async () => {
+    // The page's pool ends a worker without scenes after a grace period: every test counts workers from none.
+    await waitFor(() => liveResources().workers === 0, 'no engine worker left from before');
     workers = trackWorkers();
     uncaught = trackUncaught();
     errors = [];
