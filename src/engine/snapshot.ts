@@ -82,7 +82,7 @@ export const FIELDS = {
     ),
   },
   sleep: {
-    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'parkedInvInertia', 'awakeCount', 'speedThreshold', 'timeToSleep'],
+    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'parkedInvInertia', 'awakeCount', 'asleepCount', 'speedThreshold', 'timeToSleep'],
     notSnapshotted: {
       enabled: 'settings.sleeping',
       particleBody: 'rebuilt from the bodies by restore()',

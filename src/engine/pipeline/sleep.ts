@@ -30,6 +30,8 @@ export class Sleep {
   private linksB = new Int32Array(16);
   private linkCount = 0;
   awakeCount = 0;
+  /** Bodies asleep now (0: the wake check before the solve has nothing to do). */
+  asleepCount = 0;
 
   /** Rebuilds the particle → body map and the cross-body links (outside step(), when the topology changed). */
   rebuild(slots: number, particleCount: number, bodyParticles: (slot: number) => Int32Array | null): void {
@@ -130,6 +132,44 @@ export class Sleep {
     }
   }
 
+  /**
+   * Before the solve: a sleeping body that a moving body may touch this step (any contact found, speculative ones
+   * too), or that is joined to a body woken so, wakes now, and so on through what it touches in turn. Woken after the
+   * step instead, it would meet the impact as a static body: a ball swung into a resting one would bounce back off
+   * it and leave it still. "Moving" is an awake body that was not still over the last step (still-time 0).
+   */
+  wakeTouched(contacts: ContactPairs, rigidContacts: ContactPairs, bodyParticles: (slot: number) => Int32Array, p: ParticleStore): void {
+    if (!this.enabled || this.asleepCount === 0) return;
+    let woke = true;
+    // Each pass wakes at least one body or ends: at most one pass per sleeping body, usually one or two in all.
+    while (woke && this.asleepCount > 0) {
+      woke = this.wakeAcross(contacts, bodyParticles, p) || this.wakeAcross(rigidContacts, bodyParticles, p);
+      for (let k = 0; k < this.linkCount; k++) {
+        const a = this.linksA[k];
+        const b = this.linksB[k];
+        if (this.asleep[a] !== this.asleep[b] && this.sleepTime[this.asleep[a] ? b : a] === 0) {
+          this.wakeBody(this.asleep[a] ? a : b, bodyParticles(this.asleep[a] ? a : b), p);
+          woke = true;
+        }
+      }
+    }
+  }
+
+  private wakeAcross(c: ContactPairs, bodyParticles: (slot: number) => Int32Array, p: ParticleStore): boolean {
+    let woke = false;
+    for (let i = 0; i < c.count; i++) {
+      const a = c.bodyA[i];
+      const b = c.bodyB[i];
+      if (a < 0 || b < 0 || this.asleep[a] === this.asleep[b]) continue;
+      const sleeper = this.asleep[a] ? a : b;
+      const mover = sleeper === a ? b : a;
+      if (!this.dynamic[mover] || this.sleepTime[mover] !== 0) continue;
+      this.wakeBody(sleeper, bodyParticles(sleeper), p);
+      woke = true;
+    }
+    return woke;
+  }
+
   private joinTouching(c: ContactPairs, bodyParticles: (slot: number) => Int32Array, p: ParticleStore): void {
     for (let i = 0; i < c.count; i++) {
       if (!c.touched[i]) continue;
@@ -144,6 +184,7 @@ export class Sleep {
 
   private sleepBody(s: number, idx: Int32Array, p: ParticleStore): void {
     this.asleep[s] = 1;
+    this.asleepCount++;
     for (let k = 0; k < idx.length; k++) {
       const i = idx[k];
       // A kinematic body keeps moving: it does not sleep (its island's other bodies do).
@@ -163,6 +204,7 @@ export class Sleep {
     this.sleepTime[s] = 0;
     if (!this.asleep[s]) return;
     this.asleep[s] = 0;
+    this.asleepCount--;
     this.awakeCount++;
     for (let k = 0; k < idx.length; k++) {
       const i = idx[k];
@@ -181,6 +223,7 @@ export class Sleep {
     this.sleepTime.set(s[0]);
     this.asleep = grown(new Uint8Array(16), s[1].length);
     this.asleep.set(s[1]);
+    this.asleepCount = this.asleep.reduce((n, v) => n + v, 0);
     this.parkedInvMass = grown(new Float64Array(16), s[2].length);
     this.parkedInvMass.set(s[2]);
     this.awakeCount = s[3][0];

@@ -181,6 +181,33 @@ describe('pipeline: sleeping', () => {
     expect(woke).to.equal(true);
     expect(world.bodyCentroid(ball.body).y).to.be.below(-10); // it landed on the stack, not through it
   });
+
+  it('a sleeping body about to be hit wakes before the solve: a pendulum ball passes its momentum to a resting one', () => {
+    // Two balls of a Newton's cradle: the second hangs still long enough to sleep; the first, let go from 45°, hits it
+    // at the bottom. Elastic, equal masses: the first stops and the second leaves with its speed. Woken only after
+    // the step, the sleeper would have met the impact as a static body and sent the first ball back.
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    const pendulum = (pivotX: number, x: number, y: number) => {
+      const body = world.addRigidBody({ radius: 0.5, x, y, restitution: 1, friction: 0 });
+      world.addJoint({ type: 'distance', a: body, anchorA: { x, y }, anchorB: { x: pivotX, y: 1 } });
+      return body;
+    };
+    const first = pendulum(6, 6 - 4 * Math.SQRT1_2, 1 + 4 * Math.SQRT1_2);
+    const second = pendulum(7.001, 7.001, 5);
+    let hitAt = -1;
+    for (let k = 0; k < 120 && hitAt < 0; k++) {
+      const wasAwake = world.isAwake(second);
+      world.step();
+      if (k === 50) expect(wasAwake, 'the second ball sleeps before the hit').to.equal(false);
+      if (world.bodyVelocity(second).x > 0.1) hitAt = k;
+    }
+    expect(hitAt).to.be.within(51, 119);
+    const v1 = world.bodyVelocity(first).x;
+    const v2 = world.bodyVelocity(second).x;
+    const before = Math.sqrt(2 * 9.81 * 4 * (1 - Math.SQRT1_2)); // speed at the bottom: 4.79
+    expect(Math.abs(v1)).to.be.below(0.02 * before);
+    expect(v2).to.be.closeTo(before, 0.02 * before);
+  });
 });
 
 describe('pipeline: determinism with collisions', () => {
