@@ -80,7 +80,7 @@ describe('<cloth-sim>', () => {
       await s.step(60);
     };
     for (const tear of [null, '0.2']) {
-      sim = await mountSim<ClothSimElement>('cloth-sim', `columns="8" rows="6" spacing="1" pins="top" stroke="none" gusts="0" paused ${tear ? `tear="${tear}"` : ''}`);
+      sim = await mountSim<ClothSimElement>('cloth-sim', `columns="8" rows="6" spacing="1" pins="top" stroke="none" wind="0" paused ${tear ? `tear="${tear}"` : ''}`);
       await sim.step(30);
       const whole = await cloth(sim);
       expect(whole).to.be.above(3000);
@@ -107,7 +107,7 @@ describe('<cloth-sim>', () => {
   });
 
   it('wind pushes the cloth downwind; with no wind it hangs still', async () => {
-    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" pins="top" gusts="0"');
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" pins="top" wind="0"');
     const cloth = clothOf(sim);
     await waitFor(() => sim!.stepCount > 20, '20 steps');
     // No wind: pinned along its top, the cloth hangs straight down, centred at x = 8.
