@@ -11,7 +11,7 @@ export interface Node {
 
 export interface Story {
   id: string;
-  group: 'Elements' | 'Links' | 'Presets' | 'Markup demos' | 'Catalogue scenes';
+  group: 'Elements' | 'Links' | 'Rigid bodies' | 'Presets' | 'Markup demos' | 'Catalogue scenes';
   title: string;
   description: string;
   /** The scene (or preset) element and its children. */
@@ -24,7 +24,8 @@ export interface Story {
 
 const n = (tag: string, attrs: Record<string, string | number | true> = {}, children?: Node[]): Node => ({
   tag,
-  attrs: Object.fromEntries(Object.entries(attrs).map(([k, v]) => [k, v === true ? true : String(v)])),
+  // Numbers to at most 6 decimals: the markup shown is what a person would write (8.6, not 8.600000000000001).
+  attrs: Object.fromEntries(Object.entries(attrs).map(([k, v]) => [k, v === true ? true : typeof v === 'number' ? String(+v.toFixed(6)) : v])),
   children,
 });
 
@@ -41,7 +42,7 @@ const elementStories: Story[] = [
     id: 'physics-box',
     group: 'Elements',
     title: '<physics-box>',
-    description: 'A rigid rectangle (a frame of four corner particles). Edit its attributes: the body is rebuilt where the markup says.',
+    description: 'A rigid rectangle: it falls, turns and comes to rest on a corner or a face as a box does. Edit its attributes: the body is rebuilt where the markup says; model="particles" makes it the thesis\' frame of four corner particles.',
     featured: 1,
     root: scene({}, [floor(), n('physics-box', { x: 8, y: 2, width: 2, height: 1, angle: 25, fill: '#3d7dd8' }), n('physics-box', { x: 6.5, y: 5, width: 1, height: 1 }), n('physics-box', { x: 9.5, y: 4, width: 1.4, height: 0.7, fill: '#f2c14e', stroke: '#a5812a' })]),
   },
@@ -49,7 +50,7 @@ const elementStories: Story[] = [
     id: 'physics-circle',
     group: 'Elements',
     title: '<physics-circle>',
-    description: 'A single particle colliding as a circle. Try restitution between 0 and 1.',
+    description: 'A rigid disc that rolls (the line from its centre shows it turning). Try restitution between 0 and 1.',
     featured: 1,
     root: scene({}, [floor(), n('physics-circle', { x: 8, y: 1, radius: 0.8, restitution: 0.6, fill: '#c0392b', stroke: '#7a241b' }), n('physics-circle', { x: 5, y: 3, radius: 0.5 }), n('physics-circle', { x: 11, y: 2, radius: 0.4, restitution: 0.9 })]),
   },
@@ -100,9 +101,9 @@ const linkStories: Story[] = [
     id: 'physics-joint',
     group: 'Links',
     title: '<physics-joint>',
-    description: 'A stick between the particles of two bodies nearest the anchor.',
+    description: 'Two bars hinged at (x, y) (type="revolute"). Try type weld, distance or prismatic, lower-angle and upper-angle, or a motor-speed.',
     featured: 3,
-    root: scene({}, [floor(), n('physics-box', { id: 'ja', x: 6, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-box', { id: 'jb', x: 8, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-joint', { a: 'ja', b: 'jb', x: 7, y: 3 })]),
+    root: scene({}, [floor(), n('physics-box', { id: 'ja', x: 6, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-box', { id: 'jb', x: 8, y: 3, width: 1.6, height: 0.5, fill: '#3aa0a0' }), n('physics-joint', { type: 'revolute', a: 'ja', b: 'jb', x: 7, y: 3 })]),
   },
   {
     id: 'physics-spring',
@@ -116,9 +117,126 @@ const linkStories: Story[] = [
     id: 'physics-pin',
     group: 'Links',
     title: '<physics-pin>',
-    description: 'Holds the particle of a body nearest (x, y) at that point.',
+    description: 'Holds a body at the world point (x, y); a rigid body still turns about it, like a lamp on a hook.',
     featured: 2,
     root: scene({}, [floor(), n('physics-box', { id: 'lamp', x: 9, y: 3, width: 1.2, height: 0.6, fill: '#f2c14e' }), n('physics-pin', { body: 'lamp', x: 8.4, y: 2.7, compliance: 0 })]),
+  },
+];
+
+// ---- rigid bodies: what turning, rolling and joints make possible -------------------------------------------------
+
+/** A ring with a narrow slit (a concave outline: it collides as convex parts), as points in body coordinates. */
+function ringPoints(outer: number, inner: number, sides: number, slit = 0.02): string {
+  const around = (r: number, from: number, to: number) =>
+    Array.from({ length: sides + 1 }, (_, k) => from + ((to - from) * k) / sides).map((a) => `${(r * Math.cos(a)).toFixed(3)},${(r * Math.sin(a)).toFixed(3)}`);
+  return [...around(outer, slit, 2 * Math.PI - slit), ...around(inner, 2 * Math.PI - slit, slit)].join(' ');
+}
+
+const ramp = (x: number, y: number, width: number, angle: number) => n('physics-box', { x, y, width, height: 0.3, angle, static: true, fill: '#a2a7b0' });
+
+const rigidStories: Story[] = [
+  {
+    id: 'rolling',
+    group: 'Rigid bodies',
+    title: 'Rolling and sliding',
+    description: 'On a 15° slope a ball rolls (friction turns it), an icy block (friction 0.02) slides away and a rough block (friction 0.9, more than tan 15°) stays where it is.',
+    root: scene({}, [
+      floor(),
+      ramp(11.5, 2.6, 7, 15),
+      ramp(4.5, 4.6, 8, 15),
+      n('physics-circle', { x: 8.7, y: 1.1, radius: 0.45, fill: '#c0392b', stroke: '#7a241b' }),
+      n('physics-box', { x: 1.8, y: 3.42, width: 0.8, height: 0.5, angle: 15, friction: 0.9, fill: '#f2c14e', stroke: '#a5812a' }),
+      n('physics-box', { x: 3.6, y: 3.9, width: 0.8, height: 0.5, angle: 15, friction: 0.02, fill: '#8ecae6', stroke: '#3b7c99' }),
+    ]),
+  },
+  {
+    id: 'bounce',
+    group: 'Rigid bodies',
+    title: 'Bounce heights',
+    description: 'Dropped from the same height with restitution 0, 0.5, 0.8 and 0.95: each bounce reaches e² of the height before it.',
+    root: scene({}, [
+      floor(),
+      ...[0, 0.5, 0.8, 0.95].map((e, k) => n('physics-circle', { x: 3 + 3.25 * k, y: 1, radius: 0.45, restitution: e, friction: 0, fill: ['#596273', '#3d7dd8', '#2a9d8f', '#e76f51'][k] })),
+      n('physics-box', { x: 14.8, y: 1, width: 0.7, height: 0.7, angle: 30, restitution: 0.6, fill: '#f2c14e', stroke: '#a5812a' }),
+    ]),
+  },
+  {
+    id: 'newtons-cradle',
+    group: 'Rigid bodies',
+    title: "Newton's cradle",
+    description: 'Five balls (restitution 1, no friction) each hung from the world by a distance joint; the first is let go from the side.',
+    root: scene({}, [
+      n('physics-box', { x: 8, y: 1, width: 7, height: 0.3, static: true, fill: '#596273' }),
+      ...[0, 1, 2, 3, 4].map((k) => {
+        const pivotX = 6 + k * 1.001;
+        const [x, y] = k === 0 ? [pivotX - 4 * Math.sin(Math.PI / 4), 1 + 4 * Math.cos(Math.PI / 4)] : [pivotX, 5];
+        return n('physics-circle', { id: `ball${k}`, x, y, radius: 0.5, restitution: 1, friction: 0, fill: '#b8c0cc', stroke: '#596273' });
+      }),
+      ...[0, 1, 2, 3, 4].map((k) => {
+        const pivotX = 6 + k * 1.001;
+        return n('physics-joint', { a: `ball${k}`, x1: k === 0 ? pivotX - 4 * Math.sin(Math.PI / 4) : pivotX, y1: k === 0 ? 1 + 4 * Math.cos(Math.PI / 4) : 5, x2: pivotX, y2: 1 });
+      }),
+    ]),
+  },
+  {
+    id: 'car',
+    group: 'Rigid bodies',
+    title: 'Car on motorised wheels',
+    description: 'A chassis on two wheels, each a revolute joint with a motor (motor-speed 300°/s, max-motor-torque 40): it drives over the bumps.',
+    featured: 4,
+    root: scene({}, [
+      floor(),
+      ramp(8, 8.05, 2.5, -10),
+      ramp(12.5, 8.05, 2, 12),
+      n('physics-box', { id: 'chassis', x: 2.5, y: 6.7, width: 2.4, height: 0.5, fill: '#3d7dd8', stroke: '#1d4f94' }),
+      n('physics-joint', { type: 'revolute', a: 'rear', b: 'chassis', x: 1.7, y: 7.2, 'motor-speed': 300, 'max-motor-torque': 40 }),
+      n('physics-joint', { type: 'revolute', a: 'front', b: 'chassis', x: 3.3, y: 7.2, 'motor-speed': 300, 'max-motor-torque': 40 }),
+      n('physics-circle', { id: 'rear', x: 1.7, y: 7.2, radius: 0.45, friction: 1, fill: '#2b2f36', stroke: '#000000' }),
+      n('physics-circle', { id: 'front', x: 3.3, y: 7.2, radius: 0.45, friction: 1, fill: '#2b2f36', stroke: '#000000' }),
+    ]),
+  },
+  {
+    id: 'tumbler',
+    group: 'Rigid bodies',
+    title: 'Tumbler',
+    description: 'A kinematic drum (a ring outline, angular-velocity 40°/s: it turns at its own speed, nothing pushes it) tumbles boxes and balls.',
+    featured: 0,
+    root: scene({ bounds: 'none' }, [
+      n('physics-polygon', { x: 8, y: 4.5, kinematic: true, 'angular-velocity': 40, points: ringPoints(4.2, 3.9, 20), fill: '#596273' }),
+      ...Array.from({ length: 12 }, (_, k) =>
+        k % 3 === 2
+          ? n('physics-circle', { x: 6.4 + (k % 4) * 1.1, y: 3.3 + Math.floor(k / 4) * 1.1, radius: 0.35, fill: '#e76f51' })
+          : n('physics-box', { x: 6.4 + (k % 4) * 1.1, y: 3.3 + Math.floor(k / 4) * 1.1, width: 0.7, height: 0.5, fill: ['#3d7dd8', '#f2c14e'][k % 2] }),
+      ),
+    ]),
+  },
+  {
+    id: 'seesaw',
+    group: 'Rigid bodies',
+    title: 'Seesaw and a heavy load',
+    description: 'A plank hinged to the world (a revolute joint without b); a crate of density 20 lands on one end and throws the light boxes on the other.',
+    root: scene({}, [
+      floor(),
+      n('physics-polygon', { x: 8, y: 7.85, points: '-0.6,0.35 0.6,0.35 0,-0.35', static: true, fill: '#596273' }),
+      n('physics-box', { id: 'plank', x: 8, y: 7.35, width: 8, height: 0.25, angle: -14, fill: '#c9a66b', stroke: '#8a6d3b' }),
+      n('physics-joint', { type: 'revolute', a: 'plank', x: 8, y: 7.35 }),
+      n('physics-box', { x: 11.2, y: 5.8, width: 0.6, height: 0.6, fill: '#f2c14e' }),
+      n('physics-box', { x: 11.2, y: 5.1, width: 0.6, height: 0.6, fill: '#8ecae6' }),
+      n('physics-box', { x: 4.6, y: -1, width: 1.2, height: 1.2, density: 20, fill: '#2b2f36', stroke: '#000000' }),
+    ]),
+  },
+  {
+    id: 'cloth-on-bar',
+    group: 'Rigid bodies',
+    title: 'Cloth over a turning bar',
+    description: 'A cloth of particles falls onto a kinematic bar that turns (angular-velocity 30°/s): particles and rigid bodies collide in one solver. A rope ties a box to the bar.',
+    root: scene({}, [
+      floor(),
+      n('physics-box', { id: 'bar', x: 8, y: 4.5, width: 6, height: 0.35, kinematic: true, 'angular-velocity': 30, fill: '#596273' }),
+      n('physics-cloth', { x: 5.6, y: 0.6, columns: 16, rows: 10, spacing: 0.3, pins: 'none', collide: true, shear: 0.001, fill: '#8ecae6' }),
+      n('physics-box', { id: 'weight', x: 12.5, y: 6, width: 0.7, height: 0.7, fill: '#f2c14e', stroke: '#a5812a' }),
+      n('physics-joint', { a: 'bar', b: 'weight', x1: 10.8, y1: 4.5, x2: 12.5, y2: 5.65 }),
+    ]),
   },
 ];
 
@@ -302,5 +420,5 @@ function presetStories(): Story[] {
 }
 
 export function allStories(): Story[] {
-  return [...markupStories, ...elementStories, ...linkStories, ...presetStories(), ...catalogueStories];
+  return [...markupStories, ...elementStories, ...linkStories, ...rigidStories, ...presetStories(), ...catalogueStories];
 }
