@@ -1,5 +1,6 @@
-// The gallery: a sidebar of stories, the live scene with a stats overlay, a controls panel generated from each
-// element's lit properties, and the markup snippet, kept in step with every edit. Everything is built with the DOM
+// The gallery: a sidebar of stories (a menu button on phones), the live scene with stats under it (a toggle), a
+// controls panel generated from each element's lit properties, and the markup snippet, kept in step with every edit:
+// what Copy copies, the README's script line and the tag with its box reserved. Everything is built with the DOM
 // API (createElement, setAttribute, textContent): no attribute value ever goes through innerHTML.
 import { allStories, type Node, type Story } from './stories.js';
 
@@ -112,6 +113,19 @@ const snippet = document.getElementById('snippet')!;
 const stats = document.getElementById('stats')!;
 const toggles = document.getElementById('toggles')!;
 const copyButton = document.getElementById('copy') as HTMLButtonElement;
+const navEl = nav.closest('nav')!;
+const navToggle = document.getElementById('nav-toggle') as HTMLButtonElement;
+
+/** The README's script line (scripts/check-gallery.mjs checks they are the same). */
+export const SCRIPT_LINE = '<script defer src="https://cdn.jsdelivr.net/npm/physics-elements@0.1.0/dist/physics-elements.iife.js"></script>';
+
+// Phones: the story list opens from a button and closes when a story is chosen.
+const setNavOpen = (open: boolean) => {
+  navEl.classList.toggle('open', open);
+  navToggle.setAttribute('aria-expanded', String(open));
+};
+navToggle.addEventListener('click', () => setNavOpen(!navEl.classList.contains('open')));
+nav.addEventListener('click', (e) => (e.target as Element).closest('a') && setNavOpen(false));
 
 let groupEl: HTMLElement | null = null;
 let lastGroup = '';
@@ -134,8 +148,17 @@ interface Current {
 }
 let current: Current | null = null;
 
+/**
+ * The snippet a page pastes: the script line, then the scene's tag with its box reserved before the script runs
+ * (display:block and the aspect ratio of its view, which is the element's own sizing once defined: no layout shift).
+ */
 function refreshSnippet(): void {
-  if (current) snippet.textContent = markup(current.data);
+  if (!current) return;
+  const { scene, data } = current;
+  const [w, h] = [Number((scene as unknown as { width: unknown }).width), Number((scene as unknown as { height: unknown }).height)];
+  const reserved = Number.isFinite(w) && w > 0 && Number.isFinite(h) && h > 0 && data.attrs.style === undefined;
+  const root = reserved ? { ...data, attrs: { ...data.attrs, style: `display:block;aspect-ratio:${w}/${h}` } } : data;
+  snippet.textContent = `${SCRIPT_LINE}\n${markup(root)}`;
 }
 
 function setAttr(target: HTMLElement, data: Node, attr: string, value: string | true | null): void {
@@ -205,6 +228,14 @@ const toggleInputs = TOGGLES.map((t) => {
   return { t, input };
 });
 
+// The stats (fps, physics and main-thread time) go under the scene, only when asked for: measuring costs steps.
+const statsToggle = el('input', { type: 'checkbox', id: 't-stats' });
+statsToggle.addEventListener('change', () => {
+  stats.hidden = !statsToggle.checked;
+  resetStats();
+});
+toggles.append(el('label', { class: 'toggle' }, statsToggle, ' stats'));
+
 function syncToggles(): void {
   for (const { t, input } of toggleInputs) {
     const v = current?.data.attrs[t.attr];
@@ -273,7 +304,7 @@ copyButton.addEventListener('click', async () => {
   setTimeout(() => (copyButton.textContent = 'Copy'), 1500);
 });
 
-// ---- stats overlay --------------------------------------------------------------------------------------------
+// ---- stats --------------------------------------------------------------------------------------------------
 
 let frames = 0;
 let windowStart = performance.now();
@@ -309,7 +340,7 @@ async function probeStep(scene: SceneEl): Promise<void> {
 
 setInterval(async () => {
   const c = current;
-  if (!c) return;
+  if (!c || stats.hidden) return;
   const now = performance.now();
   const dt = now - windowStart;
   const fps = (frames * 1000) / dt;
