@@ -48,6 +48,14 @@ function esbuildTs() {
  */
 const P5_EVAL_PROBE = 'try{return new Function(""),!0}catch(e){return!1}';
 
+/**
+ * p5's modules end with `typeof p5 !== "undefined" && addon(p5, p5.prototype)`, for the classic build where p5 is a
+ * global. In a page, `p5` can be a global that is not ours: an element with id="p5" (named access on window), or
+ * another p5 the page loaded; then the first guard passes and the file throws at import ("Cannot set properties of
+ * undefined (setting 'applyMatrix')"), and no element is defined. In the file we ship, p5 never looks for a global.
+ */
+const P5_GLOBAL_GUARD = /\btypeof p5\b(?![\w$.])/g;
+
 /** p5 v2's package entry imports CommonJS dependencies; use its self-contained ESM build (or leave it external). */
 function p5Esm({ external = false } = {}) {
   return {
@@ -61,6 +69,10 @@ function p5Esm({ external = false } = {}) {
       const code = readFileSync(P5_ESM, 'utf8');
       if (code.split(P5_EVAL_PROBE).length !== 2) this.error(`p5's eval probe (${P5_EVAL_PROBE}) not found once in ${P5_ESM}: update P5_EVAL_PROBE`);
       return code.replace(P5_EVAL_PROBE, 'return!1');
+    },
+    transform(code, id) {
+      if (!id.includes('/node_modules/p5/') || code.search(P5_GLOBAL_GUARD) < 0) return null;
+      return { code: code.replace(P5_GLOBAL_GUARD, '"undefined"'), map: null };
     },
   };
 }
