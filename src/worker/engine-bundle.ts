@@ -7,7 +7,7 @@ import './engine.worker.js';
 export { EngineHost } from './engine-host.js';
 export { TripleBufferPublisher, TransferPublisher } from './publishers.js';
 export { TripleBuffer } from './triple-buffer.js';
-// The renderer draws a ragdoll's bones as the builder joins them.
-export { RAGDOLL_BONES } from '../engine/index.js';
+// The renderer draws a ragdoll's bones as the builder joins them; shape elements check `model` against the engine's list.
+export { BODY_MODELS, RAGDOLL_BONES } from '../engine/index.js';
 // The page's comlink too (one copy in the single-file build).
 export * as __comlink from 'comlink';
