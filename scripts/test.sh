@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Every test: installs what it needs (npm packages, Debian's chromium), type-checks, runs the engine's tests in Node
-# (mocha), then the element, worker and drawing tests in chromium with @web/test-runner. Exits non-zero on any failure.
+# Every test: installs what it needs (npm packages, Debian's chromium and, where it can, firefox-esr), type-checks, runs
+# the engine's tests in Node (mocha), then the element, worker and drawing tests in chromium with @web/test-runner, the
+# gallery checks, and the end-to-end pages (builds across origins, CSP, the npm tarball, layout shift, phone gestures).
+# Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/ensure-deps.sh
 bash scripts/ensure-chromium.sh
+bash scripts/ensure-firefox.sh
 echo "== typecheck"
 npx tsc --noEmit -p tsconfig.json
 npx tsc --noEmit -p test/tsconfig.json
@@ -23,9 +26,17 @@ echo "== browser tests"
 npx web-test-runner --static-logging "$@"
 echo "== gallery stories"
 node scripts/check-stories.mjs
+echo "== gallery layout and accessibility (axe at 1280 and 390 px)"
+node scripts/check-gallery.mjs
 echo "== browser soak: 1 minute of markup changes (long form: node scripts/browser-soak.mjs --minutes 15)"
 node scripts/browser-soak.mjs --minutes 1
 echo "== build, the single-file build embedded across origins, both builds under a strict CSP"
 npm run build --silent
 node test/e2e/cross-origin.mjs
 node test/e2e/csp.mjs
+echo "== the npm tarball installed and embedded from a second origin (chromium; Firefox ESR when installed)"
+node test/e2e/pack.mjs --no-build
+echo "== no layout shift while the embed loads (1.6 Mbit/s, 150 ms; desktop and phone)"
+node scripts/measure-loading.mjs --runs 1 --max-cls 0.02
+echo "== phone: swipes scroll past the scene, a body drags, pinch zooms"
+node test/e2e/phone.mjs
