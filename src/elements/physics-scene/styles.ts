@@ -2,8 +2,9 @@
 //
 // The box: a block as wide as its container, `aspect-ratio` from the view (width / height) unless CSS gives it a height,
 // overflow hidden. A page reserves the same box before the script has run with the snippet's inline style
-// (style="display:block;aspect-ratio:16/9;overflow:hidden", which wins over these styles once defined), so nothing
-// moves when the element upgrades. Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
+// (style="display:block;aspect-ratio:16/9" for a default scene, 16/10 for the presets; overflow:hidden too when the tag
+// holds fallback content), which wins over these styles once defined, so nothing moves when the element upgrades
+// (scripts/measure-loading.mjs: layout shift 0 with it, 0.13 desktop / 0.16 phone without). Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
 import { css } from 'lit';
 
 /** @internal */
