@@ -229,7 +229,7 @@ const rigidStories: Story[] = [
     id: 'cloth-on-bar',
     group: 'Rigid bodies',
     title: 'Cloth over a turning bar',
-    description: 'A cloth of particles falls onto a kinematic bar that turns (angular-velocity 30°/s): particles and rigid bodies collide in one solver. A rope ties a box to the bar.',
+    description: 'A cloth of particles (collide) falls onto a kinematic bar that turns at 30°/s and is tipped off it: particles and rigid bodies collide in one solver. A box hangs from the bar by a distance joint.',
     root: scene({}, [
       floor(),
       n('physics-box', { id: 'bar', x: 8, y: 4.5, width: 6, height: 0.35, kinematic: true, 'angular-velocity': 30, fill: '#596273' }),
