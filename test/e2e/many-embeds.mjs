@@ -1,0 +1,165 @@
+// End-to-end measurement: a text post with 8 <cloth-sim> embeds against the same post with one, as a blogger's page
+// loads dist/physics-elements.bundle.js (no cross-origin isolation: frames as transferred buffers). Reports
+//  - engine workers created (playwright's worker events) at load and once every cloth has been scrolled to: the page's
+//    pool makes at most 2 (fails otherwise);
+//  - how many cloths start at load (only those near the viewport should);
+//  - when the first (visible) cloth draws its first frame, from navigation start: median over runs, and the ratio to
+//    the single embed's (target ≤ 1.3);
+//  - memory per extra embed once all 8 run: renderer processes' PSS (Linux /proc, pids from CDP SystemInfo) and the JS
+//    page's JS heap (after a garbage collection), (8 embeds − 1 embed) / 7 (target ≤ 4 MB of PSS).
+// Each run is a fresh browser. Run after `npm run build`: node test/e2e/many-embeds.mjs [--runs 5] [--strict]
+// (--strict: also exit non-zero when a target is missed; timing on a loaded machine is noisy, so it is off by default).
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { checker, launch, listen, root } from './harness.mjs';
+
+const args = process.argv.slice(2);
+const runsArg = args.includes('--runs') ? Number(args[args.indexOf('--runs') + 1]) : 5;
+const runs = Number.isInteger(runsArg) && runsArg > 0 ? runsArg : 5;
+const strict = args.includes('--strict');
+const bundle = readFileSync(resolve(root, 'dist/physics-elements.bundle.js'));
+const started = Date.now();
+
+const LOREM = 'Cloth is a grid of particles held together by distance constraints; the solver moves each pair back toward its rest length a little at every substep, and gravity and a gentle breeze do the rest. ';
+const paragraph = (k) => `<p>${LOREM.repeat(3 + (k % 3))}</p>`;
+
+/** The post: an intro, then `count` cloths with three paragraphs of text between them, then more text. */
+function post(count) {
+  const parts = [paragraph(0)];
+  for (let k = 1; k <= 8; k++) {
+    if (k <= count) parts.push(`<cloth-sim id="c${k}" class="embed" aria-label="Cloth ${k}"></cloth-sim>`);
+    parts.push(paragraph(k), paragraph(k + 1), paragraph(k + 2));
+  }
+  // Polls each frame until the first cloth has drawn: its first-frame time on the page's clock (navigation start = 0).
+  const probe = `(function poll() {
+    const el = document.getElementById('c1');
+    if (el && el.renderedFrames > 0) { window.__firstFrame = performance.now(); return; }
+    requestAnimationFrame(poll);
+  })();`;
+  return `<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>A post with ${count} embed${count === 1 ? '' : 's'}</title>
+<style>body { margin: 0 auto; max-width: 680px; padding: 20px; font: 17px/1.6 Georgia, serif; }
+.embed { display: block; width: 640px; height: 400px; margin: 24px 0; }</style>
+<script>${probe}</script>
+<script type="module" src="/physics-elements.bundle.js"></script></head>
+<body><h1>Notes on cloth</h1>${parts.join('\n')}</body></html>`;
+}
+
+const pages = { '/one.html': post(1), '/eight.html': post(8) };
+const site = await listen('127.0.0.1', (req, res) => {
+  if (req.url === '/physics-elements.bundle.js') {
+    res.writeHead(200, { 'content-type': 'text/javascript' });
+    res.end(bundle);
+  } else if (pages[req.url]) {
+    res.writeHead(200, { 'content-type': 'text/html' });
+    res.end(pages[req.url]);
+  } else {
+    res.writeHead(req.url === '/favicon.ico' ? 204 : 404);
+    res.end();
+  }
+});
+const base = `http://127.0.0.1:${site.address().port}`;
+
+/** Proportional set size of the browser's renderer processes, in MB (Linux). */
+async function rendererPss(browser) {
+  const cdp = await browser.newBrowserCDPSession();
+  const { processInfo } = await cdp.send('SystemInfo.getProcessInfo');
+  await cdp.detach();
+  let kb = 0;
+  for (const p of processInfo.filter((p) => p.type === 'renderer')) {
+    try {
+      const m = /^Pss:\s+(\d+) kB/m.exec(readFileSync(`/proc/${p.id}/smaps_rollup`, 'utf8'));
+      if (m) kb += Number(m[1]);
+    } catch {
+      // A process that ended meanwhile.
+    }
+  }
+  return kb / 1024;
+}
+
+/** The page's JS heap in use after a garbage collection, MB (the workers' heaps are in the renderer's PSS). */
+async function jsHeap(tab) {
+  const cdp = await tab.context().newCDPSession(tab);
+  await cdp.send('HeapProfiler.collectGarbage');
+  const { usedSize } = await cdp.send('Runtime.getHeapUsage');
+  await cdp.detach();
+  return usedSize / 2 ** 20;
+}
+
+/** One load of a post in a fresh browser: first-frame time, workers, starts at load; with `all`, scrolls every cloth in. */
+async function load(name, count, all) {
+  const browser = await launch();
+  try {
+    const tab = await browser.newPage({ viewport: { width: 1000, height: 800 } });
+    let workersMade = 0;
+    tab.on('worker', () => workersMade++);
+    const problems = [];
+    tab.on('pageerror', (e) => problems.push(String(e)));
+    tab.on('console', (m) => m.type() === 'error' && problems.push(m.text()));
+    await tab.goto(`${base}${name}`);
+    await tab.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 30000 });
+    const firstFrame = await tab.evaluate(() => window.__firstFrame);
+    // Settle: whatever starts at load has started (the near ones), then count.
+    await tab.waitForTimeout(2000);
+    const startedAtLoad = await tab.evaluate(() => [...document.querySelectorAll('cloth-sim')].filter((el) => el.client !== null).length);
+    const workersAtLoad = workersMade;
+    let memory = null;
+    if (all) {
+      const loaded = await rendererPss(browser);
+      // Scroll each cloth into view and wait for it to draw; then back to the top, where the first one runs.
+      for (let k = 1; k <= count; k++) {
+        await tab.evaluate((id) => document.getElementById(id).scrollIntoView({ block: 'center' }), `c${k}`);
+        await tab.waitForFunction((id) => document.getElementById(id).renderedFrames > 0, `c${k}`, { timeout: 30000 });
+      }
+      await tab.evaluate(() => window.scrollTo(0, 0));
+      await tab.waitForTimeout(2000);
+      memory = { loaded, pss: await rendererPss(browser), heap: await jsHeap(tab) };
+    }
+    return { firstFrame, startedAtLoad, workersAtLoad, workersMade, liveWorkers: tab.workers().length, memory, problems };
+  } finally {
+    await browser.close();
+  }
+}
+
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+const check = checker();
+try {
+  const one = [];
+  const eight = [];
+  for (let r = 0; r < runs; r++) {
+    // Alternate the order, so a machine getting busier or quieter affects both alike.
+    const pair = r % 2 === 0 ? [['one', 1], ['eight', 8]] : [['eight', 8], ['one', 1]];
+    for (const [kind, count] of pair) {
+      const result = await load(`/${kind}.html`, count, r === 0);
+      (kind === 'one' ? one : eight).push(result);
+      console.log(`run ${r + 1} ${kind}: first frame ${result.firstFrame.toFixed(0)} ms, cloths started at load ${result.startedAtLoad}/${count}, workers ${result.workersMade}${result.memory ? `, PSS at load ${result.memory.loaded.toFixed(1)} MB, all running ${result.memory.pss.toFixed(1)} MB, JS heap ${result.memory.heap.toFixed(1)} MB` : ''}`);
+    }
+  }
+  const t1 = median(one.map((r) => r.firstFrame));
+  const t8 = median(eight.map((r) => r.firstFrame));
+  const ratio = t8 / t1;
+  const most = Math.max(...eight.map((r) => r.workersMade));
+  const full = eight[0];
+  const perLoaded = (full.memory.loaded - one[0].memory.loaded) / 7;
+  const perPss = (full.memory.pss - one[0].memory.pss) / 7;
+  const perHeap = (full.memory.heap - one[0].memory.heap) / 7;
+  console.log(`\nworkers with 8 embeds: ${most} made (at load ${full.workersAtLoad}, once all 8 ran ${full.workersMade}, live ${full.liveWorkers})`);
+  console.log(`cloths started at load: ${median(eight.map((r) => r.startedAtLoad))} of 8 (the rest wait until scrolled near)`);
+  console.log(`first visible cloth's first frame: 1 embed ${t1.toFixed(0)} ms, 8 embeds ${t8.toFixed(0)} ms (medians of ${runs}): ${ratio.toFixed(2)}x`);
+  console.log(`memory per extra embed, renderer PSS: ${perLoaded.toFixed(2)} MB as loaded (only the near ones started), ${perPss.toFixed(2)} MB once all 8 run (JS heap of the page: ${perHeap.toFixed(2)} MB)`);
+  check(most <= 2, `at most 2 engine workers for 8 embeds (${most})`);
+  check(eight.every((r) => r.problems.length === 0) && one.every((r) => r.problems.length === 0), 'no page errors');
+  const targets = [
+    [ratio <= 1.3, `first visible cloth within 1.3x the single embed's first-frame time (${ratio.toFixed(2)}x)`],
+    [perLoaded <= 4, `at most 4 MB per extra embed as the post loads (${perLoaded.toFixed(2)} MB PSS)`],
+    [perPss <= 4, `at most 4 MB per extra embed once all 8 run (${perPss.toFixed(2)} MB PSS)`],
+  ];
+  for (const [ok, what] of targets) {
+    if (strict) check(ok, what);
+    else console.log(`${ok ? 'met ' : 'MISS'} target: ${what}`);
+  }
+} finally {
+  site.close();
+}
+console.log(`many embeds: ${check.failures.length ? `${check.failures.length} failed` : 'all passed'} in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+process.exit(check.failures.length ? 1 : 0);
