@@ -1,8 +1,13 @@
 // Draws the newest physics state with p5 into a canvas inside a shadow root. Positions are interpolated between the
 // two newest published frames, the world's viewBox is fitted into the element's box keeping its aspect ratio
 // (like SVG's preserveAspectRatio="xMidYMid meet"), and bodies are drawn in batches: one canvas path per style.
+//
+// Drawing only when something changes: p5 does not loop (noLoop); while the scene is on screen the renderer looks once
+// an animation frame whether there is anything new to show (a frame that moved something, the interpolation still on
+// its way, a resize, a style, view or hook change) and asks p5 for one redraw() if so. A paused or settled scene (its
+// frames repeat the positions already drawn) and a reduced-motion one cost no drawing at all.
 import p5 from 'p5';
-import { F, HEADER, POSE, aabbOffset, poseOffset, type LinkEnd, type Topology } from '../worker/protocol.js';
+import { F, HEADER, POSE, aabbOffset, frameLength, poseOffset, type LinkEnd, type Topology } from '../worker/protocol.js';
 import type { FrameStore } from '../worker/client.js';
 import { track } from '../worker/resources.js';
 import { PAINTERS, type BodyPainter, type BodyStyle, type Pen } from './bodies/index.js';
@@ -75,6 +80,20 @@ function pinColorDecorators(): void {
   for (const [k, v] of firstColorMethods) if (proto[k] !== v) proto[k] = v;
 }
 
+/** Header fields that change what is drawn (not the sequence number, step, time, stamp or running flag). */
+const DRAWN_HEADER = [F.topology, F.particles, F.bodies, F.contacts, F.debug, F.cellSize, F.links];
+
+/**
+ * Whether frame `f` draws as `shown` does: the same topology and counts and the same positions, poses (and debug
+ * boxes and contacts). A settled world's frames keep coming with a new step count and the same content.
+ */
+function sameContent(f: Float64Array, shown: Float64Array): boolean {
+  for (const k of DRAWN_HEADER) if (f[k] !== shown[k]) return false;
+  const length = frameLength(f[F.particles], f[F.bodies], f[F.contacts], f[F.debug] === 1);
+  for (let i = HEADER; i < length; i++) if (f[i] !== shown[i]) return false;
+  return true;
+}
+
 export class SceneRenderer {
   /** World units shown across and down (the viewBox, origin at the top-left). */
   viewWidth = 16;
@@ -103,7 +122,18 @@ export class SceneRenderer {
   private cssHeight = 1;
   private ready = false;
   private removed = false;
+  /** Watching for changes each animation frame (on screen), or not at all. */
   private looping = true;
+  /** The watch's pending animation frame (0: none). */
+  private watchRequest = 0;
+  /** Something other than the frames changed (style, size): draw at the next look. */
+  private dirty = true;
+  /** What the last drawing showed: the frame's drawn content (see sameContent), how far it had blended, the view. */
+  private shown = new Float64Array(HEADER);
+  private shownAlpha = 1;
+  private shownReceived = -1;
+  private shownTopology: Topology | null = null;
+  private shownView: unknown[] = [];
 
   constructor(
     private readonly container: HTMLElement,
@@ -136,7 +166,9 @@ export class SceneRenderer {
         this.cssWidth = width;
         this.cssHeight = height;
         this.ready = true;
-        if (!this.looping) s.noLoop();
+        // p5 draws once after set-up; from then on only redraw() draws (see watch()).
+        s.noLoop();
+        if (this.looping) this.watchSoon();
       };
       s.draw = () => this.draw(s);
     }, container);
@@ -151,13 +183,26 @@ export class SceneRenderer {
     return this.container.querySelector('canvas');
   }
 
-  /** Draws every animation frame (true, default) or not at all (false: no frame callbacks, no CPU). */
+  /**
+   * Looks for something new to draw every animation frame and draws it (true, default), or does not look at all (false:
+   * off screen or stopped; no frame callbacks, no CPU).
+   */
   setLooping(on: boolean): void {
     if (on === this.looping || this.removed) return;
     this.looping = on;
-    if (!this.ready) return;
-    if (on) this.instance.loop();
-    else this.instance.noLoop();
+    if (on && this.ready) this.watchSoon();
+    if (!on && this.watchRequest) {
+      cancelAnimationFrame(this.watchRequest);
+      this.watchRequest = 0;
+    }
+  }
+
+  /**
+   * Draws again at the next animation frame on screen, even if nothing the renderer knows of has changed (a draw hook
+   * that animates by itself calls it from the hook to be drawn again).
+   */
+  requestDraw(): void {
+    this.dirty = true;
   }
 
   /** True once p5 has made the canvas. */
@@ -168,11 +213,13 @@ export class SceneRenderer {
   setStyle(key: number, style: BodyStyle): void {
     this.styles.set(key, style);
     this.groupsFor = null;
+    this.dirty = true;
   }
 
   deleteStyle(key: number): void {
     this.styles.delete(key);
     this.groupsFor = null;
+    this.dirty = true;
   }
 
   /** World point → canvas CSS pixels (relative to the canvas' top-left corner). */
@@ -194,6 +241,8 @@ export class SceneRenderer {
   dispose(): void {
     if (this.removed) return;
     this.removed = true;
+    if (this.watchRequest) cancelAnimationFrame(this.watchRequest);
+    this.watchRequest = 0;
     this.observer.disconnect();
     track('observers', -1);
     const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
@@ -218,7 +267,59 @@ export class SceneRenderer {
     if (width === this.cssWidth && height === this.cssHeight) return;
     this.cssWidth = width;
     this.cssHeight = height;
+    // Resizing clears the canvas: p5's resizeCanvas() redraws at once (before the page paints), whatever the frames.
+    this.dirty = true;
     this.instance.resizeCanvas(width, height);
+  }
+
+  private watchSoon(): void {
+    if (!this.watchRequest && !this.removed) this.watchRequest = requestAnimationFrame(this.watch);
+  }
+
+  /** Once an animation frame while on screen: one redraw if there is anything new to show. */
+  private readonly watch = (): void => {
+    this.watchRequest = 0;
+    if (!this.looping || this.removed) return;
+    this.watchSoon();
+    if (this.changed()) void this.instance.redraw();
+  };
+
+  /** The values of what decides the drawing besides the frames and styles (the view and the hook). */
+  private viewNow(): unknown[] {
+    return [this.viewWidth, this.viewHeight, this.background, this.debug, this.drawMode, this.hook, this.cssWidth, this.cssHeight];
+  }
+
+  /**
+   * Whether a drawing now would differ from the last: something marked it (dirty), the view or topology changed, the
+   * blend between the two newest frames had not reached the newest, or a frame arrived whose drawn content differs
+   * from what is shown (a hook is given every new frame: it may draw the time or anything else in it).
+   */
+  private changed(): boolean {
+    const src = this.source();
+    if (!src) return false;
+    src.poll();
+    const t = src.topology;
+    const frames = src.frames;
+    if (!t || frames.received === 0 || frames.curr[F.topology] !== t.version) return false;
+    const view = this.viewNow();
+    if (this.dirty || this.shownAlpha < 1 || t !== this.shownTopology || view.some((v, k) => v !== this.shownView[k])) return true;
+    if (frames.received === this.shownReceived) return false;
+    this.shownReceived = frames.received;
+    return this.hook !== null || !sameContent(frames.curr, this.shown);
+  }
+
+  /** Notes what this drawing shows, for changed(). */
+  private remember(t: Topology, frames: FrameStore, alpha: number): void {
+    const f = frames.curr;
+    const length = frameLength(f[F.particles], f[F.bodies], f[F.contacts], f[F.debug] === 1);
+    if (this.shown.length < length) this.shown = new Float64Array(Math.ceil(length * 1.5));
+    this.shown.set(f.subarray(0, length));
+    // Between two frames of the same content every blend is the newest frame: nothing left to blend (a settled world
+    // that is still stepping would otherwise be redrawn every animation frame).
+    this.shownAlpha = alpha < 1 && sameContent(frames.prev, f) ? 1 : alpha;
+    this.shownReceived = frames.received;
+    this.shownTopology = t;
+    this.shownView = this.viewNow();
   }
 
   /** viewBox fit: the whole world box visible, centred, aspect ratio kept. */
@@ -255,6 +356,8 @@ export class SceneRenderer {
     const frames = src.frames;
     const f = frames.curr;
     if (!t || frames.received === 0 || f[F.topology] !== t.version) return;
+    // Cleared before the hook runs: a hook that animates by itself calls requestDraw() to be drawn again.
+    this.dirty = false;
     this.fit();
     if (this.groupsFor !== t) this.rebuildGroups(t);
     const alpha = this.interpolate(frames);
@@ -289,6 +392,7 @@ export class SceneRenderer {
       }
       ctx.restore();
     }
+    this.remember(t, frames, alpha);
     this.drawn++;
   }
 

@@ -1,10 +1,10 @@
-// The renderer on its own, fed hand-made frames: batched drawing (one path per style) and interpolation between
-// the two newest frames.
+// The renderer on its own, fed hand-made frames: batched drawing (one path per style), interpolation between
+// the two newest frames, and drawing only when something changes.
 import { expect } from '@open-wc/testing';
 import { SceneRenderer, type DrawView } from '../../src/render/renderer.js';
 import { FrameStore } from '../../src/worker/client.js';
 import { F, HEADER, POSE, type Topology, type TopologyBody } from '../../src/worker/protocol.js';
-import { waitFor } from '../elements/helpers.js';
+import { frames as animationFrames, waitFor } from '../elements/helpers.js';
 
 function frame(seq: number, time: number, running: boolean, xy: number[], bodies: number, poses: number[] = []): Float64Array {
   const n = xy.length / 2;
@@ -70,10 +70,12 @@ describe('SceneRenderer', () => {
       return (stroke as (...a: unknown[]) => void).apply(this, args);
     } as typeof proto.stroke;
     try {
+      // The frame never changes: the hook asks to be drawn again.
       renderer.hook = () => {
         perFrame.push([fills, strokes]);
         fills = 0;
         strokes = 0;
+        renderer!.requestDraw();
       };
       await waitFor(() => perFrame.length >= 4, 'four drawn frames');
     } finally {
@@ -106,11 +108,12 @@ describe('SceneRenderer', () => {
       expect(v.x).to.be.closeTo(10 * v.alpha, 1e-9);
     }
     expect(views.at(-1)!.x).to.equal(10);
-    // Paused frames are drawn as they are.
+    // Paused frames are drawn as they are, once.
     views.length = 0;
     frames.accept(frame(3, 2, false, [3, 5], 1));
-    await waitFor(() => views.length >= 2, 'two more frames');
-    expect(views.map((v) => v.x)).to.deep.equal(views.map(() => 3));
+    await waitFor(() => views.length >= 1, 'the paused frame drawn');
+    await animationFrames(10);
+    expect(views.map((v) => v.x)).to.deep.equal([3]);
   });
 
   it('blends poses too, angles the short way round (from 3 to -3 rad through pi, not through 0)', async () => {
@@ -133,5 +136,98 @@ describe('SceneRenderer', () => {
       expect(v.angle).to.be.closeTo(3 + (2 * Math.PI - 6) * v.alpha, 1e-9);
     }
     expect(views.at(-1)!.angle).to.equal(-3);
+  });
+});
+
+describe('SceneRenderer draws only what changes', () => {
+  let box: HTMLDivElement;
+  let renderer: SceneRenderer | null = null;
+  const topology: Topology = { version: 1, bodies: [{ key: 1, type: 'circle', kind: 'particle', indices: Int32Array.of(0), radius: 0.5 }], links: [] };
+  beforeEach(() => {
+    box = document.createElement('div');
+    box.style.cssText = 'width: 200px; height: 200px';
+    document.body.append(box);
+  });
+  afterEach(() => {
+    renderer?.dispose();
+    renderer = null;
+    box.remove();
+  });
+
+  /** A renderer drawing `frames` (its drawn count settled after the first drawing). */
+  async function start(frames: FrameStore): Promise<SceneRenderer> {
+    const r = new SceneRenderer(box, () => ({ frames, topology, poll: () => {} }));
+    r.viewWidth = 10;
+    r.viewHeight = 10;
+    renderer = r;
+    await waitFor(() => r.drawn >= 1, 'the first drawing');
+    await animationFrames(3);
+    return r;
+  }
+
+  /** Draws made over `n` animation frames. */
+  async function drawsOver(r: SceneRenderer, n = 20): Promise<number> {
+    const before = r.drawn;
+    await animationFrames(n);
+    return r.drawn - before;
+  }
+
+  it('a paused frame is drawn once; a new frame that moves something, a style, the view or a resize draw once more', async () => {
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, false, [5, 5], 1));
+    const r = await start(frames);
+    expect(await drawsOver(r)).to.equal(0);
+    const drawn = r.drawn;
+    frames.accept(frame(2, 1 / 60, false, [5, 6], 1));
+    await waitFor(() => r.drawn > drawn, 'the moved frame drawn');
+    expect(await drawsOver(r)).to.equal(0);
+    for (const change of [
+      () => r.setStyle(1, { fill: '#ff0000', stroke: null, lineWidth: 1 }),
+      () => (r.viewWidth = 12),
+      () => (r.background = 'transparent'),
+      () => (r.debug = true),
+      () => (box.style.width = '150px'),
+      () => r.requestDraw(),
+    ]) {
+      const before = r.drawn;
+      change();
+      await waitFor(() => r.drawn > before, `a drawing after ${change}`);
+      expect(await drawsOver(r), `${change}`).to.equal(0);
+    }
+  });
+
+  it('frames that repeat what is drawn (a settled world still stepping) are not drawn; a hook is given every new frame', async () => {
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, true, [5, 5], 1));
+    frames.accept(frame(2, 1 / 60, true, [5, 6], 1));
+    const r = await start(frames);
+    // Running frames, the same positions: a new step count and time each, nothing to draw.
+    let drawsWhileRepeating = 0;
+    for (let k = 3; k < 23; k++) {
+      const before = r.drawn;
+      frames.accept(frame(k, k / 60, true, [5, 6], 1));
+      await animationFrames(1);
+      drawsWhileRepeating += r.drawn - before;
+    }
+    expect(drawsWhileRepeating).to.equal(0);
+    const hooked: number[] = [];
+    r.hook = (v) => hooked.push(v.frame[F.seq]);
+    await waitFor(() => hooked.length >= 1, 'the hook drawn');
+    frames.accept(frame(30, 30 / 60, false, [5, 6], 1));
+    await waitFor(() => hooked.includes(30), 'the hook given the new frame');
+  });
+
+  it('draws nothing while not looping (off screen), and what changed meanwhile once it loops again', async () => {
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, false, [5, 5], 1));
+    const r = await start(frames);
+    r.setLooping(false);
+    frames.accept(frame(2, 1 / 60, false, [2, 2], 1));
+    r.setStyle(1, { fill: '#00ff00', stroke: null, lineWidth: 1 });
+    expect(await drawsOver(r)).to.equal(0);
+    const drawn = r.drawn;
+    r.setLooping(true);
+    await waitFor(() => r.drawn > drawn, 'the change drawn');
+    expect(await drawsOver(r)).to.equal(0);
   });
 });

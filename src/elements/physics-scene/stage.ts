@@ -1,5 +1,6 @@
 // The canvas: a p5 renderer in the scene's stage, from start to stop, showing what the scene's attributes say (viewBox,
-// colours, debug drawing, hook) after each update, and the mapping between world and viewport coordinates.
+// colours, debug drawing, hook) after each update, and the mapping between world and viewport coordinates. The renderer
+// draws only when something changes (see SceneRenderer): an idle scene (paused, settled, reduced motion) costs nothing.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { SceneRenderer, type BodyStyle, type DrawHook, type FrameSource } from '../../render/renderer.js';
 
@@ -65,7 +66,10 @@ export class StageController implements ReactiveController {
     return this.renderer?.canvas ?? null;
   }
 
-  /** A renderer in `container`, drawing every animation frame or not at all (`looping`). */
+  /**
+   * A renderer in `container`, drawing what changes (new frames that move something, resizes, style and view changes)
+   * at the next animation frame, or nothing at all (`looping` false: off screen or stopped).
+   */
   open(container: HTMLElement, looping: boolean): void {
     this.renderer = (this.options.create ?? sceneRenderer)(container, () => this.options.source());
     this.renderer.setLooping(looping);
