@@ -1,11 +1,12 @@
-// The rigid contact solver: per substep a prepare pass (lever arms and weights from the bodies' rotation), the
-// position sweep (normal correction, then friction) and, after the velocities are derived, the velocity pass
-// (restitution, or a stop). See RigidContacts for the model.
+// The rigid contact solver: per substep the position sweep (normal correction, then friction) and, after the
+// velocities are derived, the velocity pass (restitution, or a stop). See RigidContacts for the model.
 //
-// Speed: the levers are computed once a substep (prepare); within the sweep a body's point is its lever turned by
-// the small angle the body has turned since (first order), and corrections add to the angle without recomputing
-// cos and sin (rows.ts). Nothing passes or returns a double across a call: V8 boxes a double handed to a function it
-// does not inline (a heap allocation each time); the helpers take integers and pass reals through typed arrays.
+// Speed: the sweep computes each point's levers from the bodies' rotation at the start of the substep (rc, rs) where
+// it needs them, and within the sweep a body's point is that lever turned by the small angle the body has turned
+// since (first order); corrections add to the angle without recomputing cos and sin (rows.ts). Points that stay
+// apart cost only their overlap test; the weights and what the velocity pass reads are written only for points that
+// act. Nothing passes or returns a double across a call: V8 boxes a double handed to a function it does not inline
+// (a heap allocation each time); the helpers take integers and pass reals through typed arrays.
 import type { BodyRows } from './rows.js';
 import type { RigidContacts } from './contacts.js';
 
@@ -26,76 +27,98 @@ const vel = new Float64Array(4);
 
 /**
  * Lever arms, their cross products with the normal and the tangent, and the weights along both, from the bodies'
- * rotation at the start of the substep (after integration): once per point per substep. A round side pushes
- * through its centre (normal lever along n); friction acts at the material point.
+ * rotation at the start of the substep (after integration), for the points on the general path (B an edge point of
+ * a particle-built outline) and their manifold partners. The common path (B a rigid body, a particle or the world)
+ * computes its levers in the position sweep itself, where it needs them: a point that stays apart costs no more
+ * than its overlap test, and the sweep writes what the velocity pass reads only for the points that act.
  */
 export function prepareRigidContacts(c: RigidContacts, r: BodyRows): void {
-  const { rc, rs, invMass, invInertia } = r;
+  const { b2, pair } = c;
   for (let i = 0, n = c.count; i < n; i++) {
-    const ia = c.a[i];
-    const ib = c.b[i];
-    const nx = c.nx[i];
-    const ny = c.ny[i];
-    let cs = rc[ia];
-    let sn = rs[ia];
-    const mAx = cs * c.rAx[i] - sn * c.rAy[i];
-    const mAy = sn * c.rAx[i] + cs * c.rAy[i];
-    const ra = c.radA[i];
-    const lAx = ra > 0 ? nx * ra : mAx;
-    const lAy = ra > 0 ? ny * ra : mAy;
-    c.lAx[i] = lAx;
-    c.lAy[i] = lAy;
-    c.mAx[i] = mAx;
-    c.mAy[i] = mAy;
-    const rnA = lAx * ny - lAy * nx;
-    const rtA = mAx * nx + mAy * ny; // m × t with t = (−ny, nx)
-    c.rnA[i] = rnA;
-    c.rtA[i] = rtA;
-    let wn = invMass[ia] + invInertia[ia] * rnA * rnA;
-    let wt = invMass[ia] + invInertia[ia] * rtA * rtA;
-    if (ib >= 0) {
-      if (c.b2[i] >= 0) {
-        const al = c.alpha[i];
-        const be = 1 - al;
-        const w = be * be * invMass[ib] + al * al * invMass[c.b2[i]];
-        wn += w;
-        wt += w;
-        c.lBx[i] = c.lBy[i] = c.mBx[i] = c.mBy[i] = c.rnB[i] = c.rtB[i] = 0;
-      } else {
-        cs = rc[ib];
-        sn = rs[ib];
-        const mBx = cs * c.rBx[i] - sn * c.rBy[i];
-        const mBy = sn * c.rBx[i] + cs * c.rBy[i];
-        const rb = c.radB[i];
-        const lBx = rb > 0 ? -nx * rb : mBx;
-        const lBy = rb > 0 ? -ny * rb : mBy;
-        c.lBx[i] = lBx;
-        c.lBy[i] = lBy;
-        c.mBx[i] = mBx;
-        c.mBy[i] = mBy;
-        const rnB = lBx * ny - lBy * nx;
-        const rtB = mBx * nx + mBy * ny;
-        c.rnB[i] = rnB;
-        c.rtB[i] = rtB;
-        wn += invMass[ib] + invInertia[ib] * rnB * rnB;
-        wt += invMass[ib] + invInertia[ib] * rtB * rtB;
+    if (pair[i] === 1) {
+      if (b2[i] >= 0 || b2[i + 1] >= 0) {
+        preparePoint(c, r, i);
+        preparePoint(c, r, i + 1);
+        prepareCoupling(c, r, i);
       }
-    } else c.lBx[i] = c.lBy[i] = c.mBx[i] = c.mBy[i] = c.rnB[i] = c.rtB[i] = 0;
-    c.wn[i] = wn;
-    c.wt[i] = wt;
-    // A manifold's two points couple through the bodies they share (the 2×2 blocks): K01 along n and along t.
-    if (i > 0 && c.pair[i - 1] === 1 && c.b2[i - 1] < 0 && c.b2[i] < 0) {
-      const j = i - 1;
-      let kn = invMass[ia] + invInertia[ia] * c.rnA[j] * rnA;
-      let kt = invMass[ia] + invInertia[ia] * c.rtA[j] * rtA;
-      if (ib >= 0) {
-        kn += invMass[ib] + invInertia[ib] * c.rnB[j] * c.rnB[i];
-        kt += invMass[ib] + invInertia[ib] * c.rtB[j] * c.rtB[i];
-      }
-      c.kn01[j] = kn;
-      c.kt01[j] = kt;
+      i++;
+    } else if (b2[i] >= 0) preparePoint(c, r, i);
+  }
+}
+
+/** Point i's levers, cross products and weights (the general path's prepare). */
+function preparePoint(c: RigidContacts, r: BodyRows, i: number): void {
+  const { rc, rs, invMass, invInertia } = r;
+  const ia = c.a[i];
+  const ib = c.b[i];
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  let cs = rc[ia];
+  let sn = rs[ia];
+  const mAx = cs * c.rAx[i] - sn * c.rAy[i];
+  const mAy = sn * c.rAx[i] + cs * c.rAy[i];
+  const ra = c.radA[i];
+  const lAx = ra > 0 ? nx * ra : mAx;
+  const lAy = ra > 0 ? ny * ra : mAy;
+  c.lAx[i] = lAx;
+  c.lAy[i] = lAy;
+  c.mAx[i] = mAx;
+  c.mAy[i] = mAy;
+  const rnA = lAx * ny - lAy * nx;
+  const rtA = mAx * nx + mAy * ny; // m × t with t = (−ny, nx)
+  c.rnA[i] = rnA;
+  c.rtA[i] = rtA;
+  let wn = invMass[ia] + invInertia[ia] * rnA * rnA;
+  let wt = invMass[ia] + invInertia[ia] * rtA * rtA;
+  c.lBx[i] = c.lBy[i] = c.mBx[i] = c.mBy[i] = c.rnB[i] = c.rtB[i] = 0;
+  if (ib >= 0) {
+    if (c.b2[i] >= 0) {
+      const al = c.alpha[i];
+      const be = 1 - al;
+      const w = be * be * invMass[ib] + al * al * invMass[c.b2[i]];
+      wn += w;
+      wt += w;
+    } else {
+      cs = rc[ib];
+      sn = rs[ib];
+      const mBx = cs * c.rBx[i] - sn * c.rBy[i];
+      const mBy = sn * c.rBx[i] + cs * c.rBy[i];
+      const rb = c.radB[i];
+      const lBx = rb > 0 ? -nx * rb : mBx;
+      const lBy = rb > 0 ? -ny * rb : mBy;
+      c.lBx[i] = lBx;
+      c.lBy[i] = lBy;
+      c.mBx[i] = mBx;
+      c.mBy[i] = mBy;
+      const rnB = lBx * ny - lBy * nx;
+      const rtB = mBx * nx + mBy * ny;
+      c.rnB[i] = rnB;
+      c.rtB[i] = rtB;
+      wn += invMass[ib] + invInertia[ib] * rnB * rnB;
+      wt += invMass[ib] + invInertia[ib] * rtB * rtB;
     }
   }
+  c.wn[i] = wn;
+  c.wt[i] = wt;
+}
+
+/**
+ * The couplings K01 along n and t of a manifold's two points i, i + 1 (the 2×2 blocks) through the bodies they
+ * share: A, and B when both points are on the same rigid body or particle (an edge point's B side is left out).
+ */
+function prepareCoupling(c: RigidContacts, r: BodyRows, i: number): void {
+  const j = i + 1;
+  const ia = c.a[i];
+  const ib = c.b[i];
+  const { invMass, invInertia } = r;
+  let kn = invMass[ia] + invInertia[ia] * c.rnA[i] * c.rnA[j];
+  let kt = invMass[ia] + invInertia[ia] * c.rtA[i] * c.rtA[j];
+  if (ib >= 0 && c.b2[i] < 0 && c.b2[j] < 0 && c.b[j] === ib) {
+    kn += invMass[ib] + invInertia[ib] * c.rnB[i] * c.rnB[j];
+    kt += invMass[ib] + invInertia[ib] * c.rtB[i] * c.rtB[j];
+  }
+  c.kn01[i] = kn;
+  c.kt01[i] = kt;
 }
 
 /**
@@ -200,9 +223,9 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
  * second and throw it sideways.
  */
 export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
-  const { x, y, angle, qangle, invMass, invInertia } = r;
-  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, mAx, mAy, mBx, mBy, rBx, rBy } = c;
-  const { rnA, rnB, rtA, rtB, wn, wt, kn01, kt01, allowance, gap, lambdaN, impulseN, impulseT, lambdaT, slip, friction, touched } = c;
+  const { x, y, angle, qangle, rc, rs, invMass, invInertia } = r;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, rAx, rAy, rBx, rBy, radA, radB, lAx, lAy, lBx, lBy } = c;
+  const { rnA, rnB, wn, kn01, allowance, gap, lambdaN, impulseN, impulseT, lambdaT, slip, friction, touched } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     // Edge points of particle-built outlines take the general path.
@@ -215,41 +238,105 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       continue;
     }
     // The common case inline (no calls: they cost more than the arithmetic). B is a row (rigid body, particle) or
-    // the world (ib −1: its point is (rBx, rBy)); each side's point is its lever turned by the angle since prepare.
+    // the world (ib −1: its point is (rBx, rBy)). Each side's point is its lever at the substep's rotation (rc, rs)
+    // turned by the angle since (first order); a round side's normal lever runs from its centre along n.
     const ia = A[i];
     const ib = B[i];
+    const onRow = ib >= 0;
+    const j = i + 1;
     const nx = NX[i];
     const ny = NY[i];
-    const imA = invMass[ia];
-    const iiA = invInertia[ia];
-    const imB = ib >= 0 ? invMass[ib] : 0;
-    const iiB = ib >= 0 ? invInertia[ib] : 0;
+    const cA = rc[ia];
+    const sA = rs[ia];
+    const cB = onRow ? rc[ib] : 1;
+    const sB = onRow ? rs[ib] : 0;
     let dA = angle[ia] - qangle[ia];
-    let dB = ib >= 0 ? angle[ib] - qangle[ib] : 0;
+    let dB = onRow ? angle[ib] - qangle[ib] : 0;
     let ax = x[ia];
     let ay = y[ia];
-    let bx = ib >= 0 ? x[ib] : 0;
-    let by = ib >= 0 ? y[ib] : 0;
-    const j = i + 1;
+    let bx = onRow ? x[ib] : 0;
+    let by = onRow ? y[ib] : 0;
+    // Material levers (m) and normal levers (l) of point i, and of its partner j.
+    const mA0x = cA * rAx[i] - sA * rAy[i];
+    const mA0y = sA * rAx[i] + cA * rAy[i];
+    const mB0x = onRow ? cB * rBx[i] - sB * rBy[i] : 0;
+    const mB0y = onRow ? sB * rBx[i] + cB * rBy[i] : 0;
+    const ra0 = radA[i];
+    const rb0 = radB[i];
+    const lA0x = ra0 > 0 ? nx * ra0 : mA0x;
+    const lA0y = ra0 > 0 ? ny * ra0 : mA0y;
+    const lB0x = onRow && rb0 > 0 ? -nx * rb0 : mB0x;
+    const lB0y = onRow && rb0 > 0 ? -ny * rb0 : mB0y;
     // Overlaps (past their allowance).
-    let g0 = (ax + lAx[i] - dA * lAy[i] - (ib >= 0 ? bx + lBx[i] - dB * lBy[i] : rBx[i])) * nx + (ay + lAy[i] + dA * lAx[i] - (ib >= 0 ? by + lBy[i] + dB * lBx[i] : rBy[i])) * ny - allowance[i];
+    const g0 = (ax + lA0x - dA * lA0y - (onRow ? bx + lB0x - dB * lB0y : rBx[i])) * nx + (ay + lA0y + dA * lA0x - (onRow ? by + lB0y + dB * lB0x : rBy[i])) * ny - allowance[i];
     gap[i] = g0;
+    let mA1x = 0;
+    let mA1y = 0;
+    let mB1x = 0;
+    let mB1y = 0;
+    let lA1x = 0;
+    let lA1y = 0;
+    let lB1x = 0;
+    let lB1y = 0;
     let g1 = -1;
     if (two) {
-      g1 = (ax + lAx[j] - dA * lAy[j] - (ib >= 0 ? bx + lBx[j] - dB * lBy[j] : rBx[j])) * nx + (ay + lAy[j] + dA * lAx[j] - (ib >= 0 ? by + lBy[j] + dB * lBx[j] : rBy[j])) * ny - allowance[j];
+      mA1x = cA * rAx[j] - sA * rAy[j];
+      mA1y = sA * rAx[j] + cA * rAy[j];
+      mB1x = onRow ? cB * rBx[j] - sB * rBy[j] : 0;
+      mB1y = onRow ? sB * rBx[j] + cB * rBy[j] : 0;
+      const ra1 = radA[j];
+      const rb1 = radB[j];
+      lA1x = ra1 > 0 ? nx * ra1 : mA1x;
+      lA1y = ra1 > 0 ? ny * ra1 : mA1y;
+      lB1x = onRow && rb1 > 0 ? -nx * rb1 : mB1x;
+      lB1y = onRow && rb1 > 0 ? -ny * rb1 : mB1y;
+      g1 = (ax + lA1x - dA * lA1y - (onRow ? bx + lB1x - dB * lB1y : rBx[j])) * nx + (ay + lA1y + dA * lA1x - (onRow ? by + lB1y + dB * lB1x : rBy[j])) * ny - allowance[j];
       gap[j] = g1;
     }
-    if (g0 <= 0 && g1 <= 0) continue;
+    if (g0 <= 0 && g1 <= 0) {
+      if (two) i++;
+      continue;
+    }
+    // The manifold acts: its weights, and what the velocity pass (and firstTouch) read, for both points.
+    const imA = invMass[ia];
+    const iiA = invInertia[ia];
+    const imB = onRow ? invMass[ib] : 0;
+    const iiB = onRow ? invInertia[ib] : 0;
+    const rnA0 = lA0x * ny - lA0y * nx;
+    const rnB0 = lB0x * ny - lB0y * nx;
+    const k00 = imA + iiA * rnA0 * rnA0 + (onRow ? imB + iiB * rnB0 * rnB0 : 0);
+    lAx[i] = lA0x;
+    lAy[i] = lA0y;
+    lBx[i] = lB0x;
+    lBy[i] = lB0y;
+    rnA[i] = rnA0;
+    rnB[i] = rnB0;
+    wn[i] = k00;
+    let rnA1 = 0;
+    let rnB1 = 0;
+    let k11 = 0;
+    let k01 = 0;
+    if (two) {
+      rnA1 = lA1x * ny - lA1y * nx;
+      rnB1 = lB1x * ny - lB1y * nx;
+      k11 = imA + iiA * rnA1 * rnA1 + (onRow ? imB + iiB * rnB1 * rnB1 : 0);
+      k01 = imA + iiA * rnA0 * rnA1 + (onRow ? imB + iiB * rnB0 * rnB1 : 0);
+      lAx[j] = lA1x;
+      lAy[j] = lA1y;
+      lBx[j] = lB1x;
+      lBy[j] = lB1y;
+      rnA[j] = rnA1;
+      rnB[j] = rnB1;
+      wn[j] = k11;
+      kn01[i] = k01;
+    }
     if (g0 > 0 && touched[i] === 0) firstTouch(c, r, i);
     if (g1 > 0 && touched[j] === 0) firstTouch(c, r, j);
     // Normal corrections: one point, or a manifold's two by the 2×2 block (one after the other when it would pull).
     let l0 = 0;
     let l1 = 0;
-    const k00 = wn[i];
     if (!two) l0 = k00 > 0 ? g0 / k00 : 0;
     else {
-      const k11 = wn[j];
-      const k01 = kn01[i];
       const det = k00 * k11 - k01 * k01;
       if (g0 > 0 && g1 > 0 && det > 1e-9 * k00 * k11) {
         l0 = (k11 * g0 - k01 * g1) / det;
@@ -276,15 +363,15 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       ay -= imA * ln * ny;
       x[ia] = ax;
       y[ia] = ay;
-      const tA = iiA * (l0 * rnA[i] + (two ? l1 * rnA[j] : 0));
+      const tA = iiA * (l0 * rnA0 + (two ? l1 * rnA1 : 0));
       angle[ia] -= tA;
       dA -= tA;
-      if (ib >= 0) {
+      if (onRow) {
         bx += imB * ln * nx;
         by += imB * ln * ny;
         x[ib] = bx;
         y[ib] = by;
-        const tB = iiB * (l0 * rnB[i] + (two ? l1 * rnB[j] : 0));
+        const tB = iiB * (l0 * rnB0 + (two ? l1 * rnB1 : 0));
         angle[ib] += tB;
         dB += tB;
       }
@@ -302,17 +389,24 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       if (two) i++;
       continue;
     }
-    let drift = -(ax + mAx[i] - dA * mAy[i] - (ib >= 0 ? bx + mBx[i] - dB * mBy[i] : rBx[i])) * ny + (ay + mAy[i] + dA * mAx[i] - (ib >= 0 ? by + mBy[i] + dB * mBx[i] : rBy[i])) * nx;
-    let la = rtA[i];
-    let lb = rtB[i];
-    let w = wt[i];
+    let drift = -(ax + mA0x - dA * mA0y - (onRow ? bx + mB0x - dB * mB0y : rBx[i])) * ny + (ay + mA0y + dA * mA0x - (onRow ? by + mB0y + dB * mB0x : rBy[i])) * nx;
+    // Cross products of the material levers with t = (−ny, nx), and the weight along t.
+    const rtA0 = mA0x * nx + mA0y * ny;
+    const rtB0 = mB0x * nx + mB0y * ny;
+    let la = rtA0;
+    let lb = rtB0;
+    let w = imA + iiA * rtA0 * rtA0 + (onRow ? imB + iiB * rtB0 * rtB0 : 0);
     let load = impulseN[i];
     if (two) {
-      const drift1 = -(ax + mAx[j] - dA * mAy[j] - (ib >= 0 ? bx + mBx[j] - dB * mBy[j] : rBx[j])) * ny + (ay + mAy[j] + dA * mAx[j] - (ib >= 0 ? by + mBy[j] + dB * mBx[j] : rBy[j])) * nx;
+      const drift1 = -(ax + mA1x - dA * mA1y - (onRow ? bx + mB1x - dB * mB1y : rBx[j])) * ny + (ay + mA1y + dA * mA1x - (onRow ? by + mB1y + dB * mB1x : rBy[j])) * nx;
+      const rtA1 = mA1x * nx + mA1y * ny;
+      const rtB1 = mB1x * nx + mB1y * ny;
+      const w1 = imA + iiA * rtA1 * rtA1 + (onRow ? imB + iiB * rtB1 * rtB1 : 0);
+      const kt01 = imA + iiA * rtA0 * rtA1 + (onRow ? imB + iiB * rtB0 * rtB1 : 0);
       drift = 0.5 * (drift + drift1);
-      la = 0.5 * (la + rtA[j]);
-      lb = 0.5 * (lb + rtB[j]);
-      w = 0.25 * (wt[i] + wt[j]) + 0.5 * kt01[i];
+      la = 0.5 * (la + rtA1);
+      lb = 0.5 * (lb + rtB1);
+      w = 0.25 * (w + w1) + 0.5 * kt01;
       load += impulseN[j];
     }
     drift -= slip[i];
@@ -332,7 +426,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       x[ia] = ax + imA * dt * ny;
       y[ia] = ay - imA * dt * nx;
       angle[ia] -= iiA * la * dt;
-      if (ib >= 0) {
+      if (onRow) {
         x[ib] = bx - imB * dt * ny;
         y[ib] = by + imB * dt * nx;
         angle[ib] += iiB * lb * dt;
