@@ -205,6 +205,14 @@ export class SceneRenderer {
     this.dirty = true;
   }
 
+  /**
+   * True while the canvas does not show the newest frame or a change yet (it will at the next animation frame on
+   * screen); false once it does (tests wait for that instead of counting drawings).
+   */
+  get drawPending(): boolean {
+    return !this.removed && (!this.ready || this.changed());
+  }
+
   /** True once p5 has made the canvas. */
   get isReady(): boolean {
     return this.ready;
@@ -304,8 +312,10 @@ export class SceneRenderer {
     const view = this.viewNow();
     if (this.dirty || this.shownAlpha < 1 || t !== this.shownTopology || view.some((v, k) => v !== this.shownView[k])) return true;
     if (frames.received === this.shownReceived) return false;
+    if (this.hook !== null || !sameContent(frames.curr, this.shown)) return true;
+    // Compared once: the same content as shown.
     this.shownReceived = frames.received;
-    return this.hook !== null || !sameContent(frames.curr, this.shown);
+    return false;
   }
 
   /** Notes what this drawing shows, for changed(). */

@@ -25,7 +25,8 @@ export interface StageView {
 export type Renderer = Pick<
   SceneRenderer,
   'viewWidth' | 'viewHeight' | 'background' | 'debug' | 'drawMode' | 'hook' | 'drawn' | 'canvas' | 'setLooping' | 'setStyle' | 'deleteStyle' | 'worldToCanvas' | 'canvasToWorld' | 'dispose'
->;
+> &
+  Partial<Pick<SceneRenderer, 'drawPending'>>;
 
 export type RendererFactory = (container: HTMLElement, source: () => FrameSource | null) => Renderer;
 
@@ -59,6 +60,11 @@ export class StageController implements ReactiveController {
   /** Frames drawn so far (0 without a renderer). */
   get drawn(): number {
     return this.renderer?.drawn ?? 0;
+  }
+
+  /** True while the canvas does not show the newest frame or a change yet (see SceneRenderer.drawPending). */
+  get drawPending(): boolean {
+    return this.renderer?.drawPending ?? false;
   }
 
   /** The canvas, once p5 has made it. */
