@@ -7,7 +7,9 @@
 //   `import 'physics-elements'` (Rollup + terser, tree-shaken, package.json's sideEffects honoured; lit, comlink and p5
 //   left out). The second is "engine + elements": the engine once (the page holds it for the main-thread fallback),
 //   the elements, the renderer and the worker client; not the worker chunk, which runs the same engine.
-// - lit + comlink as the elements use them, and p5, for comparison.
+// - lit + comlink as the elements use them, and p5: the pieces the builds ship (src/render/p5/modules.js, bundled by
+//   src/render/p5/bundle.mjs) and the whole library, for comparison.
+// - p5's share of the single file: the file with p5 minus the same file without it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
@@ -15,6 +17,7 @@ import { fileURLToPath } from 'node:url';
 import { rollup } from 'rollup';
 import nodeResolve from '@rollup/plugin-node-resolve';
 import terser from '@rollup/plugin-terser';
+import { bundleP5 } from '../src/render/p5/bundle.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = resolve(root, 'dist');
@@ -72,11 +75,17 @@ add('headless engine only', [fileSize(resolve(dist, 'engine/index.js'))]);
 // What the elements import from lit and comlink (src/ imports lit, lit/decorators.js, lit/directives/if-defined.js).
 const deps = 'export * from "lit"; export * from "lit/decorators.js"; export * from "lit/directives/if-defined.js"; export * as Comlink from "comlink";';
 add('lit + comlink (for comparison)', [await bundled('lit + comlink', deps)]);
+{
+  const bytes = Buffer.from(await bundleP5());
+  add('p5 as the builds ship it: core + shape + color + math (docs/drawing.md)', [{ file: 'src/render/p5/modules.js, bundled', raw: bytes.length, gzip: gzip(bytes) }]);
+}
 const p5 = resolve(root, 'node_modules/p5/lib/p5.esm.min.js');
-if (existsSync(p5)) add('p5 itself (for comparison)', [fileSize(p5)]);
+if (existsSync(p5)) add('all of p5 (for comparison)', [fileSize(p5)]);
+const [withP5, withoutP5] = rows;
+const share = { raw: withP5.raw - withoutP5.raw, gzip: withP5.gzip - withoutP5.gzip };
 
 if (process.argv.includes('--json')) {
-  console.log(JSON.stringify(rows, null, 2));
+  console.log(JSON.stringify({ rows, p5Share: share }, null, 2));
 } else {
   const kb = (n) => (n / 1024).toFixed(1);
   const many = (r, key) => (r.files.length > 1 ? ` (${r.files.map((p) => kb(p[key])).join(' + ')})` : '');
@@ -85,4 +94,5 @@ if (process.argv.includes('--json')) {
     const files = r.files.map((p) => (p.file.includes('/') ? '`' + p.file.replace(/^node_modules\//, '').replace(/-[\w-]{8}\.js$/, '-[hash].js') + '`' : p.file)).join(' + ');
     console.log(`| ${r.name} | ${files} | ${kb(r.raw)} KB${many(r, 'raw')} | **${kb(r.gzip)} KB**${many(r, 'gzip')} |`);
   }
+  console.log(`\np5's share of the single file: ${kb(share.gzip)} KB of ${kb(withP5.gzip)} KB gzip (${((100 * share.gzip) / withP5.gzip).toFixed(0)}%), ${kb(share.raw)} KB raw.`);
 }

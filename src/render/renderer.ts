@@ -40,6 +40,11 @@ export interface DrawView {
   offsetY: number;
   /** Blend factor between the two newest frames that was used. */
   alpha: number;
+  /**
+   * Draws again at the next animation frame. A scene draws only when something changes (docs/drawing.md): a hook that
+   * animates by itself while the scene is idle calls this to be drawn again.
+   */
+  requestDraw: () => void;
 }
 
 export type DrawHook = (view: DrawView) => void;
@@ -386,7 +391,7 @@ export class SceneRenderer {
     if (this.hook) {
       ctx.save();
       try {
-        const v = (this.view ??= { p: s, ctx, positions: this.positions, poses: this.poses, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha });
+        const v = (this.view ??= { p: s, ctx, positions: this.positions, poses: this.poses, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha, requestDraw: () => this.requestDraw() });
         v.ctx = ctx;
         v.positions = this.positions;
         v.poses = this.poses;

@@ -71,11 +71,11 @@ describe('SceneRenderer', () => {
     } as typeof proto.stroke;
     try {
       // The frame never changes: the hook asks to be drawn again.
-      renderer.hook = () => {
+      renderer.hook = (view) => {
         perFrame.push([fills, strokes]);
         fills = 0;
         strokes = 0;
-        renderer!.requestDraw();
+        view.requestDraw();
       };
       await waitFor(() => perFrame.length >= 4, 'four drawn frames');
     } finally {
