@@ -247,9 +247,14 @@ export class PhysicsSceneElement extends LitElement {
     return this.session.engine?.transport ?? null;
   }
 
-  /** Frames drawn so far. */
+  /** Frames drawn so far (a scene draws only when something changes: an idle scene's count stays put). */
   get renderedFrames(): number {
     return this.stage.drawn;
+  }
+
+  /** @internal True while the canvas does not show the newest frame or a change yet (tests wait for it to clear). */
+  get drawPending(): boolean {
+    return this.stage.drawPending;
   }
 
   /** The canvas, once p5 has made it. */
