@@ -57,7 +57,7 @@ describe('WorkerPool (fake workers)', () => {
 
   it('places five worlds in two workers, least-loaded first; each world keeps its own state and frames', async () => {
     const { pool, made } = rig(2);
-    const cs = [];
+    const cs: EngineClient[] = [];
     for (let k = 0; k < 5; k++) cs.push(await client(pool));
     expect(made.length).to.equal(2);
     expect(pool.loads).to.deep.equal([3, 2]);
@@ -113,7 +113,7 @@ describe('WorkerPool (fake workers)', () => {
   it('an error in a worker: every world in it dies with the reason, the other worker\'s worlds go on; the next world gets a new worker', async () => {
     const { pool, made } = rig(2);
     const deaths: string[][] = [[], [], [], []];
-    const cs = [];
+    const cs: EngineClient[] = [];
     for (let k = 0; k < 4; k++) cs.push(await client(pool, deaths[k]));
     for (const c of cs) await c.api.load(SCENE);
     const pending = cs[0].api.step(1000).catch((e: Error) => e.message);
@@ -177,7 +177,7 @@ describe('WorkerPool (fake workers)', () => {
   it('a worker killed from outside (debugTerminate) is found by the next unanswered call, and all its worlds are told', async () => {
     const { pool, made } = rig(2);
     const deaths: string[][] = [[], [], []];
-    const cs = [];
+    const cs: EngineClient[] = [];
     for (let k = 0; k < 3; k++) cs.push(await EngineClient.start({ pool, timeout: 300, onDeath: (r) => deaths[k].push(r) }));
     clients.push(...cs);
     cs[0].debugTerminate();
