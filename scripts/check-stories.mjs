@@ -1,5 +1,5 @@
 // Checks the gallery (demo/index.html): every story loads with no console error and a non-blank canvas that changes
-// over time; the controls panel edits the markup snippet; a deep link opens its story. Starts and stops its own dev
+// over time (or, for a scene at rest, whose bodies do not move while it steps: an idle scene does not redraw); the controls panel edits the markup snippet; a deep link opens its story. Starts and stops its own dev
 // server on a free port, drives Debian's chromium with playwright-core, keeps a screenshot of every story under
 // artifacts/stories/. Then the engine demo and the report page load without console errors. Usage: node scripts/check-stories.mjs [--only id,id]
 import { mkdirSync } from 'node:fs';
@@ -26,7 +26,7 @@ try {
 
   // A deep link opens its story, with its toggles.
   await page.goto(`${server.url}/demo/#physics-circle?debug=1`);
-  await page.waitForFunction(() => document.querySelector('#stage physics-scene')?.hasAttribute('debug'), null, { timeout: 20000 });
+  await page.waitForFunction(() => document.querySelector('#stage physics-scene')?.hasAttribute('debug'), null, { timeout: 60000 });
   const deep = await page.evaluate(() => ({ title: document.getElementById('story-title').textContent, debug: document.getElementById('t-debug').checked }));
   if (deep.title !== '<physics-circle>' || !deep.debug) failures.push(`deep link: got ${JSON.stringify(deep)}`);
 
@@ -48,7 +48,9 @@ try {
         hash = (Math.imul(hash, 31) + v) | 0;
         if (i % 16 === 0 && colours.size < 50) colours.add(v);
       }
-      return { hash, colours: colours.size };
+      // The bodies' poses and the step count: a canvas that does not change is right only when nothing moved.
+      const poses = [...scene.querySelectorAll('*')].map((c) => scene.poseOf?.(c)?.map((v) => v.toFixed(4)).join(',') ?? '').join(';');
+      return { hash, colours: colours.size, poses, steps: scene.stepCount };
     });
 
   for (const id of ids) {
@@ -57,7 +59,7 @@ try {
     errors = [];
     await page.evaluate((id) => (location.hash = id), id);
     try {
-      await page.waitForFunction((id) => document.querySelector(`#stories a.active`)?.dataset.story === id && document.querySelector('#stage > *')?.renderedFrames > 2, id, { timeout: 15000 });
+      await page.waitForFunction((id) => document.querySelector(`#stories a.active`)?.dataset.story === id && document.querySelector('#stage > *')?.renderedFrames > 2, id, { timeout: 45000 });
       await page.evaluate(() => document.querySelector('#stage > *').ready);
     } catch (e) {
       failures.push(`${id}: never drew (${e.message.split('\n')[0]})`);
@@ -75,7 +77,8 @@ try {
     if (!a || !b) problems.push('no canvas');
     else {
       if (a.colours < 3) problems.push(`blank canvas (${a.colours} colours)`);
-      if (a.hash === b.hash) problems.push('canvas did not change in 2.5 s');
+      const atRest = /\d/.test(a.poses) && a.poses === b.poses && b.steps > a.steps;
+      if (a.hash === b.hash && !atRest) problems.push(a.poses === b.poses ? 'canvas did not change and the scene took no step in 2.5 s' : 'bodies moved but the canvas did not change in 2.5 s');
     }
     const snippet = await page.evaluate(() => document.getElementById('snippet').textContent);
     if (!snippet.startsWith('<')) problems.push('no markup snippet');
