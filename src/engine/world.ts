@@ -24,10 +24,10 @@ import { Kind } from './constraint-registry.js';
 import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js';
 import { BODY_KINDS, DEFAULT_LIMITS, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
-import type { Limits, ParticleOptions, PinOptions, RayCastHit, SpringOptions, Vec2, WorldOptions } from './options.js';
+import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, Vec2, WorldOptions } from './options.js';
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
-import type { JointOptions, MassInfo, Pose, RigidBodyOptions } from './options.js';
+import type { KernelDiagnostics, KernelOptions } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
@@ -55,10 +55,10 @@ export class World {
   /** Everything the world holds. */
   private readonly ctx: StepContext;
 
-  constructor(options: WorldOptions = {}) {
+  constructor(options: WorldOptions & KernelOptions = {}) {
     const o = { ...DEFAULTS, ...options };
     const settings = checkedSettings(o);
-    const ctx = new StepContext(settings, makeBroadPhase(oneOf('broadphase', o.broadphase, BROAD_PHASES), nonNegative('cellSize', o.cellSize)));
+    const ctx = new StepContext(settings, makeBroadPhase(oneOf('broadphase', o.broadphase, BROAD_PHASES), nonNegative('cellSize', o.cellSize)), options.kernel);
     ctx.narrowPhase.mode = oneOf('narrowphase', o.narrowphase, NARROW_PHASES);
     ctx.sleep.enabled = Boolean(o.sleeping);
     const limits = { ...DEFAULT_LIMITS, ...options.limits };
@@ -90,6 +90,8 @@ export class World {
   get measureTimings(): boolean { return this.ctx.measureTimings; }
   set measureTimings(v: boolean) { this.ctx.measureTimings = v; }
   get timings(): { detect: number; solve: number } { return this.ctx.timings; }
+  /** Which solver kernel runs (WorldOptions kernel: 'js' | 'wasm' | 'auto'), and why not WebAssembly if it does not. */
+  diagnostics(): KernelDiagnostics { return { ...this.ctx.kernelDiagnostics }; }
 
   /** Simulated seconds. */
   get time(): number { return this.ctx.time; }

@@ -15,6 +15,8 @@ import { shouldCollide } from './collide.js';
 import { RigidNarrowPhase } from './rigid-narrowphase.js';
 import { RigidAnchorCache, RigidContacts } from '../rigid/contacts.js';
 import { RigidShapes } from '../rigid/shapes.js';
+import { chooseKernel, type KernelDiagnostics } from '../kernel/choice.js';
+import type { WasmKernel } from '../kernel/wasm-kernel.js';
 
 /**
  * Everything a step works on: the particles, the constraint tables and the bodies (with their handle registries),
@@ -93,8 +95,17 @@ export class StepContext {
   readonly bodyAlive = (slot: number): boolean => this.bodies.ids.alive[slot] === 1;
   readonly bodyParticlesOf = (slot: number): Int32Array => this.bodies.particles[slot];
 
+  /** The WebAssembly SIMD kernel when it runs (null: the JS loops), and what World.diagnostics() says about it. */
+  declare readonly kernel: WasmKernel | null;
+  declare readonly kernelDiagnostics: KernelDiagnostics;
+
   constructor(
     readonly settings: StepSettings,
     public broadPhase: BroadPhase,
-  ) {}
+    kernel: unknown = 'js',
+  ) {
+    const chosen = chooseKernel(kernel);
+    // Not enumerable: how the step computes, chosen once, not simulation state (snapshot.ts lists the state fields).
+    Object.defineProperties(this, { kernel: { value: chosen.kernel }, kernelDiagnostics: { value: chosen.diagnostics } });
+  }
 }

@@ -8,6 +8,9 @@
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
+//
+// With the WebAssembly kernel (World option kernel, ctx.kernel), integration, velocities and the distance sweep run in
+// it, over the same columns (kernel/wasm-kernel.ts); every other phase is the same JS function either way.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
@@ -37,6 +40,7 @@ export function step(ctx: StepContext, dt: number): void {
   const t0 = ctx.measureTimings ? performance.now() : 0;
   recordStartPositions(ctx);
   detectCollisions(ctx, dt);
+  ctx.kernel?.beginStep(ctx);
   const t1 = ctx.measureTimings ? performance.now() : 0;
   const n = ctx.settings.substeps;
   const h = dt / n;
@@ -58,10 +62,11 @@ export function step(ctx: StepContext, dt: number): void {
 
 /** One substep of length h. */
 export function substep(ctx: StepContext, h: number): void {
-  const { settings, particles } = ctx;
+  const { settings, particles, kernel } = ctx;
   const damp = 1 / (1 + h * settings.damping);
   accelerate(ctx, h);
-  integrate(particles, h, damp, settings.integrator);
+  if (kernel && settings.integrator === 'verlet') kernel.integrateVerlet(particles, h, damp);
+  else integrate(particles, h, damp, settings.integrator);
   const sub = ctx.substepReals;
   sub[0] = h;
   sub[1] = damp;
@@ -74,7 +79,8 @@ export function substep(ctx: StepContext, h: number): void {
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
   ctx.rigidContacts.beginSubstep(settings.maxPushSpeed * h);
   for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
-  updateVelocities(particles, h, settings.integrator);
+  if (kernel && settings.integrator !== 'explicit-euler') kernel.updateVelocities(particles, h);
+  else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
   if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
@@ -147,6 +153,7 @@ function resetMultipliers(ctx: StepContext): void {
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
   if (joints.count > 0) joints.beginSubstep();
   distances.lambda.fill(0, 0, distances.count);
+  ctx.kernel?.resetLambdas();
   angles.lambda.fill(0, 0, angles.count);
   areas.lambda.fill(0, 0, areas.count);
   pins.lambdaX.fill(0, 0, pins.count);
@@ -160,7 +167,8 @@ function relax(ctx: StepContext, h: number): void {
   const p = ctx.particles;
   const h2 = h * h;
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
-  if (distances.count > 0) solveDistances(distances, p, h2);
+  if (ctx.kernel) ctx.kernel.solveDistances(h2);
+  else if (distances.count > 0) solveDistances(distances, p, h2);
   if (angles.count > 0) solveAngles(angles, p, h2);
   if (areas.count > 0) solveAreas(areas, p, h2);
   if (pins.count > 0) solveSoftPins(pins, p, h2);
@@ -176,6 +184,7 @@ function relax(ctx: StepContext, h: number): void {
 function breakLinks(ctx: StepContext): void {
   ctx.breaks.count = 0;
   if (ctx.hasBreakableLinks) breakOverstretched(ctx.constraints.distances, ctx.particles, ctx.recordBreak);
+  if (ctx.breaks.count > 0) ctx.kernel?.distanceLimitsChanged();
 }
 
 function updateSleep(ctx: StepContext, dt: number): void {

@@ -35,6 +35,7 @@ export function ensureTopology(ctx: StepContext): void {
 
 /** Particle → body map, cross-body constraint links and free particles, for sleeping (after any change). */
 export function rebuildTopology(ctx: StepContext): void {
+  ctx.kernel?.topologyChanged();
   if (ctx.collidersDirty) rebuildColliders(ctx);
   const { ids, particles: members } = ctx.bodies;
   const high = ids.high;

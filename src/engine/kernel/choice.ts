@@ -1,0 +1,60 @@
+// Which solver kernel a World runs: the plain JavaScript loops (the reference, everywhere) or the WebAssembly SIMD
+// kernel (wasm-kernel.ts) where the platform has WebAssembly with 128-bit SIMD and the page's Content-Security-Policy
+// allows compiling it (script-src 'wasm-unsafe-eval'). The choice is made once, when the World is made.
+import { oneOf } from '../validate.js';
+import { KERNEL_WASM_BASE64 } from './wasm-bytes.js';
+import { WasmKernel } from './wasm-kernel.js';
+
+export const KERNELS = ['js', 'wasm', 'auto'] as const;
+/** 'js': the JavaScript solver; 'wasm': the WebAssembly SIMD kernel (JS, with one warning, where it cannot run);
+ *  'auto': the WebAssembly kernel where it can run, silently JS elsewhere. */
+export type KernelChoice = (typeof KERNELS)[number];
+
+export interface KernelOptions {
+  /** The solver kernel. Default 'js' (see KernelChoice). */
+  kernel?: KernelChoice;
+}
+
+/** What a World says about its kernel (World.diagnostics()). */
+export interface KernelDiagnostics {
+  /** The kernel that runs. */
+  kernel: 'js' | 'wasm';
+  /** The kernel asked for. */
+  requested: KernelChoice;
+  /** Why the WebAssembly kernel does not run ('' when it runs or was not asked for). */
+  reason: string;
+}
+
+let compiled: WebAssembly.Module | string | undefined;
+
+/** The kernel's module, compiled once per realm, or why it cannot be. */
+function kernelModule(): WebAssembly.Module | string {
+  if (compiled !== undefined) return compiled;
+  if (typeof WebAssembly !== 'object') return (compiled = 'this platform has no WebAssembly');
+  const bytes = Uint8Array.from(atob(KERNEL_WASM_BASE64), (ch) => ch.charCodeAt(0));
+  if (!WebAssembly.validate(bytes)) return (compiled = 'this platform has WebAssembly without 128-bit SIMD');
+  try {
+    compiled = new WebAssembly.Module(bytes);
+  } catch (error) {
+    // A page whose Content-Security-Policy lacks 'wasm-unsafe-eval' refuses to compile WebAssembly (a CompileError).
+    compiled = `WebAssembly was refused (${(error as Error).message}); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'`;
+  }
+  return compiled;
+}
+
+/** The kernel for `choice` (null: the JS loops) and what to say about it. Throws a RangeError for a bad choice. */
+export function chooseKernel(choice: unknown = 'js'): { kernel: WasmKernel | null; diagnostics: KernelDiagnostics } {
+  const requested = oneOf('kernel', choice, KERNELS);
+  if (requested === 'js') return { kernel: null, diagnostics: { kernel: 'js', requested, reason: '' } };
+  const module = kernelModule();
+  if (typeof module === 'string') {
+    if (requested === 'wasm') console.warn(`physics-elements: the WebAssembly kernel cannot run, using the JS solver: ${module}`);
+    return { kernel: null, diagnostics: { kernel: 'js', requested, reason: module } };
+  }
+  return { kernel: new WasmKernel(module), diagnostics: { kernel: 'wasm', requested, reason: '' } };
+}
+
+/** For tests: forget the compiled module (so a test can simulate a platform without it). */
+export function resetKernelModule(value?: string): void {
+  compiled = value;
+}
