@@ -1,0 +1,163 @@
+// The solver kernels side by side (issue 16): median ms per step of the same scenes with new World({ kernel: 'js' })
+// and { kernel: 'wasm' }, sleeping off, dt 1/60, default substeps and iterations. Runs alternate between the kernels
+// so a burst of load from elsewhere on the machine lands on both; the load average is printed with the table.
+//
+//   node bench/kernel.mjs                       every scene, 5 runs
+//   node bench/kernel.mjs --runs 3 --scenes cloth200,circles10k
+//   node bench/kernel.mjs --sweep               also time the distance sweep alone (JS loop vs kernel, same arrays)
+import { loadavg } from 'node:os';
+import { gzipSync } from 'node:zlib';
+import { importTs } from '../scripts/build-engine-for-node.mjs';
+
+const arg = (name, fallback) => (process.argv.includes(name) ? process.argv[process.argv.indexOf(name) + 1] : fallback);
+const runs = Number(arg('--runs', 5));
+const engine = await importTs();
+const { World, buildScene, catalogue, createCloth } = engine;
+
+/** Scenes: how to build them and how many steps to warm up and to time. */
+const SCENES = {
+  cloth30: { title: 'S5 cloth 30×30 (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('cloth', kernel) },
+  chain: { title: 'S4 chain, 100 links (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('chain', kernel) },
+  cloth200: {
+    title: '200×200 pinned cloth (bench/cloth.mjs layout)',
+    warm: 10,
+    timed: 40,
+    make: (kernel) => {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel });
+      createCloth(world, { origin: { x: 0, y: 0 }, columns: 200, rows: 200, spacing: 0.5, shear: 0 });
+      return world;
+    },
+  },
+  circles10k: {
+    title: '10,000 circles r 0.5 dropped into a container 100 wide',
+    warm: 30,
+    timed: 30,
+    make: (kernel) => {
+      const base = catalogue.circles.make();
+      const walls = base.bodies.filter((b) => b.static).map((b) => (b.id === 'floor' ? { ...b, width: 102 } : { ...b, x: Math.sign(b.x) * 50.5 }));
+      const circles = Array.from({ length: 10000 }, (_, k) => {
+        const row = Math.floor(k / 80);
+        return { type: 'circle', x: ((k % 80) - 40) * 1.2 + (row % 2 ? 0.3 : -0.3), y: -2 - row * 1.2, radius: 0.5 };
+      });
+      return buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
+    },
+  },
+};
+
+function sceneWorld(name, kernel) {
+  const description = catalogue[name].make();
+  return buildScene({ ...description, world: { ...description.world, sleeping: false, kernel } }).world;
+}
+
+function measure(scene, kernel) {
+  const world = scene.make(kernel);
+  if (world.diagnostics().kernel !== kernel) throw new Error(`asked for ${kernel}, runs ${world.diagnostics().kernel}: ${world.diagnostics().reason}`);
+  for (let k = 0; k < scene.warm; k++) world.step();
+  const t0 = performance.now();
+  for (let k = 0; k < scene.timed; k++) world.step();
+  return { ms: (performance.now() - t0) / scene.timed, strain: world.maxStrain(), particles: world.particleCount, links: world.distances.count };
+}
+
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+const names = arg('--scenes', Object.keys(SCENES).join(',')).split(',');
+const wasmBytes = Buffer.from((await importTs('src/engine/kernel/wasm-bytes.ts')).KERNEL_WASM_BASE64, 'base64');
+const load = [loadavg()[0]];
+console.log(`solver kernels: ${runs} runs alternating, sleeping off, substeps ${new World().substeps} × iterations ${new World().iterations}, Node ${process.version}`);
+console.log('| scene | particles | links | js ms/step | wasm ms/step | wasm/js | max strain js | wasm |');
+console.log('|---|---|---|---|---|---|---|---|');
+for (const name of names) {
+  const scene = SCENES[name];
+  if (!scene) throw new Error(`unknown scene ${name}; scenes: ${Object.keys(SCENES).join(', ')}`);
+  const results = { js: [], wasm: [] };
+  for (let r = 0; r < runs; r++) for (const kernel of r % 2 ? ['wasm', 'js'] : ['js', 'wasm']) results[kernel].push(measure(scene, kernel));
+  const [js, wasm] = [results.js, results.wasm].map((rs) => median(rs.map((r) => r.ms)));
+  const [r] = results.js;
+  const strain = (rs) => `${(median(rs.map((x) => x.strain)) * 100).toFixed(3)}%`;
+  console.log(`| ${scene.title} | ${r.particles} | ${r.links} | ${js.toFixed(3)} | ${wasm.toFixed(3)} | ${(wasm / js).toFixed(2)} | ${strain(results.js)} | ${strain(results.wasm)} |`);
+  load.push(loadavg()[0]);
+}
+console.log(`\nload average (1 min) during the runs: ${load.map((l) => l.toFixed(1)).join(' → ')} on ${(await import('node:os')).cpus().length} cores`);
+console.log(`kernel: ${wasmBytes.length} bytes of WebAssembly, ${gzipSync(wasmBytes).length} gzip`);
+
+if (process.argv.includes('--sweep')) {
+  // The distance sweep alone, on the same arrays: the JS loop (distance.ts) against the kernel's coloured packets.
+  const { solveDistances } = await importTs('src/engine/constraints/distance.ts');
+  for (const size of [30, 200]) {
+    const world = new World({ gravity: { x: 0, y: 10 }, kernel: 'wasm' });
+    createCloth(world, { origin: { x: 0, y: 0 }, columns: size, rows: size, spacing: 0.5, shear: 0 });
+    world.step();
+    const ctx = world.ctx;
+    const h2 = (world.timestep / world.substeps) ** 2;
+    const reps = size > 100 ? 10 : 200;
+    const js = [];
+    const wasm = [];
+    for (let r = 0; r < 11; r++) {
+      let t = performance.now();
+      for (let k = 0; k < reps; k++) solveDistances(ctx.constraints.distances, ctx.particles, h2);
+      js.push((performance.now() - t) / reps);
+      t = performance.now();
+      for (let k = 0; k < reps; k++) ctx.kernel.solveDistances(h2);
+      wasm.push((performance.now() - t) / reps);
+    }
+    console.log(`sweep ${size}×${size} (${ctx.constraints.distances.count} links): js ${median(js).toFixed(4)} ms, wasm ${median(wasm).toFixed(4)} ms, ratio ${(median(wasm) / median(js)).toFixed(2)}`);
+  }
+}
+
+if (process.argv.includes('--f32')) {
+  // The f32x4 experiment (src/engine/kernel/experiment-f32.as, not shipped): the same sweep in four f32 lanes over
+  // float32 copies of x, y and inverse masses, with and without the f64 → f32 → f64 copies an f32 kernel on the
+  // engine's f64 state would pay per iteration.
+  const { compileKernel } = await import('../scripts/build-wasm.mjs');
+  const { colourRows } = await importTs('src/engine/kernel/colour.ts');
+  const { bytes } = await compileKernel(new URL('../src/engine/kernel/experiment-f32.as', import.meta.url).pathname);
+  for (const size of [30, 200]) {
+    const world = new World({ gravity: { x: 0, y: 10 }, kernel: 'wasm' });
+    createCloth(world, { origin: { x: 0, y: 0 }, columns: size, rows: size, spacing: 0.5, shear: 0 });
+    world.step();
+    const { particles: p, constraints, kernel } = world.ctx;
+    const c = constraints.distances;
+    const rows = colourRows(c.count, c.a, c.b, p.invMass, 4);
+    const n = p.x.length;
+    const packets = rows.length / 4;
+    const bytesNeeded = 3 * n * 4 + packets * 96 + 2 * n * 8 + 64;
+    const memory = new WebAssembly.Memory({ initial: Math.ceil(bytesNeeded / 65536) + 1 });
+    const { exports } = new WebAssembly.Instance(new WebAssembly.Module(bytes), { env: { memory } });
+    const [X, Y, W, P, X64] = [0, n * 4, 2 * n * 4, 3 * n * 4, 3 * n * 4 + packets * 96];
+    const f32 = new Float32Array(memory.buffer);
+    const i32 = new Int32Array(memory.buffer);
+    f32.set(p.x, X / 4);
+    f32.set(p.y, Y / 4);
+    f32.set(p.invMass, W / 4);
+    new Float64Array(memory.buffer, X64, n).set(p.x);
+    for (let lane = 0; lane < rows.length; lane++) {
+      const row = rows[lane];
+      const base = (P >> 2) + (lane >> 2) * 24;
+      const l = lane & 3;
+      i32[base + l] = row < 0 ? 0 : c.a[row] * 4;
+      i32[base + 4 + l] = row < 0 ? 0 : c.b[row] * 4;
+      f32[base + 8 + l] = row < 0 ? 0 : c.minLength[row];
+      f32[base + 12 + l] = row < 0 ? Infinity : c.maxLength[row];
+      f32[base + 16 + l] = row < 0 ? 0 : c.compliance[row];
+    }
+    const h2 = (world.timestep / world.substeps) ** 2;
+    const reps = size > 100 ? 10 : 200;
+    const t = { f64x2: [], f32x4: [], f32x4copies: [] };
+    for (let r = 0; r < 11; r++) {
+      let t0 = performance.now();
+      for (let k = 0; k < reps; k++) kernel.solveDistances(h2);
+      t.f64x2.push((performance.now() - t0) / reps);
+      t0 = performance.now();
+      for (let k = 0; k < reps; k++) exports.solveDistances32(X, Y, W, P, packets, h2);
+      t.f32x4.push((performance.now() - t0) / reps);
+      t0 = performance.now();
+      for (let k = 0; k < reps; k++) {
+        // x and y down to f32 and back up (measured on one f64 column twice each way).
+        for (let m = 0; m < 2; m++) exports.demote(X64, X, n);
+        exports.solveDistances32(X, Y, W, P, packets, h2);
+        for (let m = 0; m < 2; m++) exports.promote(X, X64, n);
+      }
+      t.f32x4copies.push((performance.now() - t0) / reps);
+    }
+    console.log(`sweep ${size}×${size}: f64x2 (shipped) ${median(t.f64x2).toFixed(4)} ms, f32x4 ${median(t.f32x4).toFixed(4)} ms, f32x4 with the copies ${median(t.f32x4copies).toFixed(4)} ms`);
+  }
+}
