@@ -9,14 +9,22 @@ import { deferred, FakeEngine, makeHost, settle, type FakeHost } from './fakes.j
 
 const SCENE: HostScene = { world: { bounds: null }, params: { iterations: 2 }, bodies: [], links: [], running: true };
 
-/** A session on a fake host; `wait` stands for the paint and the task a start waits for (default: none). */
-function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait: (before: 'canvas' | 'engine') => Promise<void> = async () => {}) {
+/**
+ * A session on a fake host; `wait` stands for the paint and the task a start waits for (default: none), `nearby` for
+ * the scene coming near the viewport (default: none; `demand` is logged).
+ */
+function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait: (before: 'canvas' | 'engine') => Promise<void> = async () => {}, nearby?: () => Promise<void>) {
   const host = makeHost();
   const log: string[] = [];
   const failed: string[] = [];
   const refused: HostError[] = [];
   const loaded: { engine: Engine; errors: HostError[] }[] = [];
   const session = new EngineSession(host, {
+    nearby: nearby && (() => {
+      log.push('wait until near');
+      return nearby();
+    }),
+    demand: () => log.push('demand'),
     wait: (before) => {
       log.push(`wait for ${before}`);
       return wait(before);
@@ -64,6 +72,31 @@ describe('EngineSession', () => {
     expect(r.session.shown).to.equal(engine);
     expect(r.session.generation).to.equal(1);
     expect(await r.session.whenReady()).to.equal(engine);
+  });
+
+  it('waits until the scene is near the viewport before anything (canvas, engine); whenReady() asks for the scene', async () => {
+    const near = deferred<void>();
+    const r = rig(undefined, undefined, () => near.promise);
+    host = r.host;
+    document.body.append(host);
+    await settle();
+    expect(r.log).to.deep.equal(['wait until near']);
+    const engine = r.session.whenReady();
+    expect(r.log).to.deep.equal(['wait until near', 'demand']);
+    near.resolve();
+    expect(await engine).to.not.equal(null);
+    expect(r.log).to.deep.equal(['wait until near', 'demand', 'wait for canvas', 'prepare', 'wait for engine', 'connect', 'describe', 'loaded', 'settled']);
+    // A scene that left the document while it waited: its start is stale and ends without an engine.
+    const far = deferred<void>();
+    const other = rig(undefined, undefined, () => far.promise);
+    document.body.append(other.host);
+    await settle();
+    other.host.remove();
+    other.session.stop();
+    far.resolve();
+    await settle();
+    expect(other.log).to.deep.equal(['wait until near']);
+    expect(other.session.engine).to.equal(null);
   });
 
   it('a stop while the engine is being made: that engine is disposed, nothing loads, callers of ready go on', async () => {
