@@ -9,6 +9,7 @@
 // (a heap allocation each time); the helpers take integers and pass reals through typed arrays.
 import type { BodyRows } from './rows.js';
 import type { RigidContacts } from './contacts.js';
+import { grown } from '../table.js';
 
 /** Approach speeds below this do not bounce (resting contacts would jitter otherwise). */
 export const BOUNCE_THRESHOLD = 0.5;
@@ -33,6 +34,7 @@ const vel = new Float64Array(4);
  * than its overlap test, and the sweep writes what the velocity pass reads only for the points that act.
  */
 export function prepareRigidContacts(c: RigidContacts, r: BodyRows): void {
+  if (!c.shockReady) orderForShock(c, r);
   const { b2, pair } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     if (pair[i] === 1) {
@@ -433,7 +435,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       }
     }
     if (two) i++;
-  }
+  }  if (c.shockCount > 0) shockSweep(c, r);
 }
 
 /** A lone point on the general path (B an edge point of a particle-built outline). */
@@ -545,6 +547,143 @@ function frictionPair(c: RigidContacts, r: BodyRows, i: number): void {
   lev[0] = 0.5 * (c.rtA[i] + c.rtA[i + 1]);
   lev[1] = 0.5 * (c.rtB[i] + c.rtB[i + 1]);
   hold(c, r, i, 2);
+}
+
+// ---- shock propagation ------------------------------------------------------------------------------------------
+
+/** Inverse masses this many times apart across a contact switch the shock sweep on for the step. */
+export const SHOCK_MASS_RATIO = 10;
+
+/** Levels beyond this are not told apart (a deeper pile's top is solved as one level). */
+const MAX_LEVEL = 64;
+
+/**
+ * Once a step (the first prepare after detection): when some contact joins two dynamic bodies whose masses differ
+ * SHOCK_MASS_RATIO× or more, each body's level (contacts away from a static body or the world, by relaxation over the
+ * contact graph) and the manifolds between bodies on different levels, lowest first, for the shock sweep. A heavy
+ * body landing on light ones pushes them into each other far faster than one sweep a substep can carry the load
+ * down to the ground (the light boxes give way sideways and a pyramid bursts); the shock sweep (Guendelman et al.
+ * 2003) then clears what overlap is left from the bottom up, moving only the upper body of each contact.
+ */
+export function orderForShock(c: RigidContacts, r: BodyRows): void {
+  c.shockReady = true;
+  c.shockCount = 0;
+  const { a: A, b: B, b2: B2, pair } = c;
+  const { invMass } = r;
+  const n = c.count;
+  let needed = false;
+  for (let i = 0; i < n && !needed; i++) {
+    const ib = B[i];
+    if (ib < 0 || B2[i] >= 0) continue;
+    const ma = invMass[A[i]];
+    const mb = invMass[ib];
+    needed = ma > 0 && mb > 0 && (ma > SHOCK_MASS_RATIO * mb || mb > SHOCK_MASS_RATIO * ma);
+  }
+  if (!needed) return;
+  if (c.level.length < invMass.length) c.level = grown(c.level, invMass.length);
+  if (c.shockOrder.length < n) c.shockOrder = grown(c.shockOrder, n);
+  const level = c.level;
+  for (let i = 0; i < n; i++) {
+    level[A[i]] = invMass[A[i]] > 0 ? MAX_LEVEL : 0;
+    if (B[i] >= 0) level[B[i]] = invMass[B[i]] > 0 ? MAX_LEVEL : 0;
+  }
+  for (let pass = 0, changed = true; changed && pass < MAX_LEVEL; pass++) {
+    changed = false;
+    for (let i = 0; i < n; i++) {
+      if (B2[i] >= 0) continue;
+      const ia = A[i];
+      const ib = B[i];
+      const la = level[ia];
+      const lb = ib >= 0 ? level[ib] : 0;
+      if (la > lb + 1) {
+        level[ia] = lb + 1;
+        changed = true;
+      } else if (ib >= 0 && lb > la + 1) {
+        level[ib] = la + 1;
+        changed = true;
+      }
+    }
+  }
+  // Counting sort of the manifolds between different levels by their lower side's level.
+  const start = c.levelStart;
+  start.fill(0);
+  for (let pass = 0; pass < 2; pass++) {
+    for (let i = 0; i < n; i++) {
+      const two = pair[i] === 1;
+      const ib = B[i];
+      const la = level[A[i]];
+      const lb = ib >= 0 ? level[ib] : 0;
+      if (B2[i] < 0 && !(two && B2[i + 1] >= 0) && la !== lb) {
+        const key = la < lb ? la : lb;
+        if (pass === 0) start[key + 1]++;
+        else c.shockOrder[start[key]++] = i;
+      }
+      if (two) i++;
+    }
+    if (pass === 0) {
+      for (let k = 1; k <= MAX_LEVEL + 1; k++) start[k] += start[k - 1];
+      c.shockCount = start[MAX_LEVEL + 1];
+    }
+  }
+}
+
+/**
+ * The shock sweep, after the substep's regular sweeps: manifold by manifold from the ground up, what overlap is left
+ * is cleared by moving the upper body only (the lower one, already resting on what is under it, counts as fixed).
+ * Normal corrections only; they do not count as the points' λn (friction and the velocity pass keep the regular
+ * sweep's).
+ */
+function shockSweep(c: RigidContacts, r: BodyRows): void {
+  const { x, y, angle, invMass, invInertia } = r;
+  const level = c.level;
+  for (let k = 0; k < c.shockCount; k++) {
+    const i = c.shockOrder[k];
+    const two = c.pair[i] === 1;
+    const ia = c.a[i];
+    const ib = c.b[i];
+    // The side that moves: B when it is the upper one, else A.
+    const moveB = ib >= 0 && level[ib] > level[ia];
+    const row = moveB ? ib : ia;
+    preparePoint(c, r, i);
+    overlap(c, r, i, 0);
+    let g1 = -1;
+    if (two) {
+      preparePoint(c, r, i + 1);
+      overlap(c, r, i + 1, 4);
+      g1 = pt[4];
+    }
+    const g0 = pt[0];
+    if (g0 <= 0 && g1 <= 0) continue;
+    const im = invMass[row];
+    const ii = invInertia[row];
+    const r0 = moveB ? c.rnB[i] : c.rnA[i];
+    const r1 = two ? (moveB ? c.rnB[i + 1] : c.rnA[i + 1]) : 0;
+    const k00 = im + ii * r0 * r0;
+    const k11 = im + ii * r1 * r1;
+    const k01 = im + ii * r0 * r1;
+    let l0 = 0;
+    let l1 = 0;
+    const det = k00 * k11 - k01 * k01;
+    if (g0 > 0 && g1 > 0 && det > 1e-9 * k00 * k11) {
+      l0 = (k11 * g0 - k01 * g1) / det;
+      l1 = (k00 * g1 - k01 * g0) / det;
+    }
+    if (!(l0 > 0 && l1 > 0)) {
+      if (g0 >= g1) {
+        l0 = g0 / k00;
+        l1 = two ? Math.max(0, (g1 - k01 * l0) / k11) : 0;
+      } else {
+        l1 = g1 / k11;
+        l0 = Math.max(0, (g0 - k01 * l1) / k00);
+      }
+    }
+    // A back along n, or B forward.
+    const s = moveB ? 1 : -1;
+    const ln = s * (l0 + l1);
+    x[row] += im * ln * c.nx[i];
+    y[row] += im * ln * c.ny[i];
+    angle[row] += s * ii * (l0 * r0 + l1 * r1);
+  }
 }
 
 // ---- velocity pass ------------------------------------------------------------------------------------------

@@ -95,9 +95,22 @@ export class RigidContacts extends Table {
    */
   readonly next = new Float64Array(13);
 
+  /**
+   * Shock propagation (see orderForShock in contact-solver.ts), set up once a step when some contact joins bodies
+   * whose masses differ 10× or more: each row's level (contacts away from a static body or the world), and the first
+   * points of the manifolds between bodies on different levels, lowest first. `shockCount` 0: no shock sweep.
+   */
+  shockReady = false;
+  shockCount = 0;
+  shockOrder = new Int32Array(16);
+  level = new Int32Array(16);
+  /** Manifolds per level (a counting sort's buckets). */
+  levelStart = new Int32Array(66);
+
   add(a: number, b: number, b2: number, bodyA: number, bodyB: number, pair: number): void {
     if (this.count === this.a.length) this.reserve(1);
     const i = this.count++;
+    this.shockReady = false;
     const f = this.next;
     this.a[i] = a;
     this.b[i] = b;

@@ -1,6 +1,6 @@
 // Rigid bodies against analytic answers: a disc rolling down a slope, a box holding or sliding on it, bounce heights
 // e²·h, a fast box stopped dead by a thin wall, a domino's toppling time, a revolute pendulum's period, stacks and a
-// pyramid that stand (a heavy box placed on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
+// pyramid that stand (a heavy box placed or dropped on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
 // colliding with rigid bodies.
 import { expect } from 'chai';
 import { createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
@@ -289,6 +289,31 @@ describe('rigid bodies: stacks, pyramids, heavy loads', () => {
     expect(world.bodyPose(onStack).y).to.be.closeTo(-10.5, 0.1);
     expect(world.bodyPose(onPyramid).y).to.be.closeTo(-10.5, 0.1);
     expect(Math.abs(world.bodyPose(onPyramid).x)).to.be.lessThan(0.01);
+  });
+
+  it('a box 100× (and 1000×) heavier dropped from one box height onto a stack and a pyramid leaves them standing', () => {
+    for (const density of [100, 1000]) {
+      const world = new World({ sleeping: false, gravity: { x: 0, y: 10 } });
+      world.addRigidBody({ points: box(40, 0.5), x: 0, y: 0.5, type: 'static' });
+      const stack: Handle[] = [];
+      for (let k = 0; k < 10; k++) stack.push(world.addRigidBody({ points: box(0.5, 0.5), x: -20, y: -(0.5 + k) }));
+      const boxes = pyramid(world, 10);
+      // Their bottoms one box height above the tops.
+      const onStack = world.addRigidBody({ points: box(0.5, 0.5), x: -20, y: -11.5, density });
+      const onPyramid = world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -11.5, density });
+      let tilt = 0;
+      let sank = 0;
+      steps(world, 300, () => {
+        for (const b of [...stack, ...boxes]) tilt = Math.max(tilt, Math.abs(world.bodyPose(b).angle));
+        sank = Math.max(sank, world.bodyPose(onStack).y + 10.5, world.bodyPose(onPyramid).y + 10.5);
+      });
+      expect(tilt, `density ${density}: the most a light box tipped`).to.be.lessThan(0.01);
+      expect(sank, `density ${density}: how far a heavy box sank into the light ones`).to.be.lessThan(0.1);
+      expect(world.bodyPose(onStack).y).to.be.closeTo(-10.5, 0.02);
+      expect(world.bodyPose(onPyramid).y).to.be.closeTo(-10.5, 0.02);
+      expect(Math.abs(world.bodyPose(onPyramid).x)).to.be.lessThan(0.01);
+      expect(Math.abs(world.bodyPose(stack[9]).x + 20)).to.be.lessThan(0.01);
+    }
   });
 });
 
