@@ -4,7 +4,9 @@
 // frame (DevTools protocol TaskDuration / frames), frame interval mean, jitter (standard deviation), p95 and max,
 // long tasks (> 50 ms), physics steps per second. Medians over --runs page loads. Writes
 // bench/results/experiment2.json and experiment2.csv.
-// Usage: node bench/experiment-worker.mjs [--max 2000] [--runs 3] [--seconds 3]
+// Usage: node bench/experiment-worker.mjs [--max 2000] [--runs 3] [--seconds 3] [--bodies N] [--idle]
+//   --bodies N: only scenes of N bodies; --idle: each scene paused once loaded, measured paused (main-thread ms per
+//   second and drawings per second of a still picture). Either one prints its table and writes no results files.
 import { writeFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { chromium } from 'playwright-core';
@@ -17,7 +19,9 @@ const arg = (name, fallback) => {
 const max = arg('max', 2000);
 const runs = arg('runs', 3);
 const seconds = arg('seconds', 3);
-const sizes = [50, 100, 200, 500, 1000, 2000, 5000].filter((n) => n <= max);
+const only = arg('bodies', 0);
+const idle = process.argv.includes('--idle');
+const sizes = only > 0 ? [only] : [50, 100, 200, 500, 1000, 2000, 5000].filter((n) => n <= max);
 const configs = [
   { name: 'main thread', worker: 'none', transfer: false },
   { name: 'worker, SharedArrayBuffer', worker: 'auto', transfer: false },
@@ -40,8 +44,11 @@ try {
     await page.evaluate(() => window.benchResult);
     await page.close();
   }
-  console.log('| bodies | configuration | transport | main-thread ms/frame | fps | frame ms (mean) | jitter ms (sd) | p95 ms | long tasks | steps/s |');
-  console.log('|---|---|---|---|---|---|---|---|---|---|');
+  if (idle) console.log('| bodies (paused) | configuration | transport | main-thread ms/s | drawings/s |\n|---|---|---|---|---|');
+  else {
+    console.log('| bodies | configuration | transport | main-thread ms/frame | fps | frame ms (mean) | jitter ms (sd) | p95 ms | long tasks | steps/s |');
+    console.log('|---|---|---|---|---|---|---|---|---|---|');
+  }
   for (const n of sizes) {
     for (const c of configs) {
       const samples = [];
@@ -57,6 +64,19 @@ try {
         // Task time is read when the page starts and ends its measuring window (window.benchPhase).
         const metric = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
         await page.waitForFunction(() => window.benchPhase === 'measuring', null, { timeout: 60000, polling: 10 });
+        if (idle) {
+          // Paused: a still picture. Busy time and drawings over `seconds` once the pause has taken effect.
+          const drawings = () => page.evaluate(() => document.querySelector('physics-scene').renderedFrames);
+          await page.evaluate(() => (document.querySelector('physics-scene').paused = true));
+          await page.waitForTimeout(500);
+          const [m0, d0, t0] = [await metric(), await drawings(), Date.now()];
+          await page.waitForTimeout(seconds * 1000);
+          const [m1, d1, t1] = [await metric(), await drawings(), Date.now()];
+          await context.close();
+          if (errors.length) throw new Error(`${url}: ${errors.join('; ')}`);
+          samples.push({ transport: c.worker === 'none' ? 'none' : c.transfer ? 'transfer' : 'shared', mainMsPerSecond: ((m1.TaskDuration - m0.TaskDuration) * 1e6) / (t1 - t0), drawingsPerSecond: ((d1 - d0) * 1000) / (t1 - t0) });
+          continue;
+        }
         const m0 = await metric();
         const r = await page.evaluate(() => window.benchResult);
         const m1 = await metric();
@@ -67,6 +87,10 @@ try {
         samples.push(r);
       }
       const pick = (key) => median(samples.map((s) => s[key]));
+      if (idle) {
+        console.log(`| ${n} | ${c.name} | ${samples[0].transport} | ${pick('mainMsPerSecond').toFixed(1)} | ${pick('drawingsPerSecond').toFixed(1)} |`);
+        continue;
+      }
       const row = { bodies: n, configuration: c.name, worker: c.worker, transport: samples[0].transport, mode: samples[0].mode, crossOriginIsolated: samples[0].crossOriginIsolated };
       for (const key of ['mainMsPerFrame', 'scriptMsPerFrame', 'fps', 'frameMs', 'jitterMs', 'p95FrameMs', 'maxFrameMs', 'longTasks', 'longTaskMs', 'stepsPerSecond']) row[key] = pick(key);
       rows.push(row);
@@ -77,6 +101,7 @@ try {
   await browser.close();
   await server.stop();
 }
+if (only > 0 || idle) process.exit(0);
 const summary = {
   date: new Date().toISOString(),
   node: process.version,
