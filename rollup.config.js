@@ -11,12 +11,12 @@ import { rollup } from 'rollup';
 import nodeResolve from '@rollup/plugin-node-resolve';
 import terser from '@rollup/plugin-terser';
 import { transform } from 'esbuild';
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { bundleP5 } from './src/render/p5/bundle.mjs';
 
 const root = dirname(fileURLToPath(import.meta.url));
-const P5_ESM = resolve(root, 'node_modules/p5/lib/p5.esm.min.js');
 
 /** TypeScript → JavaScript with esbuild (TypeScript 7 has no JS API for @rollup/plugin-typescript). */
 function esbuildTs() {
@@ -41,43 +41,26 @@ function esbuildTs() {
 }
 
 /**
- * When p5 2.x is imported, the zod it bundles builds a schema and, to decide whether to compile validators to code,
- * tries `new Function("")` in a try/catch. Under a Content-Security-Policy without 'unsafe-eval' that try fails
- * harmlessly but the browser reports a `script-src eval` violation on every page. Those validators only run with p5's
- * friendly errors, which the renderer turns off: in the file we ship, the try answers "no eval" without trying.
+ * p5 in pieces: the bare specifier 'p5' is src/render/p5/modules.js (p5's core and the addons the renderer ships, see
+ * docs/drawing.md) made into one ES module by esbuild (src/render/p5/bundle.mjs: p5's modules import CommonJS packages;
+ * there p5 never looks for a global p5, which an element with id="p5" would be). About 115 KB gzip against 312 KB for
+ * p5's lib/p5.esm.min.js. Left external (external = true) for the library and the no-p5 size build.
  */
-const P5_EVAL_PROBE = 'try{return new Function(""),!0}catch(e){return!1}';
-
-/**
- * p5's modules end with `typeof p5 !== "undefined" && addon(p5, p5.prototype)`, for the classic build where p5 is a
- * global. In a page, `p5` can be a global that is not ours: an element with id="p5" (named access on window), or
- * another p5 the page loaded; then the first guard passes and the file throws at import ("Cannot set properties of
- * undefined (setting 'applyMatrix')"), and no element is defined. In the file we ship, p5 never looks for a global.
- */
-const P5_GLOBAL_GUARD = /\btypeof p5\b(?![\w$.])/g;
-
-/** p5 v2's package entry imports CommonJS dependencies; use its self-contained ESM build (or leave it external). */
-function p5Esm({ external = false } = {}) {
+function p5Pieces({ external = false } = {}) {
+  const P5_PIECES = '\0p5-pieces';
   return {
-    name: 'p5-esm',
+    name: 'p5-pieces',
     resolveId(source) {
-      if (source === 'p5') return external ? { id: 'p5', external: true } : P5_ESM;
+      if (source === 'p5') return external ? { id: 'p5', external: true } : P5_PIECES;
       return null;
     },
     load(id) {
-      if (id !== P5_ESM) return null;
-      const code = readFileSync(P5_ESM, 'utf8');
-      if (code.split(P5_EVAL_PROBE).length !== 2) this.error(`p5's eval probe (${P5_EVAL_PROBE}) not found once in ${P5_ESM}: update P5_EVAL_PROBE`);
-      return code.replace(P5_EVAL_PROBE, 'return!1');
-    },
-    transform(code, id) {
-      if (!id.includes('/node_modules/p5/') || code.search(P5_GLOBAL_GUARD) < 0) return null;
-      return { code: code.replace(P5_GLOBAL_GUARD, '"undefined"'), map: null };
+      return id === P5_PIECES ? bundleP5() : null;
     },
   };
 }
 
-const basePlugins = (opts = {}) => [p5Esm(opts), esbuildTs(), nodeResolve({ browser: true })];
+const basePlugins = (opts = {}) => [p5Pieces(opts), esbuildTs(), nodeResolve({ browser: true })];
 
 /**
  * `new Worker(new URL('./x.worker.js', import.meta.url), ...)`: Rollup does not follow it by itself. Emit the worker
