@@ -558,23 +558,23 @@ export const SHOCK_MASS_RATIO = 10;
 const MAX_LEVEL = 64;
 
 /**
- * Once a step (the first prepare after detection): when some contact joins two dynamic bodies whose masses differ
- * SHOCK_MASS_RATIO× or more, each body's level (contacts away from a static body or the world, by relaxation over the
- * contact graph) and the manifolds between bodies on different levels, lowest first, for the shock sweep. A heavy
- * body landing on light ones pushes them into each other far faster than one sweep a substep can carry the load
- * down to the ground (the light boxes give way sideways and a pyramid bursts); the shock sweep (Guendelman et al.
- * 2003) then clears what overlap is left from the bottom up, moving only the upper body of each contact.
+ * Once a step (the first prepare after detection): when some contact joins two dynamic rigid bodies whose masses
+ * differ SHOCK_MASS_RATIO× or more, each body's level (contacts away from a static body or the world, by relaxation
+ * over the contact graph) and the manifolds between bodies on different levels, lowest first, for the shock sweep.
+ * A heavy body landing on light ones pushes them into each other far faster than one sweep a substep can carry the
+ * load down to the ground (the light boxes give way sideways and a pyramid bursts); the shock sweep (Guendelman et
+ * al. 2003) then clears what overlap is left from the bottom up, moving only the upper body of each contact.
  */
 export function orderForShock(c: RigidContacts, r: BodyRows): void {
   c.shockReady = true;
   c.shockCount = 0;
   const { a: A, b: B, b2: B2, pair } = c;
-  const { invMass } = r;
+  const { invMass, invInertia } = r;
   const n = c.count;
   let needed = false;
   for (let i = 0; i < n && !needed; i++) {
     const ib = B[i];
-    if (ib < 0 || B2[i] >= 0) continue;
+    if (ib < 0 || B2[i] >= 0 || invInertia[ib] === 0) continue;
     const ma = invMass[A[i]];
     const mb = invMass[ib];
     needed = ma > 0 && mb > 0 && (ma > SHOCK_MASS_RATIO * mb || mb > SHOCK_MASS_RATIO * ma);
@@ -590,7 +590,7 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
   for (let pass = 0, changed = true; changed && pass < MAX_LEVEL; pass++) {
     changed = false;
     for (let i = 0; i < n; i++) {
-      if (B2[i] >= 0) continue;
+      if (!onShockPath(c, r, i)) continue;
       const ia = A[i];
       const ib = B[i];
       const la = level[ia];
@@ -613,7 +613,7 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
       const ib = B[i];
       const la = level[A[i]];
       const lb = ib >= 0 ? level[ib] : 0;
-      if (B2[i] < 0 && !(two && B2[i + 1] >= 0) && la !== lb) {
+      if (la !== lb && onShockPath(c, r, i) && !(two && B2[i + 1] >= 0)) {
         const key = la < lb ? la : lb;
         if (pass === 0) start[key + 1]++;
         else c.shockOrder[start[key]++] = i;
@@ -625,6 +625,15 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
       c.shockCount = start[MAX_LEVEL + 1];
     }
   }
+}
+
+/**
+ * Point i is between rigid bodies, or a rigid body and a static one or the world: particles (ropes, cloth, soft
+ * bodies) stay out of the levels and the shock sweep, and give way as they do without it.
+ */
+function onShockPath(c: RigidContacts, r: BodyRows, i: number): boolean {
+  const ib = c.b[i];
+  return c.b2[i] < 0 && (ib < 0 || r.invMass[ib] === 0 || r.invInertia[ib] > 0);
 }
 
 /**

@@ -159,7 +159,9 @@ export class RigidContacts extends Table {
  * and the manifold's feature bits. (Written, not returned: a returned double is boxed.)
  */
 export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, feature: number): void {
-  f[12] = ((bodyA * 4194304 + (bodyB < 0 ? 4194303 : bodyB)) * 65536 + feature) % 9007199254740991;
+  const key = (bodyA * 4194304 + (bodyB < 0 ? 4194303 : bodyB)) * 65536 + feature;
+  // The remainder only past 2⁵³ (body slots from 32768 on): a double's % is a slow library call.
+  f[12] = key < 9007199254740991 ? key : key % 9007199254740991;
 }
 
 /**
