@@ -46,6 +46,8 @@ export function solveDistances(x: usize, y: usize, invMass: usize, packets: usiz
     // A slack link (lo < hi) whose length is within its limits does nothing; neither does a link between immovables.
     const slack = v128.and(f64x2.ne(lo, hi), v128.and(f64x2.ge(d2, f64x2.mul(lo, lo)), f64x2.le(d2, f64x2.mul(hi, hi))));
     const active = v128.andnot(f64x2.ne(w, zero), slack);
+    // Slack links within their limits (a cloth's tethers, mostly) are batched apart from sticks: skip such packets.
+    if (!v128.any_true(active)) continue;
     let d = f64x2.sqrt(d2);
     // Past the upper limit the error is d − hi; otherwise d − lo (the same when lo = hi).
     const err = v128.bitselect(f64x2.sub(d, hi), f64x2.sub(d, lo), f64x2.gt(d, hi));

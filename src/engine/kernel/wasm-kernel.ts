@@ -116,7 +116,8 @@ export class WasmKernel {
     const saved = COLUMNS.map((name) => p[name].slice(0, capacity));
     // Immovable particles may share a batch: pinned and static ones, not those that only sleep (they wake).
     const awakeInvMass = p.invMass.map((w, i) => (i < p.count ? sleep.awakeInvMass(i, p) : w));
-    this.rows = colourRows(c.count, c.a, c.b, awakeInvMass);
+    const slack = Uint8Array.from(c.minLength.subarray(0, c.count), (lo, row) => (lo === c.maxLength[row] ? 0 : 1));
+    this.rows = colourRows(c.count, c.a, c.b, slack, awakeInvMass);
     const packetCount = this.rows.length / 2;
     const columnBytes = align16((capacity + 2) * 8);
     const packetCapacity = Math.max(packetCount, this.packetCapacity);
