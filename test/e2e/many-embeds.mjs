@@ -8,6 +8,7 @@
 //  - memory per extra embed once all 8 run: renderer processes' PSS (Linux /proc, pids from CDP SystemInfo) and the JS
 //    page's JS heap (after a garbage collection), (8 embeds − 1 embed) / 7 (target ≤ 4 MB of PSS).
 // Each run is a fresh browser. Run after `npm run build`: node test/e2e/many-embeds.mjs [--runs 5] [--strict]
+// [--bundle path/to/physics-elements.bundle.js]
 // (--strict: also exit non-zero when a target is missed; timing on a loaded machine is noisy, so it is off by default).
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -17,7 +18,8 @@ const args = process.argv.slice(2);
 const runsArg = args.includes('--runs') ? Number(args[args.indexOf('--runs') + 1]) : 5;
 const runs = Number.isInteger(runsArg) && runsArg > 0 ? runsArg : 5;
 const strict = args.includes('--strict');
-const bundle = readFileSync(resolve(root, 'dist/physics-elements.bundle.js'));
+const bundlePath = args.includes('--bundle') ? resolve(args[args.indexOf('--bundle') + 1]) : resolve(root, 'dist/physics-elements.bundle.js');
+const bundle = readFileSync(bundlePath);
 const started = Date.now();
 
 const LOREM = 'Cloth is a grid of particles held together by distance constraints; the solver moves each pair back toward its rest length a little at every substep, and gravity and a gentle breeze do the rest. ';

@@ -22,6 +22,12 @@ export type IntersectionWatch = (target: Element, changed: (onScreen: boolean) =
 /** How near the viewport a scene starts: one viewport's size around it. */
 export const NEAR_MARGIN = '100% 100% 100% 100%';
 
+/**
+ * A scene near the viewport but not on it starts once the page is idle (at most this many ms later), so the scenes a
+ * reader sees start first; on screen meanwhile, it starts at once.
+ */
+const OFF_SCREEN_START_MS = 1000;
+
 export interface VisibilityOptions {
   /** On screen or the page's visibility changed. */
   changed(): void;
@@ -61,6 +67,8 @@ export class VisibilityController implements ReactiveController {
   /** Near the viewport once (or asked for by a script) since connected: the scene may start. */
   private near = false;
   private nearWatch: { disconnect(): void } | null = null;
+  /** Near but not on screen: the idle callback (or timer) that will start it. */
+  private nearSoon: (() => void) | null = null;
   /** Starts waiting for the scene to come near. */
   private nearWaiters: (() => void)[] = [];
   private motionChecked = false;
@@ -160,13 +168,14 @@ export class VisibilityController implements ReactiveController {
       if (this.intersection) {
         this.watch = this.intersection(this.host, (inView) => {
           this.inView = inView;
+          if (inView && this.nearWatch) this.nowNear();
           this.options.changed();
         });
         track('observers', 1);
       }
       if (!this.near) {
         if (this.nearby) {
-          this.nearWatch = this.nearby(this.host, (near) => near && this.nowNear(), NEAR_MARGIN);
+          this.nearWatch = this.nearby(this.host, (near) => near && (this.inView ? this.nowNear() : this.nearWhenIdle()), NEAR_MARGIN);
           track('observers', 1);
           // A watch that answered at once.
           if (this.near) this.stopNearWatch();
@@ -194,7 +203,21 @@ export class VisibilityController implements ReactiveController {
     this.releaseNear();
   }
 
+  /** Near, not on screen: starts when the page is idle, after the scenes on screen. */
+  private nearWhenIdle(): void {
+    if (this.nearSoon) return;
+    if (typeof requestIdleCallback === 'function') {
+      const id = requestIdleCallback(() => this.nowNear(), { timeout: OFF_SCREEN_START_MS });
+      this.nearSoon = () => cancelIdleCallback(id);
+    } else {
+      const id = setTimeout(() => this.nowNear(), OFF_SCREEN_START_MS / 4);
+      this.nearSoon = () => clearTimeout(id);
+    }
+  }
+
   private stopNearWatch(): void {
+    this.nearSoon?.();
+    this.nearSoon = null;
     if (!this.nearWatch) return;
     this.nearWatch.disconnect();
     this.nearWatch = null;

@@ -111,7 +111,7 @@ describe('VisibilityController', () => {
     let again = false;
     await r.visibility.whenNear().then(() => (again = true));
     expect(again).to.equal(true);
-    // Out of the document and back: it waits to come near again.
+    // Out of the document and back: it waits to come near again; coming on screen, it starts at once.
     host.remove();
     document.body.append(host);
     expect(r.nearWatching()).to.equal(1);
@@ -119,9 +119,34 @@ describe('VisibilityController', () => {
     void r.visibility.whenNear().then(() => (third = true));
     await Promise.resolve();
     expect(third).to.equal(false);
+    r.scroll(true);
+    await Promise.resolve();
+    expect([third, r.nearWatching()]).to.deep.equal([true, 0]);
+  });
+
+  it('near but not on screen: it starts when the page is idle, after the scenes on screen (or at once when it comes on screen)', async () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    r.scroll(false);
+    let near = false;
+    void r.visibility.whenNear().then(() => (near = true));
     r.approach(true);
     await Promise.resolve();
-    expect(third).to.equal(true);
+    expect(near).to.equal(false);
+    await new Promise((resolve) => requestIdleCallback(resolve, { timeout: 2000 }));
+    await new Promise((resolve) => setTimeout(resolve, 0));
+    expect([near, r.nearWatching()]).to.deep.equal([true, 0]);
+    // Out and back, near off screen, then on screen before the page is idle: at once.
+    host.remove();
+    document.body.append(host);
+    r.scroll(false);
+    let again = false;
+    void r.visibility.whenNear().then(() => (again = true));
+    r.approach(true);
+    r.scroll(true);
+    await Promise.resolve();
+    expect(again).to.equal(true);
   });
 
   it('demand() (a script asks for the scene) ends the wait wherever it is; leaving the document lets a waiting start go', async () => {
