@@ -14,8 +14,6 @@ import { PAINTERS, type BodyPainter, type BodyStyle, type Pen } from './bodies/i
 
 export type { BodyStyle } from './bodies/index.js';
 
-p5.disableFriendlyErrors = true;
-
 const TAU = Math.PI * 2;
 
 /** What a custom drawing hook receives each frame. */
@@ -146,6 +144,9 @@ export class SceneRenderer {
   ) {
     // p5 pushes a 'remove' hook per instance onto a static list and never takes it off, which would keep every
     // removed sketch (and its canvas) alive: note ours, and take them off after remove().
+    // Set here, not when this module loads: the builds' p5 runs its code on first use (src/render/p5/bundle.mjs), which
+    // is the first canvas, after the page's first paint.
+    p5.disableFriendlyErrors = true;
     const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
     const before = hooks ? hooks.length : 0;
     this.instance = new p5((s: p5) => {

@@ -1,12 +1,20 @@
 // Node-side build helper (not shipped): bundles modules.js (p5's core and the addons the renderer ships) into one
-// minified ES module whose default export is p5. p5's modular entries import CommonJS packages (omggif, libtess) that
-// neither Rollup without a CommonJS plugin nor the dev server can load, so esbuild makes one ES module of them.
+// minified ES module whose default export stands for p5. p5's modular entries import CommonJS packages (omggif,
+// libtess) that neither Rollup without a CommonJS plugin nor the dev server can load, so esbuild makes one module.
 // Used by rollup.config.js and web-dev-server.config.js (as what the bare specifier 'p5' resolves to) and scripts/sizes.mjs.
+//
+// p5's code runs on first use, not when the page loads the script: it is most of the single file's evaluation (its
+// modules build prototypes, colour spaces and constants at import), and the first use is the first canvas, which a
+// scene makes after the page's first paint. The default export is a stand-in for the p5 class: `new`, reading or
+// setting a static (p5.disableFriendlyErrors, p5.registerAddon, …) run p5's code once and forward to the class.
 import { build } from 'esbuild';
 import { fileURLToPath } from 'node:url';
 
 /** The file the bundle is made from (modules.js). */
 export const P5_MODULES = fileURLToPath(new URL('./modules.js', import.meta.url));
+
+/** The global name esbuild's IIFE assigns; here a local of load(), never a global. */
+const NAME = '__p5Modules';
 
 let pending = null;
 
@@ -15,7 +23,8 @@ export function bundleP5() {
   pending ??= build({
     entryPoints: [P5_MODULES],
     bundle: true,
-    format: 'esm',
+    format: 'iife',
+    globalName: NAME,
     minify: true,
     target: 'es2022',
     platform: 'browser',
@@ -25,6 +34,18 @@ export function bundleP5() {
     define: { p5: 'undefined' },
     write: false,
     logLevel: 'silent',
-  }).then((result) => result.outputFiles[0].text);
+  }).then(({ outputFiles: [file] }) =>
+    [
+      'let loaded = null;',
+      `function load() { if (!loaded) { ${file.text.trim()}; loaded = ${NAME}.default; } return loaded; }`,
+      'export default new Proxy(function p5() {}, {',
+      '  construct: (_, args) => Reflect.construct(load(), args),',
+      '  apply: (_, self, args) => Reflect.apply(load(), self, args),',
+      '  get: (_, key) => load()[key],',
+      '  set: (_, key, value) => ((load()[key] = value), true),',
+      '  has: (_, key) => key in load(),',
+      '});',
+    ].join('\n'),
+  );
   return pending;
 }
