@@ -7,8 +7,11 @@
 // and then the kernel colours again.
 // Runs only when the constraints' structure changes (it allocates).
 
-/** The coloured order: rows by colour (`slack`[row] 1 for a link whose limits differ), each colour padded with -1 to a multiple of `lanes`, then the serial tail
- *  (each row followed by lanes − 1 times -1). `lanes` consecutive entries form a packet. */
+/**
+ * The coloured order: rows by colour, each colour padded with -1 to a multiple of `lanes`, then the serial tail (each
+ * row followed by lanes − 1 times -1); `lanes` consecutive entries form a packet. `slack`[row] is 1 for a link whose
+ * limits differ (see visitOrder).
+ */
 export function colourRows(count: number, a: Int32Array, b: Int32Array, slack: Uint8Array, invMass: Float64Array, lanes = 2): Int32Array {
   // Masks of the colours each movable particle takes part in; an immovable one's stay 0 and are never set.
   const low = new Uint32Array(invMass.length);
