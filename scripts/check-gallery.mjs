@@ -61,16 +61,24 @@ try {
     check(layout.stage.width >= layout.innerWidth * 0.5 && layout.stage.top < layout.innerHeight * 0.6, `${name}: the scene is on the first screen (${Math.round(layout.stage.width)} px wide, top at ${Math.round(layout.stage.top)} px)`);
     if (name === 'phone') {
       check(layout.nav.height < 80, `phone: the story list is collapsed (nav ${Math.round(layout.nav.height)} px tall)`);
-      await page.click('#nav-toggle');
-      const open = await page.evaluate(() => ({ expanded: document.getElementById('nav-toggle').getAttribute('aria-expanded'), visible: document.querySelector('#stories a').getBoundingClientRect().height > 0 }));
-      check(open.expanded === 'true' && open.visible, `phone: the Stories button opens the list (${JSON.stringify(open)})`);
-      await page.screenshot({ path: new URL(`${name}-nav.png`, outDir).pathname });
-      await page.click('#nav-toggle');
+      const hasButton = await page.evaluate(() => document.getElementById('nav-toggle') !== null);
+      check(hasButton, 'phone: a Stories button');
+      if (hasButton) {
+        await page.click('#nav-toggle');
+        const open = await page.evaluate(() => ({ expanded: document.getElementById('nav-toggle').getAttribute('aria-expanded'), visible: document.querySelector('#stories a').getBoundingClientRect().height > 0 }));
+        check(open.expanded === 'true' && open.visible, `phone: the Stories button opens the list (${JSON.stringify(open)})`);
+        await page.screenshot({ path: new URL(`${name}-nav.png`, outDir).pathname });
+        await page.click('#nav-toggle');
+      }
     }
 
     // The stats, when shown, do not cover the scene.
-    await page.check('#t-stats');
-    await page.waitForFunction(() => !document.getElementById('stats').textContent.startsWith('starting'), null, { timeout: 10000 });
+    const hasToggle = await page.evaluate(() => document.getElementById('t-stats') !== null);
+    check(hasToggle, `${name}: a 'stats' toggle`);
+    if (hasToggle) {
+      await page.check('#t-stats');
+      await page.waitForFunction(() => !document.getElementById('stats').textContent.startsWith('starting'), null, { timeout: 10000 });
+    }
     const overlap = await page.evaluate(() => {
       const a = document.getElementById('stage-wrap').getBoundingClientRect();
       const b = document.getElementById('stats').getBoundingClientRect();
