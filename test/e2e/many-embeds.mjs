@@ -5,8 +5,10 @@
 //  - how many cloths start at load (only those near the viewport should);
 //  - when the first (visible) cloth draws its first frame, from navigation start: median over runs, and the ratio to
 //    the single embed's (target ≤ 1.3);
-//  - memory per extra embed once all 8 run: renderer processes' PSS (Linux /proc, pids from CDP SystemInfo) and the JS
-//    page's JS heap (after a garbage collection), (8 embeds − 1 embed) / 7 (target ≤ 4 MB of PSS).
+//  - memory per extra embed, (8 embeds − 1 embed) / 7 per pair of runs, median over the pairs: the renderer
+//    processes' PSS (Linux /proc, pids from CDP SystemInfo) as the post loads (only the cloths near the viewport
+//    started) and once all 8 have been scrolled to and run, after a garbage collection in the page; and the page's JS
+//    heap. Target ≤ 4 MB.
 // Each run is a fresh browser. Run after `npm run build`: node test/e2e/many-embeds.mjs [--runs 5] [--strict]
 // [--bundle path/to/physics-elements.bundle.js]
 // (--strict: also exit non-zero when a target is missed; timing on a loaded machine is noisy, so it is off by default).
@@ -79,17 +81,23 @@ async function rendererPss(browser) {
   return kb / 1024;
 }
 
-/** The page's JS heap in use after a garbage collection, MB (the workers' heaps are in the renderer's PSS). */
-async function jsHeap(tab) {
+/** A garbage collection in the page (the workers collect on their own). */
+async function gc(tab) {
   const cdp = await tab.context().newCDPSession(tab);
   await cdp.send('HeapProfiler.collectGarbage');
+  await cdp.detach();
+}
+
+/** The page's JS heap in use, MB (the workers' heaps are in the renderer's PSS). */
+async function jsHeap(tab) {
+  const cdp = await tab.context().newCDPSession(tab);
   const { usedSize } = await cdp.send('Runtime.getHeapUsage');
   await cdp.detach();
   return usedSize / 2 ** 20;
 }
 
-/** One load of a post in a fresh browser: first-frame time, workers, starts at load; with `all`, scrolls every cloth in. */
-async function load(name, count, all) {
+/** One load of a post in a fresh browser: first-frame time, workers, starts at load, memory as loaded and once every cloth was scrolled in. */
+async function load(name, count) {
   const browser = await launch();
   try {
     const tab = await browser.newPage({ viewport: { width: 1000, height: 800 } });
@@ -105,18 +113,17 @@ async function load(name, count, all) {
     await tab.waitForTimeout(2000);
     const startedAtLoad = await tab.evaluate(() => [...document.querySelectorAll('cloth-sim')].filter((el) => el.client !== null).length);
     const workersAtLoad = workersMade;
-    let memory = null;
-    if (all) {
-      const loaded = await rendererPss(browser);
-      // Scroll each cloth into view and wait for it to draw; then back to the top, where the first one runs.
-      for (let k = 1; k <= count; k++) {
-        await tab.evaluate((id) => document.getElementById(id).scrollIntoView({ block: 'center' }), `c${k}`);
-        await tab.waitForFunction((id) => document.getElementById(id).renderedFrames > 0, `c${k}`, { timeout: 30000 });
-      }
-      await tab.evaluate(() => window.scrollTo(0, 0));
-      await tab.waitForTimeout(2000);
-      memory = { loaded, pss: await rendererPss(browser), heap: await jsHeap(tab) };
+    await gc(tab);
+    const loaded = await rendererPss(browser);
+    // Scroll each cloth into view and wait for it to draw; then back to the top, where the first one runs.
+    for (let k = 1; k <= count; k++) {
+      await tab.evaluate((id) => document.getElementById(id).scrollIntoView({ block: 'center' }), `c${k}`);
+      await tab.waitForFunction((id) => document.getElementById(id).renderedFrames > 0, `c${k}`, { timeout: 30000 });
     }
+    await tab.evaluate(() => window.scrollTo(0, 0));
+    await tab.waitForTimeout(2000);
+    await gc(tab);
+    const memory = { loaded, pss: await rendererPss(browser), heap: await jsHeap(tab) };
     return { firstFrame, startedAtLoad, workersAtLoad, workersMade, liveWorkers: tab.workers().length, memory, problems };
   } finally {
     await browser.close();
@@ -132,9 +139,9 @@ try {
     // Alternate the order, so a machine getting busier or quieter affects both alike.
     const pair = r % 2 === 0 ? [['one', 1], ['eight', 8]] : [['eight', 8], ['one', 1]];
     for (const [kind, count] of pair) {
-      const result = await load(`/${kind}.html`, count, r === 0);
+      const result = await load(`/${kind}.html`, count);
       (kind === 'one' ? one : eight).push(result);
-      console.log(`run ${r + 1} ${kind}: first frame ${result.firstFrame.toFixed(0)} ms, cloths started at load ${result.startedAtLoad}/${count}, workers ${result.workersMade}${result.memory ? `, PSS at load ${result.memory.loaded.toFixed(1)} MB, all running ${result.memory.pss.toFixed(1)} MB, JS heap ${result.memory.heap.toFixed(1)} MB` : ''}`);
+      console.log(`run ${r + 1} ${kind}: first frame ${result.firstFrame.toFixed(0)} ms, cloths started at load ${result.startedAtLoad}/${count}, workers ${result.workersMade}, PSS at load ${result.memory.loaded.toFixed(1)} MB, all running ${result.memory.pss.toFixed(1)} MB, JS heap ${result.memory.heap.toFixed(1)} MB`);
     }
   }
   const t1 = median(one.map((r) => r.firstFrame));
@@ -142,13 +149,15 @@ try {
   const ratio = t8 / t1;
   const most = Math.max(...eight.map((r) => r.workersMade));
   const full = eight[0];
-  const perLoaded = (full.memory.loaded - one[0].memory.loaded) / 7;
-  const perPss = (full.memory.pss - one[0].memory.pss) / 7;
-  const perHeap = (full.memory.heap - one[0].memory.heap) / 7;
+  // Per run, the two posts loaded side by side; the median over runs (one sample of a loaded machine's memory is noise).
+  const perRun = (field) => median(eight.map((e, k) => (e.memory[field] - one[k].memory[field]) / 7));
+  const perLoaded = perRun('loaded');
+  const perPss = perRun('pss');
+  const perHeap = perRun('heap');
   console.log(`\nworkers with 8 embeds: ${most} made (at load ${full.workersAtLoad}, once all 8 ran ${full.workersMade}, live ${full.liveWorkers})`);
   console.log(`cloths started at load: ${median(eight.map((r) => r.startedAtLoad))} of 8 (the rest wait until scrolled near)`);
   console.log(`first visible cloth's first frame: 1 embed ${t1.toFixed(0)} ms, 8 embeds ${t8.toFixed(0)} ms (medians of ${runs}): ${ratio.toFixed(2)}x`);
-  console.log(`memory per extra embed, renderer PSS: ${perLoaded.toFixed(2)} MB as loaded (only the near ones started), ${perPss.toFixed(2)} MB once all 8 run (JS heap of the page: ${perHeap.toFixed(2)} MB)`);
+  console.log(`memory per extra embed, renderer PSS: ${perLoaded.toFixed(2)} MB as loaded (only the near ones started), ${perPss.toFixed(2)} MB once all 8 run (JS heap of the page: ${perHeap.toFixed(2)} MB); medians of ${runs} paired runs`);
   check(most <= 2, `at most 2 engine workers for 8 embeds (${most})`);
   check(eight.every((r) => r.problems.length === 0) && one.every((r) => r.problems.length === 0), 'no page errors');
   const targets = [
