@@ -5,7 +5,7 @@
 import { expect } from '@open-wc/testing';
 import { PhysicsSceneElement, type PhysicsErrorDetail } from '../../src/index.js';
 import { liveResources } from '../../src/worker/resources.js';
-import { drawn, frames, mount, unmount, waitFor } from './helpers.js';
+import { frames, mount, unmount, waitFor } from './helpers.js';
 
 /** Counts the workers made and the most alive at once, by replacing the global Worker for the duration of a test. */
 function countWorkers() {
@@ -70,7 +70,8 @@ describe('many scenes, one pool of workers', () => {
       byWorker.set(s.client!.worker!, (byWorker.get(s.client!.worker!) ?? 0) + 1);
     }
     expect([...byWorker.values()]).to.deep.equal([4, 4]);
-    for (const s of all) await drawn(s, 1);
+    // Each has drawn its own canvas (a paused scene draws once, then only what changes).
+    await waitFor(() => all.every((s) => s.renderedFrames > 0 && s.canvas !== null), 'every scene drawn');
     const start = await all[1].stateHash();
     expect(await all[0].step(30)).to.equal(30);
     expect(all.map((s) => s.stepCount)).to.deep.equal([30, 0, 0, 0, 0, 0, 0, 0]);
