@@ -164,7 +164,7 @@ export function maxSeparation(px: Float64Array, py: Float64Array, n: number, qx:
     const s = min - (nx * px[i] + ny * py[i]);
     // Exact ties (a square against itself) go to the larger normal (x, then y), not to the first edge in the list,
     // so the answer does not depend on which vertex a polygon's list starts from.
-    if (s >= best && (s > best || nx > bnx || (nx === bnx && ny > bny))) {
+    if (s > best || (s === best && (nx > bnx || (nx === bnx && ny > bny)))) {
       best = s;
       bestEdge = i;
       bestVertex = arg;
