@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every test: installs what it needs (npm packages, Debian's chromium and, where it can, firefox-esr), type-checks, runs
 # the engine's tests in Node (mocha), then the element, worker and drawing tests in chromium with @web/test-runner, the
-# gallery checks, and the end-to-end pages (builds across origins, CSP, the npm tarball, layout shift, phone gestures).
+# gallery checks, and the end-to-end pages (builds across origins, CSP, the npm tarball, layout shift, phone gestures,
+# many embeds on one worker pool).
 # Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,8 @@ bash scripts/ensure-firefox.sh
 echo "== typecheck"
 npx tsc --noEmit -p tsconfig.json
 npx tsc --noEmit -p test/tsconfig.json
+echo "== the WebAssembly kernel's bytes up to date with its source"
+node scripts/build-wasm.mjs --check
 echo "== custom-elements.json up to date"
 cp custom-elements.json /tmp/custom-elements.committed.json
 npm run analyze --silent >/dev/null
@@ -40,3 +43,5 @@ echo "== no layout shift while the embed loads (1.6 Mbit/s, 150 ms; desktop and 
 node scripts/measure-loading.mjs --runs 1 --max-cls 0.02
 echo "== phone: swipes scroll past the scene, a body drags, pinch zooms"
 node test/e2e/phone.mjs
+echo "== many embeds: 8 cloths in a post share the worker pool"
+node test/e2e/many-embeds.mjs --runs 1
