@@ -1,8 +1,9 @@
-// Shared by the demo server (`npm start`) and the test runner: TypeScript through esbuild, p5's ESM build,
+// Shared by the demo server (`npm start`) and the test runner: TypeScript through esbuild, p5 as the builds ship it,
 // `.js` worker URLs mapped to their `.ts` sources, optional cross-origin isolation (COOP/COEP), and `/` sent to the gallery.
 import { esbuildPlugin } from '@web/dev-server-esbuild';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
+import { bundleP5 } from './src/render/p5/bundle.mjs';
 
 const root = fileURLToPath(new URL('.', import.meta.url));
 
@@ -26,11 +27,19 @@ export function jsToTs(ctx, next) {
   return next();
 }
 
-/** p5 v2's package entry imports CommonJS dependencies a browser cannot load; use its self-contained ESM build. */
+/**
+ * 'p5' is the p5 the builds ship: its core and the addons the renderer uses, made into one module by
+ * src/render/p5/bundle.mjs (p5's package entry imports CommonJS a browser cannot load), so the tests and the gallery
+ * draw with what a page gets.
+ */
+const P5_PIECES = '/__p5-pieces.js';
 export const p5Esm = {
-  name: 'p5-esm',
+  name: 'p5-pieces',
   resolveImport({ source }) {
-    if (source === 'p5') return '/node_modules/p5/lib/p5.esm.min.js';
+    if (source === 'p5') return P5_PIECES;
+  },
+  async serve(context) {
+    if (context.path === P5_PIECES) return { body: await bundleP5(), type: 'js' };
   },
 };
 

@@ -54,10 +54,10 @@ export async function frames(n: number): Promise<void> {
   for (let k = 0; k < n; k++) await nextFrame();
 }
 
-/** Waits until the scene has drawn `n` more frames. */
-export async function drawn(scene: PhysicsSceneElement, n = 2): Promise<void> {
-  const target = scene.renderedFrames + n;
-  await waitFor(() => scene.renderedFrames >= target, `${n} drawn frames`);
+/** Waits `n` animation frames, then until the canvas shows the scene's newest state (a still scene draws nothing more). */
+export async function drawn(scene: PhysicsSceneElement, n = 1): Promise<void> {
+  await frames(n);
+  await waitFor(() => scene.renderedFrames > 0 && !scene.drawPending, 'the canvas to show the newest state');
 }
 
 /** Dispatches a synthetic pointer event at the world point (x, y) on the scene's canvas. */
