@@ -5,7 +5,7 @@
 // encoding, collision events and fault hooks; host/bodies/ says what each body type needs.
 import type { World } from '../engine/index.js';
 import { Bindings } from './host/bindings.js';
-import { crossOriginIsolated, runningInWorker } from './host/diagnostics.js';
+import { crossOriginIsolated, runningInWorker, warnIfKernelRefused } from './host/diagnostics.js';
 import { EventQueue } from './host/events.js';
 import { debugFault } from './host/faults.js';
 import { FrameEncoder } from './host/frames.js';
@@ -18,6 +18,12 @@ import type {
   DebugFault, Diagnostics, EngineApi, FramePatch, HostError, HostParams, HostScene, HostSnapshot, KeyedBody, KeyedLink,
 } from './protocol.js';
 import type { Publisher } from './publishers.js';
+
+/** The kernel fields of Diagnostics. */
+function kernelOf(w: World): Pick<Diagnostics, 'kernel' | 'kernelRequested' | 'kernelReason'> {
+  const k = w.diagnostics();
+  return { kernel: k.kernel, kernelRequested: k.requested, kernelReason: k.reason };
+}
 
 export { runningInWorker } from './host/diagnostics.js';
 export type { Clock } from './host/loop.js';
@@ -55,6 +61,7 @@ export class EngineHost implements EngineApi {
     this.#settings.worldOptions = { ...(scene.world ?? {}) };
     const errors = this.#setParamsOnly(scene.params ?? {});
     errors.push(...this.#bindings.load(scene.bodies, scene.links));
+    warnIfKernelRefused(this.#world);
     this.#events.clear();
     if (scene.running) this.play();
     else this.#publish();
@@ -87,6 +94,7 @@ export class EngineHost implements EngineApi {
 
   setParams(params: Partial<HostParams>): HostError | null {
     const errors = this.#setParamsOnly(params);
+    if (this.#settings.kernelDiffers(this.#world)) this.#remakeWorld();
     this.#publish();
     return errors[0] ?? null;
   }
@@ -185,6 +193,7 @@ export class EngineHost implements EngineApi {
       buffersAllocated: this.#publisher.allocated,
       events: this.#settings.params.events,
       eventsSent: this.#events.sent,
+      ...kernelOf(w),
     };
   }
 
@@ -204,6 +213,14 @@ export class EngineHost implements EngineApi {
     const errors = this.#settings.apply(this.#world, params);
     if (!this.#settings.params.events) this.#events.clear();
     return errors;
+  }
+
+  /** A world made with the kernel the params now ask for, in the state of the current one (the same handles). */
+  #remakeWorld(): void {
+    const snapshot = this.snapshot();
+    this.#bindings.rebuild();
+    restoreSnapshot(this.#bindings, this.#settings, snapshot);
+    warnIfKernelRefused(this.#world);
   }
 
   /** After an edit: a frame with the new topology, when what is built changed. */

@@ -1,6 +1,6 @@
 // What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
 // and in the worker), and the layout of one published state frame (a Float64Array).
-import type { BodyDescription, BodyKind, BodyType, Bounds, Vec2, WorldOptions } from '../engine/index.js';
+import type { BodyDescription, BodyKind, BodyType, Bounds, KernelChoice, Vec2, WorldOptions } from '../engine/index.js';
 import type { JointType } from '../engine/options.js';
 
 /** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
@@ -74,6 +74,8 @@ export interface HostParams {
   events: boolean;
   /** Walls and floor (the view's, or none): they follow the scene's width and height. */
   bounds: Bounds | null;
+  /** The solver kernel the world is made with (World option `kernel`); a change remakes the world, keeping its state. */
+  kernel: KernelChoice;
 }
 
 export interface HostScene {
@@ -159,6 +161,10 @@ export interface Diagnostics {
   events: boolean;
   /** Collision events sent so far. */
   eventsSent: number;
+  /** The solver kernel that runs ('wasm': WebAssembly SIMD), the one asked for, and why WebAssembly does not run ('' when it does). */
+  kernel: 'js' | 'wasm';
+  kernelRequested: KernelChoice;
+  kernelReason: string;
 }
 
 export interface HostError {

@@ -2,7 +2,7 @@
 // (defaults in place of bad values), and the problems to report. The keeper and the engine calls between updates read
 // the checked values; nothing re-validates on a timer.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
-import type { Bounds } from '../../engine/index.js';
+import type { Bounds, KernelChoice } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
 import { Checker, type Problem } from '../checks.js';
 
@@ -19,6 +19,7 @@ export interface SceneAttributes {
   bounds: string;
   background: string;
   worker: string;
+  kernel: string;
   maxRestarts: number;
   drawMode: string;
   debug: boolean;
@@ -36,11 +37,15 @@ export interface SceneConfig {
   narrowphase: 'sat' | 'gjk';
   bounds: 'view' | 'none';
   worker: 'auto' | 'none';
+  kernel: KernelChoice;
   maxRestarts: number;
   drawMode: 'over' | 'replace';
   /** CSS colour of the canvas ('transparent' for "none"). */
   background: string;
 }
+
+/** The engine's kernel choices (engine/kernel/choice.ts), listed here so the element layer imports no engine code. */
+const KERNELS: readonly KernelChoice[] = ['auto', 'wasm', 'js'];
 
 /** Reads and checks the scene's attributes, in the order their problems are reported. @internal */
 export function readConfig(scene: Element & SceneAttributes): { config: SceneConfig; problems: Problem[] } {
@@ -56,6 +61,7 @@ export function readConfig(scene: Element & SceneAttributes): { config: SceneCon
     narrowphase: check.oneOf('narrowphase', scene.narrowphase, ['sat', 'gjk'] as const, 'sat'),
     bounds: check.oneOf('bounds', scene.bounds, ['view', 'none'] as const, 'view'),
     worker: check.oneOf('worker', scene.worker, ['auto', 'none'] as const, 'auto'),
+    kernel: check.oneOf('kernel', scene.kernel, KERNELS, 'auto'),
     maxRestarts: check.number('max-restarts', scene.maxRestarts, { integer: true, min: 0, max: 100, fallback: 3 })!,
     drawMode: check.oneOf('draw-mode', scene.drawMode, ['over', 'replace'] as const, 'over'),
     background: check.color('background', scene.background, '#f7f5f0') ?? 'transparent',
@@ -89,6 +95,7 @@ const PARAMS_OF: Record<string, (keyof HostParams)[]> = {
   width: ['bounds'],
   height: ['bounds'],
   bounds: ['bounds'],
+  kernel: ['kernel'],
 };
 
 /** The parameters to send when the properties `changed` changed (empty when none is an engine parameter). @internal */
@@ -154,6 +161,7 @@ export class ConfigController implements ReactiveController {
       debug: this.host.debug,
       events,
       bounds: viewBounds(c),
+      kernel: c.kernel,
     };
   }
 }

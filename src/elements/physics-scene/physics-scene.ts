@@ -110,6 +110,13 @@ export class PhysicsSceneElement extends LitElement {
   @property() background = '#f7f5f0';
   /** "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. */
   @property() worker = 'auto';
+  /**
+   * The solver kernel: "auto" (default) runs the particle solver (cloth, ropes, soft bodies) in WebAssembly with SIMD
+   * where the browser and the page allow it, else in JavaScript; "wasm" the same, warning when it cannot; "js" always
+   * JavaScript. A strict Content-Security-Policy needs `script-src 'wasm-unsafe-eval'` for WebAssembly (without it:
+   * JavaScript, and one console warning). A change keeps the scene's state. `diagnostics()` says which kernel runs.
+   */
+  @property() kernel = 'auto';
   /** Send collision events even with no listener on the scene itself (for listeners on ancestors). */
   @property({ type: Boolean, attribute: 'collision-events' }) collisionEvents = false;
   /**

@@ -1,6 +1,7 @@
 // The run-time parameters (HostParams) and the scene's world options: what a fresh world is made with (load, reset)
 // and what a live setParams() changes in the current one.
-import type { World, WorldOptions } from '../../engine/index.js';
+import { KERNELS, type KernelOptions, type World, type WorldOptions } from '../../engine/index.js';
+import { oneOf } from '../../engine/validate.js';
 import type { HostError, HostParams } from '../protocol.js';
 
 const DEFAULT_PARAMS: HostParams = {
@@ -13,6 +14,7 @@ const DEFAULT_PARAMS: HostParams = {
   debug: false,
   events: false,
   bounds: null,
+  kernel: 'js',
 };
 
 export function copyParams(p: HostParams): HostParams {
@@ -25,7 +27,7 @@ export class HostSettings {
   worldOptions: WorldOptions = {};
 
   /** The options a fresh world is made with. */
-  forWorld(): WorldOptions {
+  forWorld(): WorldOptions & KernelOptions {
     const p = this.params;
     return {
       ...this.worldOptions,
@@ -35,7 +37,13 @@ export class HostSettings {
       iterations: p.iterations,
       broadphase: p.broadphase,
       narrowphase: p.narrowphase,
+      kernel: p.kernel,
     };
+  }
+
+  /** The world was made with another kernel than the params ask for (a fresh world would have the right one). */
+  kernelDiffers(w: World): boolean {
+    return w.diagnostics().requested !== this.params.kernel;
   }
 
   /** Applies to the params and the world what validates; returns one error per rejected field. */
@@ -72,6 +80,10 @@ export class HostSettings {
     copy('iterations');
     copy('broadphase');
     copy('narrowphase');
+    // Set at construction only: the host remakes the world when it differs (kernelDiffers).
+    set('kernel', () => {
+      this.params.kernel = oneOf('kernel', params.kernel, KERNELS);
+    });
     if (params.debug !== undefined) this.params.debug = Boolean(params.debug);
     if (params.events !== undefined) this.params.events = Boolean(params.events);
     return errors;
