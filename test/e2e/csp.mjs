@@ -13,6 +13,10 @@
 //    `physics-error` and runs its engine on the main thread, and still animates. The one violation is the worker's.
 // 4. The single-file build under a nonce-based policy (script-src 'nonce-…' 'strict-dynamic', no worker-src): the
 //    trusted script may start its blob: worker, nothing else is needed.
+// 5. The single-file build without 'wasm-unsafe-eval': the WebAssembly solver kernel (the scenes' default, kernel
+//    "auto") may not compile; the scenes run the JS kernel, warn once per worker (no physics-error), and still
+//    animate. The only violations are the refused compilations. Every other policy allows 'wasm-unsafe-eval', and
+//    there the scenes' diagnostics() say the WebAssembly kernel runs.
 //
 // Each page: the elements animate (the canvas changes), the engine runs where expected (`mode` is 'worker' only once
 // the worker has answered), and no CSP violation is reported (securitypolicyviolation events in the page, and the
@@ -69,16 +73,19 @@ const cdn = await listen('localhost', (req, res) => {
 const cdnOrigin = `http://localhost:${cdn.address().port}`;
 
 const POLICIES = {
-  single: `default-src 'none'; script-src 'self' ${cdnOrigin}; worker-src blob:; style-src 'self'`,
-  lib: `default-src 'none'; script-src 'self'; worker-src 'self'; style-src 'self'`,
-  'single-no-blob': `default-src 'none'; script-src 'self' ${cdnOrigin}; worker-src 'self'; style-src 'self'`,
-  'single-nonce': `default-src 'none'; script-src 'nonce-e2e' 'strict-dynamic'; style-src 'self'`,
+  single: `default-src 'none'; script-src 'self' ${cdnOrigin} 'wasm-unsafe-eval'; worker-src blob:; style-src 'self'`,
+  lib: `default-src 'none'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self'`,
+  'single-no-blob': `default-src 'none'; script-src 'self' ${cdnOrigin} 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self'`,
+  'single-nonce': `default-src 'none'; script-src 'nonce-e2e' 'strict-dynamic' 'wasm-unsafe-eval'; style-src 'self'`,
+  'single-no-wasm': `default-src 'none'; script-src 'self' ${cdnOrigin}; worker-src blob:; style-src 'self'`,
 };
+const SINGLE = `<script type="module" src="${cdnOrigin}/physics-elements.bundle.js"></script>`;
 const SCRIPTS = {
-  single: `<script type="module" src="${cdnOrigin}/physics-elements.bundle.js"></script>`,
+  single: SINGLE,
   lib: `<script type="module" src="/app/app.js"></script>`,
-  'single-no-blob': `<script type="module" src="${cdnOrigin}/physics-elements.bundle.js"></script>`,
+  'single-no-blob': SINGLE,
   'single-nonce': `<script type="module" nonce="e2e" src="${cdnOrigin}/physics-elements.bundle.js"></script>`,
+  'single-no-wasm': SINGLE,
 };
 const page = (name) => `<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>csp ${name}</title>
@@ -132,8 +139,9 @@ const siteUrl = `http://127.0.0.1:${site.address().port}`;
 
 const browser = await launch();
 try {
-  for (const name of ['single', 'lib', 'single-no-blob', 'single-nonce']) {
+  for (const name of Object.keys(POLICIES)) {
     const fallback = name === 'single-no-blob';
+    const noWasm = name === 'single-no-wasm';
     console.log(`-- ${name} (${elapsed()}): ${POLICIES[name]}`);
     const tab = await browser.newPage({ viewport: { width: 620, height: 820 } });
     const problems = collectProblems(tab);
@@ -144,10 +152,18 @@ try {
       for (const id of ['cloth', 'ragdolls']) {
         const el = document.getElementById(id);
         await el.ready;
-        out[id] = el.mode;
+        const d = await el.diagnostics();
+        out[id] = { mode: el.mode, kernel: d.kernel, reason: d.kernelReason };
       }
       return out;
     });
+    const modes = Object.fromEntries(Object.entries(info).map(([id, d]) => [id, d.mode]));
+    const kernels = Object.values(info).map((d) => d.kernel);
+    if (noWasm) {
+      check(kernels.every((k) => k === 'js') && Object.values(info).every((d) => /wasm-unsafe-eval/.test(d.reason)), `${name}: WebAssembly refused, the scenes run the JS kernel and say why (${kernels.join(', ')}: ${info.cloth.reason.slice(-80)})`);
+    } else {
+      check(kernels.every((k) => k === 'wasm'), `${name}: the scenes run the WebAssembly kernel (${kernels.join(', ')})`);
+    }
     for (const id of ['cloth', 'ragdolls']) check(await animates(tab, id), `${name}: #${id} animates`);
     await tab.screenshot({ path: resolve(artifacts, `csp-${name}.png`) });
     await new Promise((r) => setTimeout(r, 300)); // let the last reports arrive
@@ -155,8 +171,17 @@ try {
     const reported = reports.filter((r) => r.page === name).map((r) => r.text);
     await tab.close();
     const violations = [...new Set([...seen.violations, ...reported])];
-    if (!fallback) {
-      check(info.cloth === 'worker' && info.ragdolls === 'worker', `${name}: the engines run in workers (${JSON.stringify(info)})`);
+    if (noWasm) {
+      check(modes.cloth === 'worker' && modes.ragdolls === 'worker', `${name}: the engines run in workers (${JSON.stringify(modes)})`);
+      const refused = (v) => /^script-src(-elem)? wasm-eval/.test(v);
+      check(violations.length > 0 && violations.every(refused), `${name}: the only violations are the refused WebAssembly compilations (${violations.join('; ')})`);
+      const warnings = problems.filter((p) => p.startsWith('warning:') && /WebAssembly kernel cannot run/.test(p));
+      check(warnings.length >= 1 && warnings.length <= 2, `${name}: one warning per worker that runs the scenes (${warnings.length}: ${warnings[0]?.slice(0, 160)})`);
+      check(seen.errors.length === 0, `${name}: no physics-error (${seen.errors.map((e) => e.message).join('; ')})`);
+      const other = problems.filter((p) => !/WebAssembly kernel cannot run|Content Security Policy|WebAssembly/.test(p));
+      check(other.length === 0, `${name}: no other console errors${other.length ? `:\n  ${other.join('\n  ')}` : ''}`);
+    } else if (!fallback) {
+      check(modes.cloth === 'worker' && modes.ragdolls === 'worker', `${name}: the engines run in workers (${JSON.stringify(modes)})`);
       // The app's own p5 (dist/lib leaves p5 to the app): its zod's eval try at import, nothing else.
       const p5Probe = (v) => name === 'lib' && /^script-src(-elem)? eval .*\/p5\.js:/.test(v);
       if (name === 'lib') check(violations.filter(p5Probe).length <= 1, `${name}: p5's own eval try at import (expected, not ours): ${violations.filter(p5Probe).join('; ') || 'none'}`);
@@ -165,7 +190,7 @@ try {
       const other = problems.filter((p) => !(name === 'lib' && /unsafe-eval/.test(p)));
       check(other.length === 0 && seen.errors.length === 0, `${name}: no console errors or warnings, no physics-error${other.length + seen.errors.length ? `:\n  ${[...other, ...seen.errors.map((e) => e.message)].join('\n  ')}` : ''}`);
     } else {
-      check(info.cloth === 'main' && info.ragdolls === 'main', `${name}: the engines fall back to the main thread (${JSON.stringify(info)})`);
+      check(modes.cloth === 'main' && modes.ragdolls === 'main', `${name}: the engines fall back to the main thread (${JSON.stringify(modes)})`);
       const errorIds = seen.errors.filter((e) => /main thread/.test(e.message)).map((e) => e.id).sort();
       check(errorIds.join() === 'cloth,ragdolls', `${name}: each element sends a physics-error about it (${seen.errors.map((e) => `#${e.id}: ${e.message}`).join('; ')})`);
       const warnings = problems.filter((p) => p.startsWith('warning:') && /main thread/.test(p));
