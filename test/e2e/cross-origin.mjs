@@ -5,7 +5,7 @@
 // and log no console errors. Screenshots go to artifacts/. Run after `npm run build`: node test/e2e/cross-origin.mjs
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { animates, artifacts, checker, collectProblems, launch, listen, root } from './harness.mjs';
+import { animates, artifacts, checker, collectProblems, launch, listen, root, serveFiles } from './harness.mjs';
 
 const bundle = readFileSync(resolve(root, 'dist/physics-elements.bundle.js'));
 const started = Date.now();
@@ -33,18 +33,7 @@ const page = `<!doctype html>
 <ragdoll-sim class="embed" id="ragdolls" count="3"></ragdoll-sim>
 <cloth-sim class="embed" id="fallback" worker="none" columns="8" rows="5" style="height: 150px"></cloth-sim>
 </body></html>`;
-const site = await listen('127.0.0.1', (req, res) => {
-  if (req.url === '/' || req.url === '/index.html') {
-    res.writeHead(200, { 'content-type': 'text/html' });
-    res.end(page);
-  } else if (req.url === '/favicon.ico') {
-    res.writeHead(204);
-    res.end();
-  } else {
-    res.writeHead(404);
-    res.end();
-  }
-});
+const site = await serveFiles('127.0.0.1', { '/': page, '/index.html': page });
 const siteUrl = `http://127.0.0.1:${site.address().port}/`;
 
 const browser = await launch();

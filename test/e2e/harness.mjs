@@ -2,7 +2,7 @@
 // ok/FAIL lines, console capture, and "has this element's canvas changed after N more steps".
 import { createServer } from 'node:http';
 import { mkdirSync } from 'node:fs';
-import { dirname, resolve } from 'node:path';
+import { dirname, extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -14,6 +14,24 @@ mkdirSync(artifacts, { recursive: true });
 export function listen(host, handler) {
   const server = createServer(handler);
   return new Promise((ok) => server.listen(0, host, () => ok(server)));
+}
+
+/**
+ * A site of fixed files on a free port: `files` maps a path ('/', '/x.js') to its body, the type taken from the
+ * extension (a path without one is a page); /favicon.ico answers 204, anything else 404.
+ */
+export function serveFiles(host, files) {
+  const types = { '.js': 'text/javascript', '.html': 'text/html' };
+  return listen(host, (req, res) => {
+    const path = req.url.split('?')[0];
+    if (Object.hasOwn(files, path)) {
+      res.writeHead(200, { 'content-type': types[extname(path)] ?? 'text/html' });
+      res.end(files[path]);
+    } else {
+      res.writeHead(path === '/favicon.ico' ? 204 : 404);
+      res.end();
+    }
+  });
 }
 
 /** Chromium from Debian (never a downloaded browser), with the flags this machine needs. */

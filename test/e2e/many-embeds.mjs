@@ -14,7 +14,7 @@
 // (--strict: also exit non-zero when a target is missed; timing on a loaded machine is noisy, so it is off by default).
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { checker, launch, listen, root } from './harness.mjs';
+import { checker, launch, root, serveFiles } from './harness.mjs';
 
 const args = process.argv.slice(2);
 const runsArg = args.includes('--runs') ? Number(args[args.indexOf('--runs') + 1]) : 5;
@@ -50,18 +50,7 @@ function post(count) {
 }
 
 const pages = { '/one.html': post(1), '/eight.html': post(8) };
-const site = await listen('127.0.0.1', (req, res) => {
-  if (req.url === '/physics-elements.bundle.js') {
-    res.writeHead(200, { 'content-type': 'text/javascript' });
-    res.end(bundle);
-  } else if (pages[req.url]) {
-    res.writeHead(200, { 'content-type': 'text/html' });
-    res.end(pages[req.url]);
-  } else {
-    res.writeHead(req.url === '/favicon.ico' ? 204 : 404);
-    res.end();
-  }
-});
+const site = await serveFiles('127.0.0.1', { '/physics-elements.bundle.js': bundle, ...pages });
 const base = `http://127.0.0.1:${site.address().port}`;
 
 /** Proportional set size of the browser's renderer processes, in MB (Linux). */

@@ -7,7 +7,7 @@
 // Run after `npm run build` (uses dist/physics-elements.bundle.js, or the file in $BUNDLE): node test/e2e/phone.mjs
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { checker, collectProblems, launch, listen, root } from './harness.mjs';
+import { checker, collectProblems, launch, root, serveFiles } from './harness.mjs';
 
 const bundle = readFileSync(resolve(root, process.env.BUNDLE ?? 'dist/physics-elements.bundle.js'));
 const text = (n) => `<p id="p${n}">Paragraph ${n}: text around the embed, long enough that the page scrolls well past it on a phone.
@@ -26,21 +26,7 @@ const page = `<!doctype html>
 ${[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12].map(text).join('\n')}
 </body></html>`;
 
-const server = await listen('127.0.0.1', (req, res) => {
-  if (req.url === '/physics-elements.bundle.js') {
-    res.writeHead(200, { 'content-type': 'text/javascript' });
-    res.end(bundle);
-  } else if (req.url === '/') {
-    res.writeHead(200, { 'content-type': 'text/html' });
-    res.end(page);
-  } else if (req.url === '/favicon.ico') {
-    res.writeHead(204);
-    res.end();
-  } else {
-    res.writeHead(404);
-    res.end();
-  }
-});
+const server = await serveFiles('127.0.0.1', { '/physics-elements.bundle.js': bundle, '/': page });
 
 const browser = await launch();
 const check = checker();
