@@ -154,12 +154,44 @@ function sharedEngine() {
       return [
         `function __peEngine(){${factory.body};return{${factory.returns}}}`,
         'const __pe = __peEngine();',
-        'export function __peWorkerUrl() { return URL.createObjectURL(new Blob(["(" + __peEngine.toString() + ")()"], { type: "text/javascript" })); }',
+        WORKER_SCRIPT,
         ...factory.exports.map((n) => `export const ${n} = __pe.${n};`),
       ].join('\n');
     },
   };
 }
+
+/**
+ * The worker's script in the single-file build: the engine function's source text, called, as a blob: URL made once
+ * per page and shared by every pool worker. Encoding that text (about 180,000 characters) into one Blob took 20-80 ms
+ * on the loaded machine, mostly to flatten "(" + source + ")()" into one string, so the source is never concatenated:
+ * it is encoded ahead in slices of WORKER_PIECE characters (slices of the script's own text, 1-5 ms each), one task
+ * each, from the script's evaluation on (a scene starts its engine only after the page's first paint and its canvas);
+ * a worker wanted before the last slice encodes the rest at once. Slices end between characters, never inside a
+ * surrogate pair.
+ */
+const WORKER_PIECE = 32768;
+const WORKER_SCRIPT = `
+const __peSource = __peEngine.toString();
+const __pePieces = ["("];
+let __peEncoded = 0;
+let __peUrl = null;
+function __peEncodePiece() {
+  let end = Math.min(__peEncoded + ${WORKER_PIECE}, __peSource.length);
+  const last = __peSource.charCodeAt(end - 1);
+  if (end < __peSource.length && last >= 0xd800 && last <= 0xdbff) end--;
+  __pePieces.push(new Blob([__peSource.slice(__peEncoded, end)]));
+  __peEncoded = end;
+  return __peEncoded < __peSource.length;
+}
+setTimeout(function encodeAhead() { if (__peUrl === null && __peEncodePiece()) setTimeout(encodeAhead, 0); }, 0);
+export function __peWorkerUrl() {
+  if (__peUrl === null) {
+    while (__peEncoded < __peSource.length) __peEncodePiece();
+    __peUrl = URL.createObjectURL(new Blob([...__pePieces, ")()"], { type: "text/javascript" }));
+  }
+  return __peUrl;
+}`;
 
 const external = [/^lit/, /^@lit/, 'comlink', 'p5'];
 
