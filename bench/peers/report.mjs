@@ -33,7 +33,8 @@ export function report({ options, results, started, finished, node, cpu, load, s
   };
   const engines = options.engines;
   const peerNames = engines.filter((e) => peers.includes(e));
-  const hasOurs = engines.includes('ours');
+  // The columns compared with the peers: our engine with its default JS kernel, and with the WebAssembly kernel.
+  const ourNames = engines.filter((e) => e === 'ours' || e === 'ours-wasm');
   const minutes = ((finished - started) / 60000).toFixed(1);
   const out = [];
   const line = (s = '') => out.push(s);
@@ -57,15 +58,15 @@ export function report({ options, results, started, finished, node, cpu, load, s
   line('## Milliseconds per step (lower is better)');
   line();
   const head = ['scene', ...engines.map((e) => (e === 'ours' ? '**ours**' : e))];
-  if (hasOurs && peerNames.length) head.push('ours ÷ fastest peer');
+  if (peerNames.length) for (const o of ourNames) head.push(`${o} ÷ fastest peer`);
   line(`| ${head.join(' | ')} |`);
   line(`|${head.map(() => '---').join('|')}|`);
   const verdicts = [];
   for (const scene of options.scenes) {
     const cells = [`${scene} ${SCENES[scene].title}`, ...engines.map((e) => (e === 'ours' ? `**${ms(time(scene, e))}**` : ms(time(scene, e))))];
-    if (hasOurs && peerNames.length) {
+    for (const o of peerNames.length ? ourNames : []) {
       const timed = peerNames.map((e) => [e, time(scene, e)]).filter(([, t]) => t != null);
-      const ours = time(scene, 'ours');
+      const ours = time(scene, o);
       if (timed.length && ours != null) {
         const [best, t] = timed.reduce((a, b) => (b[1] < a[1] ? b : a));
         const ratio = ours / t;
@@ -75,14 +76,14 @@ export function report({ options, results, started, finished, node, cpu, load, s
           const xs = of(scene, e).map((r) => r.median);
           return [Math.min(...xs), Math.max(...xs)];
         };
-        const [o0, o1] = range('ours');
+        const [o0, o1] = range(o);
         const [p0, p1] = range(best);
-        const spread = `runs: ours ${ms(o0)}–${ms(o1)}, ${best} ${ms(p0)}–${ms(p1)}`;
+        const spread = `runs: ${o} ${ms(o0)}–${ms(o1)}, ${best} ${ms(p0)}–${ms(p1)}`;
         const close = o0 <= p1 && p0 <= o1 ? '; the ranges overlap, so this is within noise' : '';
         verdicts.push(
           ratio <= 1
-            ? `- ${scene}: ours ${ms(ours)} ms, faster than every peer; fastest peer ${best}, ${ms(t)} ms (${spread}${close}).`
-            : `- ${scene}: **not yet the fastest**: ours ${ms(ours)} ms is ${ratio.toFixed(2)}× ${best}, ${ms(t)} ms (${spread}${close}).`,
+            ? `- ${scene}: ${o} ${ms(ours)} ms, faster than every peer; fastest peer ${best}, ${ms(t)} ms (${spread}${close}).`
+            : `- ${scene}: **not yet the fastest**: ${o} ${ms(ours)} ms is ${ratio.toFixed(2)}× ${best}, ${ms(t)} ms (${spread}${close}).`,
         );
       } else cells.push('—');
     }

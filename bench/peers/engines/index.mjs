@@ -8,6 +8,8 @@ export const ENGINES = {
   ours: lazy('./ours.mjs'),
   // Our chain and cloth without tethers: what the links alone hold (peers have no tethers).
   'ours-no-tethers': only(['S4', 'S5'], lazy('./ours.mjs', { tethers: false })),
+  // Our engine with the WebAssembly SIMD solver kernel (new World({ kernel: 'wasm' })).
+  'ours-wasm': lazy('./ours.mjs', { kernel: 'wasm' }),
   'matter-js': lazy('./matter.mjs'),
   planck: lazy('./planck.mjs'),
   'p2-es': lazy('./p2.mjs'),

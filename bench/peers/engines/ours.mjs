@@ -17,17 +17,21 @@ export async function bundleOurs() {
   return outfile;
 }
 
-/** options.tethers false: the chain and cloth without the builders' default tethers (S4/S5 only). */
+/**
+ * options.tethers false: the chain and cloth without the builders' default tethers (S4/S5 only); options.kernel: the
+ * solver kernel ('js', the default, or 'wasm': the WebAssembly SIMD kernel; see docs/engine.md).
+ */
 export async function load(options = {}) {
   const tethers = options.tethers ?? true;
+  const kernel = options.kernel ?? 'js';
   const file = process.env.PEERS_OURS_BUNDLE ?? (await bundleOurs());
   const engine = await import(pathToFileURL(file).href);
   const probe = new engine.World();
   const { version } = JSON.parse(readFileSync(root + 'package.json', 'utf8'));
   return {
     version,
-    settings: `${probe.substeps} substeps × ${probe.iterations} iteration (new World() defaults), sleeping off; ${tethers ? "S4/S5 use the catalogue's rope/cloth with their default tethers" : 'S4/S5 with tethers: false (links and pin only)'}`,
-    build: (scene) => build(engine, scene, tethers),
+    settings: `${probe.substeps} substeps × ${probe.iterations} iteration (new World() defaults), sleeping off, the ${kernel} kernel; ${tethers ? "S4/S5 use the catalogue's rope/cloth with their default tethers" : 'S4/S5 with tethers: false (links and pin only)'}`,
+    build: (scene) => build(engine, scene, tethers, kernel),
   };
 }
 
@@ -61,12 +65,14 @@ function checkSameScene(description, scene) {
   }
 }
 
-function build(engine, scene, tethers) {
+function build(engine, scene, tethers, kernel) {
   const description = engine.catalogue[scene.catalogue].make();
   checkSameScene(description, scene);
   if (!tethers) for (const d of description.bodies) if (d.type === 'rope' || d.type === 'cloth') d.tethers = false;
-  description.world = { ...description.world, sleeping: false };
+  description.world = { ...description.world, sleeping: false, kernel };
   const { world, bodies } = engine.buildScene(description);
+  const runs = world.diagnostics();
+  if (runs.kernel !== kernel) throw new Error(`the ${kernel} kernel does not run: ${runs.reason}`);
   const dynamic = bodies.filter((_, k) => !description.bodies[k].static).map((b) => b.body);
   const particlesOf = (h) => world.bodyParticleIndices(h);
   return {
