@@ -56,6 +56,21 @@ export class EventTracker {
   private previous = new KeyTable();
 
   /**
+   * Off until someone reads the events (World.events): a world nobody asks for events pays nothing for them. From the
+   * first read on, every step's events are collected.
+   */
+  active = false;
+
+  /** Starts collecting: the pairs touching now are taken as already touching (no begin for them next step). */
+  activate(c: ContactPairs, r: ContactPairs): void {
+    if (this.active) return;
+    this.active = true;
+    this.current.reset(c.count + r.count);
+    this.collect(c, 0);
+    this.collect(r, 1);
+  }
+
+  /**
    * The contacts of both tables that acted this step (`touched`) give the touching body pairs; `handleOf` maps a
    * body slot to its handle. Contacts with the world's bounds (body −1) make no events. Pairs whose body was removed
    * end silently (their handles are gone).

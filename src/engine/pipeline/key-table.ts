@@ -60,6 +60,8 @@ export class KeyTable {
 
 /** Mixes a key's high and low 32 bits into a well-spread 32-bit hash. */
 function spread(key: number): number {
-  const lo = key % 4294967296;
-  return Math.imul(lo ^ Math.imul((key - lo) / 4294967296, 0x9e3779b1), 0x85ebca6b) ^ (lo >>> 15);
+  // The low and high 32 bits of a whole number below 2^53 (`>>> 0` keeps the low bits; % and a division cost twice as much).
+  const lo = key >>> 0;
+  const hi = (key / 4294967296) >>> 0;
+  return Math.imul(lo ^ Math.imul(hi, 0x9e3779b1), 0x85ebca6b) ^ (lo >>> 15);
 }

@@ -66,6 +66,30 @@ describe('pipeline: events', () => {
     expect(seen[landed].type).to.equal(1);
     expect(seen[landed].step).to.equal(60);
   });
+
+  it('cost nothing until read: no tracking before the first read; from it on, a landing begins and a throw ends', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    createBox(world, { x: 0, y: 0.5, width: 10, height: 1, static: true });
+    const resting = createBox(world, { x: -3, y: -0.5, width: 1, height: 1 });
+    const falling = createBox(world, { x: 3, y: -2, width: 1, height: 1 });
+    const tracker = (world as unknown as { ctx: { eventTracker: { active: boolean } } }).ctx.eventTracker;
+    for (let k = 0; k < 10; k++) world.step();
+    expect(tracker.active, 'tracking before anyone read the events').to.equal(false);
+    // The first read starts tracking; the box already resting then is not reported as a new contact.
+    expect(world.events.count).to.equal(0);
+    expect(tracker.active).to.equal(true);
+    const begins: number[] = [];
+    const ends: number[] = [];
+    for (let k = 0; k < 50; k++) {
+      if (k === 40) world.applyBodyImpulse(resting.body, 0, -8);
+      world.step();
+      const e = world.events;
+      for (let i = 0; i < e.count; i++) (e.type[i] === 0 ? begins : ends).push(e.bodyA[i] === falling.body || e.bodyB[i] === falling.body ? falling.body : resting.body);
+    }
+    expect(begins).to.include(falling.body);
+    expect(begins.filter((b) => b === resting.body)).to.have.length(0);
+    expect(ends).to.include(resting.body);
+  });
 });
 
 describe('pipeline: queries', () => {
