@@ -165,12 +165,14 @@ function sharedEngine() {
  * The worker's script in the single-file build: the engine function's source text, called, as a blob: URL made once
  * per page and shared by every pool worker. Encoding that text (about 180,000 characters) into one Blob took 20-80 ms
  * on the loaded machine, mostly to flatten "(" + source + ")()" into one string, so the source is never concatenated:
- * it is encoded ahead in slices of WORKER_PIECE characters (slices of the script's own text, 1-5 ms each), one task
- * each, from the script's evaluation on (a scene starts its engine only after the page's first paint and its canvas);
- * a worker wanted before the last slice encodes the rest at once. Slices end between characters, never inside a
- * surrogate pair.
+ * it is encoded ahead in slices of WORKER_PIECE characters (slices of the script's own text, ~1 ms each, the first up
+ * to ~10-40 ms), WORKER_SLICE_MS of them per task, from the script's evaluation on (a scene starts its engine only after
+ * the page's first paint and its canvas); a worker wanted before the last slice encodes the rest at once. Slices end
+ * between characters, never inside a surrogate pair.
  */
-const WORKER_PIECE = 32768;
+const WORKER_PIECE = 16384;
+/** Milliseconds of encoding per task, at most one slice more. */
+const WORKER_SLICE_MS = 6;
 const WORKER_SCRIPT = `
 const __peSource = __peEngine.toString();
 const __pePieces = ["("];
@@ -184,7 +186,10 @@ function __peEncodePiece() {
   __peEncoded = end;
   return __peEncoded < __peSource.length;
 }
-setTimeout(function encodeAhead() { if (__peUrl === null && __peEncodePiece()) setTimeout(encodeAhead, 0); }, 0);
+setTimeout(function encodeAhead() {
+  const until = performance.now() + ${WORKER_SLICE_MS};
+  while (__peUrl === null && __peEncodePiece()) if (performance.now() > until) return void setTimeout(encodeAhead, 0);
+}, 0);
 export function __peWorkerUrl() {
   if (__peUrl === null) {
     while (__peEncoded < __peSource.length) __peEncodePiece();
