@@ -7,7 +7,10 @@
 //   node bench/kernel.mjs                       every scene, 5 runs
 //   node bench/kernel.mjs --runs 3 --scenes cloth200,circles10k
 //   node bench/kernel.mjs --sweep               also time the distance sweep alone (JS loop vs kernel, same arrays)
-import { loadavg } from 'node:os';
+//   node bench/kernel.mjs --runs 3 --out bench/results/kernel.json   also write the table as JSON (the experiments
+//                                               page, demo/report.html, draws it)
+import { writeFileSync } from 'node:fs';
+import { cpus, loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import { importTs } from '../scripts/build-engine-for-node.mjs';
 
@@ -70,6 +73,7 @@ const load = [loadavg()[0]];
 console.log(`solver kernels: ${runs} runs alternating, sleeping off, substeps ${new World().substeps} × iterations ${new World().iterations}, Node ${process.version}`);
 console.log('| scene | particles | links | js CPU ms/step | wasm CPU ms/step | wasm/js | wall js | wall wasm | max strain js | wasm |');
 console.log('|---|---|---|---|---|---|---|---|---|---|');
+const rows = [];
 for (const name of names) {
   const scene = SCENES[name];
   if (!scene) throw new Error(`unknown scene ${name}; scenes: ${Object.keys(SCENES).join(', ')}`);
@@ -80,10 +84,17 @@ for (const name of names) {
   const [r] = results.js;
   const strain = (rs) => `${(median(rs.map((x) => x.strain)) * 100).toFixed(3)}%`;
   console.log(`| ${scene.title} | ${r.particles} | ${r.links} | ${js.toFixed(3)} | ${wasm.toFixed(3)} | ${(wasm / js).toFixed(2)} | ${wallJs.toFixed(3)} | ${wallWasm.toFixed(3)} | ${strain(results.js)} | ${strain(results.wasm)} |`);
+  rows.push({ scene: name, title: scene.title, particles: r.particles, links: r.links, jsMs: js, wasmMs: wasm, wallJsMs: wallJs, wallWasmMs: wallWasm, strainJs: strain(results.js), strainWasm: strain(results.wasm) });
   load.push(loadavg()[0]);
 }
-console.log(`\nload average (1 min) during the runs: ${load.map((l) => l.toFixed(1)).join(' → ')} on ${(await import('node:os')).cpus().length} cores`);
+console.log(`\nload average (1 min) during the runs: ${load.map((l) => l.toFixed(1)).join(' → ')} on ${cpus().length} cores`);
 console.log(`kernel: ${wasmBytes.length} bytes of WebAssembly, ${gzipSync(wasmBytes).length} gzip`);
+const out = arg('--out', null);
+if (out) {
+  const summary = { date: new Date().toISOString(), runs, node: process.version, cpus: cpus().length, load, wasmBytes: wasmBytes.length, wasmGzip: gzipSync(wasmBytes).length };
+  writeFileSync(new URL(`../${out}`, import.meta.url), `${JSON.stringify({ summary, rows }, null, 2)}\n`);
+  console.log(`wrote ${out}`);
+}
 
 if (process.argv.includes('--sweep')) {
   // The distance sweep alone, on the same arrays: the JS loop (distance.ts) against the kernel's coloured packets.

@@ -267,7 +267,7 @@ async function experiment3(): Promise<void> {
   const time = mdTable(md, 'Milliseconds per step');
   if (time) {
     const head = time[0];
-    const engineCols = head.map((c, i) => [c, i] as const).filter(([c, i]) => i > 0 && !c.startsWith('ours ÷'));
+    const engineCols = head.map((c, i) => [c, i] as const).filter(([c, i]) => i > 0 && !c.includes('÷'));
     const scenes = time.slice(1).map((r) => r[0]);
     box.append(
       bars('Milliseconds per step, per scene and engine (lower is better)', 'ms per step', scenes.map((sc) => sc.split(' ')[0]), engineCols.map(([name, i]) => ({ name, values: time.slice(1).map((r) => (Number.isFinite(parseFloat(r[i])) ? parseFloat(r[i]) : null)) }))),
@@ -280,7 +280,27 @@ async function experiment3(): Promise<void> {
   if (quality) box.append(h('h3', 'Quality'), table(quality[0], quality.slice(1)));
 }
 
-await Promise.all([experiment1(), experiment2(), experiment3()]);
+// ---- experiment 4 ---------------------------------------------------------------------------------------------
+
+interface KernelRow { scene: string; title: string; particles: number; links: number; jsMs: number; wasmMs: number; wallJsMs: number; wallWasmMs: number; strainJs: string; strainWasm: string }
+async function experiment4(): Promise<void> {
+  const box = document.getElementById('e4')!;
+  const text = await fetchText('../bench/results/kernel.json');
+  if (!text) return void box.append(h('p', 'bench/results/kernel.json is missing: run the command above.', 'missing'));
+  const { summary, rows } = JSON.parse(text) as { summary: { date: string; runs: number; node: string; cpus: number; load: number[]; wasmBytes: number; wasmGzip: number }; rows: KernelRow[] };
+  box.append(h('p', `Measured ${summary.date.slice(0, 16).replace('T', ' ')} UTC in Node ${summary.node}, ${summary.runs} runs per kernel alternating (median CPU ms per step), sleeping off; machine load ${Math.min(...summary.load).toFixed(1)}–${Math.max(...summary.load).toFixed(1)} on ${summary.cpus} shared cores. The kernel is ${summary.wasmBytes} bytes of WebAssembly (${summary.wasmGzip} gzip).`, 'meta'));
+  const bySize = [...rows].sort((a, b) => a.particles - b.particles);
+  box.append(
+    bars('Step time by scene size: JS solver vs WebAssembly SIMD kernel (lower is better)', 'CPU ms per step', bySize.map((r) => `${r.scene} (${r.particles.toLocaleString('en')})`), [
+      { name: 'JS kernel', values: bySize.map((r) => r.jsMs) },
+      { name: 'WebAssembly kernel', values: bySize.map((r) => r.wasmMs) },
+    ]),
+    table(['scene', 'particles', 'links', 'JS ms/step', 'WASM ms/step', 'WASM ÷ JS', 'max strain JS', 'WASM'], bySize.map((r) => [r.title, String(r.particles), String(r.links), r.jsMs.toFixed(3), r.wasmMs.toFixed(3), (r.wasmMs / r.jsMs).toFixed(2), r.strainJs, r.strainWasm])),
+  );
+  closing.push(`Experiment 4 (WebAssembly ÷ JS kernel, CPU ms per step): ${bySize.map((r) => `${r.scene} ${(r.wasmMs / r.jsMs).toFixed(2)} (${r.jsMs.toFixed(2)} → ${r.wasmMs.toFixed(2)} ms)`).join('; ')}.`);
+}
+
+await Promise.all([experiment1(), experiment2(), experiment3(), experiment4()]);
 const c = document.getElementById('closing')!;
 c.replaceChildren(h('strong', 'Closing note. '), ...closing.map((t) => h('p', t)));
 export {};
