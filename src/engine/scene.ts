@@ -1,6 +1,7 @@
 // Scenes as plain data: what the worker loads, what <physics-scene> markup turns into, and what the catalogue of
 // named scenes produces for tests, benchmarks and the demo. buildScene() turns a description into bodies.
 import { World, type Handle, type WorldOptions } from './world.js';
+import type { KernelOptions } from './kernel/choice.js';
 import { createBox, createPolygon, type BoxOptions, type PolygonOptions } from './builders/rigid.js';
 import { createCircle, type CircleOptions } from './builders/circle.js';
 import { createRope, type RopeOptions } from './builders/rope.js';
@@ -32,7 +33,8 @@ export type BodyType = BodyDescription['type'];
 export const BODY_TYPES: readonly BodyType[] = ['box', 'circle', 'polygon', 'rope', 'cloth', 'softbody', 'ragdoll'];
 
 export interface SceneDescription {
-  world?: WorldOptions;
+  /** The world's options, the solver kernel among them (`kernel`, default 'js'). */
+  world?: WorldOptions & KernelOptions;
   bodies: BodyDescription[];
 }
 
