@@ -97,6 +97,15 @@ function sameContent(f: Float64Array, shown: Float64Array): boolean {
   return true;
 }
 
+/**
+ * Runs p5's code if it has not run yet: the builds' p5 is a stand-in that evaluates p5's modules on first use
+ * (src/render/p5/bundle.mjs). A scene calls this a task before it makes its canvas, so evaluating p5 and setting up
+ * the canvas do not add up to one long task. (With p5 imported whole this reads a static and costs nothing.)
+ */
+export function loadP5(): void {
+  void (p5 as unknown as { VERSION?: string }).VERSION;
+}
+
 export class SceneRenderer {
   /** World units shown across and down (the viewBox, origin at the top-left). */
   viewWidth = 16;

@@ -3,7 +3,7 @@
 // collision events. The element wires them together and is the only one that knows them all.
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
-import type { DrawHook } from '../../render/renderer.js';
+import { loadP5, type DrawHook } from '../../render/renderer.js';
 import { maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
@@ -149,6 +149,7 @@ export class PhysicsSceneElement extends LitElement {
   private readonly session: EngineSession = new EngineSession(this, {
     connect: () => this.connect(),
     nearby: () => this.visibility.whenNear(),
+    warm: loadP5,
     demand: () => this.visibility.demand(),
     scene: {
       prepare: () => {

@@ -50,6 +50,11 @@ export interface SessionOptions {
    * make no canvas and no world until a reader comes near. Default: nothing.
    */
   nearby?: () => Promise<void>;
+  /**
+   * Runs the drawing library's own code (loadP5), in the task the start resumes in once the scene is near, so that the
+   * canvas, after the next paint, is a task of its own: the two together were the page's longest task.
+   */
+  warm?: () => void;
   /** A caller wants the engine (whenReady(), running()): the start waits for nothing (VisibilityController.demand). */
   demand?: () => void;
   /**
@@ -192,6 +197,7 @@ export class EngineSession implements ReactiveController, EngineCommands {
       if (!current()) return;
       await this.options.nearby?.();
       if (!current()) return;
+      this.options.warm?.();
       await wait('canvas');
       if (!current()) return;
       scene.prepare();

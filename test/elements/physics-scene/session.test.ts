@@ -11,9 +11,9 @@ const SCENE: HostScene = { world: { bounds: null }, params: { iterations: 2 }, b
 
 /**
  * A session on a fake host; `wait` stands for the paint and the task a start waits for (default: none), `nearby` for
- * the scene coming near the viewport (default: none; `demand` is logged).
+ * the scene coming near the viewport (default: none; `demand` is logged); `warm`: log the drawing library's warm-up.
  */
-function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait: (before: 'canvas' | 'engine') => Promise<void> = async () => {}, nearby?: () => Promise<void>) {
+function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait: (before: 'canvas' | 'engine') => Promise<void> = async () => {}, nearby?: () => Promise<void>, warm = false) {
   const host = makeHost();
   const log: string[] = [];
   const failed: string[] = [];
@@ -25,6 +25,7 @@ function rig(connect: () => Promise<Engine> = async () => new FakeEngine(), wait
       return nearby();
     }),
     demand: () => log.push('demand'),
+    warm: warm ? () => log.push('warm') : undefined,
     wait: (before) => {
       log.push(`wait for ${before}`);
       return wait(before);
@@ -159,6 +160,22 @@ describe('EngineSession', () => {
     expect(t.log).to.deep.equal(['wait for canvas', 'prepare', 'wait for engine']);
     expect(t.session.engine).to.equal(null);
     t.host.remove();
+  });
+
+  it('warms the drawing library up in the task before the wait for the canvas, so the two are not one long task', async () => {
+    const near = deferred<void>();
+    const canvas = deferred<void>();
+    const r = rig(undefined, (before) => (before === 'canvas' ? canvas.promise : Promise.resolve()), () => near.promise, true);
+    host = r.host;
+    document.body.append(host);
+    await settle();
+    expect(r.log).to.deep.equal(['wait until near']);
+    near.resolve();
+    await settle();
+    expect(r.log).to.deep.equal(['wait until near', 'warm', 'wait for canvas']);
+    canvas.resolve();
+    await r.session.ready;
+    expect(r.log.slice(0, 4)).to.deep.equal(['wait until near', 'warm', 'wait for canvas', 'prepare']);
   });
 
   it('afterPaint() resolves after the next animation frame, in a task of its own', async () => {
