@@ -6,6 +6,8 @@ import { KERNEL_WASM_BASE64 } from './wasm-bytes.js';
 import { WasmKernel } from './wasm-kernel.js';
 
 export const KERNELS = ['js', 'wasm', 'auto'] as const;
+/** The warning that 'wasm' falls back to JS has been given (in this page or worker). */
+let warned = false;
 /** 'js': the JavaScript solver; 'wasm': the WebAssembly SIMD kernel (JS, with one warning, where it cannot run);
  *  'auto': the WebAssembly kernel where it can run, silently JS elsewhere. */
 export type KernelChoice = (typeof KERNELS)[number];
@@ -48,7 +50,11 @@ export function chooseKernel(choice: unknown = 'js'): { kernel: WasmKernel | nul
   if (requested === 'js') return { kernel: null, diagnostics: { kernel: 'js', requested, reason: '' } };
   const module = kernelModule();
   if (typeof module === 'string') {
-    if (requested === 'wasm') console.warn(`physics-elements: the WebAssembly kernel cannot run, using the JS solver: ${module}`);
+    if (requested === 'wasm' && !warned) {
+      // Once per page or worker: the reason does not change, and a scene rebuilds its world on every reset.
+      warned = true;
+      console.warn(`physics-elements: the WebAssembly kernel cannot run, using the JS solver: ${module}`);
+    }
     return { kernel: null, diagnostics: { kernel: 'js', requested, reason: module } };
   }
   return { kernel: new WasmKernel(module), diagnostics: { kernel: 'wasm', requested, reason: '' } };
@@ -57,4 +63,5 @@ export function chooseKernel(choice: unknown = 'js'): { kernel: WasmKernel | nul
 /** For tests: forget the compiled module (so a test can simulate a platform without it). */
 export function resetKernelModule(value?: string): void {
   compiled = value;
+  warned = false;
 }

@@ -55,7 +55,7 @@ describe('solver kernel: choice and diagnostics', () => {
     expect(() => new World({ kernel: 'WASM' as KernelChoice })).to.throw(RangeError, 'got "WASM"');
   });
 
-  it('falls back to JS where WebAssembly is refused: silently for auto, with one warning for wasm; it still steps', () => {
+  it('falls back to JS where WebAssembly is refused: silently for auto, with one warning for wasm (once); it still steps', () => {
     const refusal = "WebAssembly was refused (CompileError); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'";
     const warnings: string[] = [];
     const warn = console.warn;
@@ -69,6 +69,9 @@ describe('solver kernel: choice and diagnostics', () => {
       expect(wasm.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: refusal });
       expect(warnings).to.have.length(1);
       expect(warnings[0]).to.contain('wasm-unsafe-eval');
+      // Once per page or worker: another world asking for 'wasm' (a scene's reset rebuilds it) says nothing more.
+      clothAndRope('wasm');
+      expect(warnings).to.have.length(1);
       const js = clothAndRope('js');
       for (let k = 0; k < 60; k++) [auto, wasm, js].forEach((w) => w.step());
       expect(wasm.stateHash()).to.equal(js.stateHash());
