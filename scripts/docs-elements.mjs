@@ -142,9 +142,14 @@ function describeApi(decl, classes, { inheritedNote }) {
   const memberByName = new Map(members.map((m) => [m.name, m]));
   const attributes = (decl.attributes ?? []).filter((a) => isOwn(a, 'attributes', classes));
   const attributeFields = new Set((decl.attributes ?? []).map((a) => a.fieldName).filter(Boolean));
-  const properties = members.filter(
-    (m) => m.kind === 'field' && isPublic(m) && !attributeFields.has(m.name) && !m.attribute && isOwn(m, 'members', classes),
-  );
+  // A getter and setter pair comes as two fields of one name: one row, the documented one.
+  const fieldByKey = new Map();
+  for (const m of members) {
+    if (m.kind !== 'field' || !isPublic(m) || attributeFields.has(m.name) || m.attribute || !isOwn(m, 'members', classes)) continue;
+    const key = `${m.static ? 'static ' : ''}${m.name}`;
+    if (!fieldByKey.has(key) || (!fieldByKey.get(key).description && m.description)) fieldByKey.set(key, m);
+  }
+  const properties = [...fieldByKey.values()];
   const methods = members.filter((m) => m.kind === 'method' && isPublic(m) && m.description && isOwn(m, 'members', classes));
   const events = (decl.events ?? []).filter((e) => e.name && isOwn(e, 'events', classes));
   const parts = (decl.cssParts ?? []).filter((p) => isOwn(p, 'cssParts', classes));

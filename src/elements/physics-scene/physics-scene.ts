@@ -128,8 +128,9 @@ export class PhysicsSceneElement extends LitElement {
   /** How `drawHook` combines with the default drawing: "over" (default) or "replace". */
   @property({ attribute: 'draw-mode' }) drawMode = 'over';
   /**
-   * Custom p5 drawing, called every frame with a DrawView (the p5 instance, the 2D context, interpolated particle
-   * positions, the topology and the world → canvas mapping), after the default drawing ("over") or instead ("replace").
+   * Custom p5 drawing, called each time the scene draws (every new frame while it moves; `view.requestDraw()` asks for
+   * one more) with a DrawView (the p5 instance, the 2D context, interpolated particle positions and poses, the topology
+   * and the world → canvas mapping), after the default drawing ("over") or instead ("replace"). See docs/drawing.md.
    */
   @property({ attribute: false }) drawHook: DrawHook | null = null;
 
