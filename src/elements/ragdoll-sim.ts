@@ -68,7 +68,8 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   respawned = 0;
 
   /** Per ragdoll: where it was last seen moving, and since when (simulated seconds) it has stayed there. */
-  private readonly still = new Map<Element, { x: number; y: number; since: number }>();
+  // Weak: a doll removed from the markup (count changed, re-rendered) must not stay alive through this table.
+  private readonly still = new WeakMap<Element, { x: number; y: number; since: number }>();
 
   constructor() {
     super();
