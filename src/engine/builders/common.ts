@@ -31,6 +31,11 @@ export interface BodyOptions {
   group?: number;
 }
 
+/** The collision options of a body's options, passed on as they are (a box's frame, a rigid body). */
+export function collisionOptions(o: BodyOptions): Pick<BodyOptions, 'collide' | 'friction' | 'restitution' | 'category' | 'mask' | 'group'> {
+  return { collide: o.collide, friction: o.friction, restitution: o.restitution, category: o.category, mask: o.mask, group: o.group };
+}
+
 /** The collider a builder asks for, from the body options and its default shape. */
 export function colliderOf(o: BodyOptions, shape: 'polygon' | 'particles', collideByDefault: boolean, parts?: number[][]): ColliderOptions {
   const collide = o.collide ?? collideByDefault;

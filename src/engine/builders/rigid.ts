@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { finite, oneOf, positive } from '../validate.js';
-import { BODY_MODELS, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
+import { BODY_MODELS, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
 
 /** What a rigid box, polygon or circle takes besides its shape. */
@@ -72,12 +72,7 @@ export function createRigid(world: World, o: RigidOptions & { x?: number; y?: nu
     angularVelocity: o.angularVelocity,
     type: o.static ? 'static' : o.kinematic ? 'kinematic' : 'dynamic',
     mass: o.static ? undefined : o.mass,
-    collide: o.collide,
-    friction: o.friction,
-    restitution: o.restitution,
-    category: o.category,
-    mask: o.mask,
-    group: o.group,
+    ...collisionOptions(o),
   });
   return { body, particles: world.bodyParticleHandles(body), constraints: [] };
 }
@@ -136,12 +131,7 @@ export function createBox(world: World, o: BoxOptions): Built {
     mass: o.mass ?? 4 * w * h,
     compliance: o.compliance,
     static: o.static,
-    collide: o.collide,
-    friction: o.friction,
-    restitution: o.restitution,
-    category: o.category,
-    mask: o.mask,
-    group: o.group,
+    ...collisionOptions(o),
     },
     [[1, 3]],
   );
