@@ -8,7 +8,8 @@
 //   left out). The second is "engine + elements": the engine once (the page holds it for the main-thread fallback),
 //   the elements, the renderer and the worker client; not the worker chunk, which runs the same engine.
 // - lit + comlink as the elements use them, and p5: the pieces the builds ship (src/render/p5/modules.js, bundled by
-//   src/render/p5/bundle.mjs) and the whole library, for comparison.
+//   src/render/p5/bundle.mjs, which leaves out the WebGL and image code of p5's core with scripts/build/p5-trim.mjs:
+//   the same module the builds inline) and the whole library, for comparison.
 // - p5's share of the single file: the file with p5 minus the same file without it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
@@ -77,7 +78,7 @@ const deps = 'export * from "lit"; export * from "lit/decorators.js"; export * f
 add('lit + comlink (for comparison)', [await bundled('lit + comlink', deps)]);
 {
   const bytes = Buffer.from(await bundleP5());
-  add('p5 as the builds ship it: core + shape + color + math (docs/drawing.md)', [{ file: 'src/render/p5/modules.js, bundled', raw: bytes.length, gzip: gzip(bytes) }]);
+  add('p5 as the builds ship it: core + shape + color + math, 2D only (docs/drawing.md)', [{ file: 'src/render/p5/modules.js, bundled and trimmed', raw: bytes.length, gzip: gzip(bytes) }]);
 }
 const p5 = resolve(root, 'node_modules/p5/lib/p5.esm.min.js');
 if (existsSync(p5)) add('all of p5 (for comparison)', [fileSize(p5)]);

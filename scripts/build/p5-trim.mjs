@@ -1,0 +1,86 @@
+// Node-side build helper (not shipped): an esbuild plugin that makes p5 2.x's modular entries (p5/core and the addons
+// src/render/p5/modules.js registers) carry only what a 2D canvas uses. Used by src/render/p5/bundle.mjs, so the
+// builds, the dev server, the tests and scripts/sizes.mjs all get the same p5.
+//
+// p5/core is not small on its own: its `rendering` and `graphics` addons (createCanvas, createGraphics) live in one of
+// p5's build chunks (dist/rendering-*.js, ~700 KB of source) together with WebGL's renderer, camera, lights,
+// materials, framebuffers, image loading and saving, and p5.Graphics registers all of those on its prototype. Three
+// changes, none touching what a 2D sketch or a draw hook calls (docs/drawing.md lists that API):
+//
+// 1. p5's dist modules (and the CommonJS packages omggif and libtess, which only GIF decoding and WebGL tessellation
+//    use) are side-effect free for the bundler: a module none of whose exports are used is left out. p5's core
+//    imports ~50 modules bare (`import '../webgl/p5.Shader.js'`) only because its build chunked them so; their
+//    top-level code only fills their own tables (or registers them on a global p5, which bundle.mjs defines away).
+// 2. p5.Graphics (createGraphics) gets the 2D addons only: shapes, attributes, curves, vertices, custom shapes,
+//    colour setting and creation, transforms, trigonometry; not image loading/drawing, pixels, 3D primitives,
+//    lights and materials (the main canvas has none of those either: their addons are not registered).
+//    createFramebuffer() (WebGL only) throws instead of pulling the WebGL framebuffer in.
+// 3. The 2D renderer's filter() back end (a WebGL shader pipeline, reached only through the image addon's filter(),
+//    which is not registered) is a stand-in that throws.
+//
+// Every text change is checked: if p5's files change shape (a new p5 version), the build fails and says which
+// change no longer applies, instead of shipping an untrimmed or broken p5.
+import { readFile } from 'node:fs/promises';
+
+/** p5's code and the CommonJS packages only its image and WebGL parts use. */
+const SIDE_EFFECT_FREE = /[\\/]node_modules[\\/](?:p5[\\/]dist|omggif|libtess)[\\/]/;
+
+const NO_WEBGL = "throw new Error(\"createFramebuffer() needs p5's WebGL renderer, which this build of p5 leaves out (docs/drawing.md)\");";
+
+/**
+ * Text changes: [file pattern, what, pattern, replacement, how many matches there must be].
+ * The patterns match p5 2.3's dist files; the counts make a silent no-op impossible.
+ */
+const EDITS = [
+  [/[\\/]p5[\\/]dist[\\/]rendering-[\w-]+\.js$/, 'p5.Graphics: 2D addons only', /^[ \t]*(?:loadingDisplaying|image|pixels|primitives3D|light|material)\(p5, p5\.Graphics\.prototype\);[ \t]*$/gm, '', 6],
+  [/[\\/]p5[\\/]dist[\\/]rendering-[\w-]+\.js$/, 'createFramebuffer() without WebGL', /return new Framebuffer\(this\._renderer, options\);/g, NO_WEBGL, 2],
+];
+
+/** What the 2D renderer's `filterRenderer` getter constructs instead of p5's WebGL FilterRenderer2D. */
+const FILTER_STAND_IN = `export default class FilterRenderer2D {
+  constructor() { throw new Error("filter() needs p5's image addon, which this build of p5 leaves out (docs/drawing.md)"); }
+}`;
+
+export function p5Trim() {
+  return {
+    name: 'p5-trim',
+    setup(build) {
+      const applied = new Map(EDITS.map((e) => [e, 0]));
+      build.onStart(() => applied.forEach((_, e) => applied.set(e, 0)));
+
+      build.onResolve({ filter: /filterRenderer2D\.js$/ }, (args) =>
+        /[\\/]p5[\\/]dist[\\/]/.test(args.importer) ? { path: 'filterRenderer2D', namespace: 'p5-trim' } : null,
+      );
+      build.onLoad({ filter: /.*/, namespace: 'p5-trim' }, () => ({ contents: FILTER_STAND_IN, loader: 'js' }));
+
+      // Mark resolved modules side-effect free (esbuild's onResolve can say so; package.json's sideEffects would too).
+      build.onResolve({ filter: /.*/ }, async (args) => {
+        if (args.pluginData?.p5Trim || args.kind === 'entry-point') return null;
+        const { path, importer, namespace, resolveDir, kind, with: attributes } = args;
+        const r = await build.resolve(path, { importer, namespace, resolveDir, kind, with: attributes, pluginData: { p5Trim: true } });
+        if (r.errors.length) return { errors: r.errors };
+        const { errors, warnings, ...resolved } = r;
+        return { ...resolved, pluginData: args.pluginData, ...(SIDE_EFFECT_FREE.test(r.path) ? { sideEffects: false } : {}) };
+      });
+
+      build.onLoad({ filter: /[\\/]p5[\\/]dist[\\/].*\.js$/ }, async (args) => {
+        const edits = EDITS.filter(([file]) => file.test(args.path));
+        if (edits.length === 0) return null;
+        let code = await readFile(args.path, 'utf8');
+        for (const edit of edits) {
+          const [, , pattern, replacement] = edit;
+          code = code.replace(pattern, () => (applied.set(edit, applied.get(edit) + 1), replacement));
+        }
+        return { contents: code, loader: 'js' };
+      });
+
+      build.onEnd((result) => {
+        for (const [edit, n] of applied) {
+          if (n !== edit[4]) {
+            result.errors.push({ text: `p5-trim: "${edit[1]}" matched ${n} times, expected ${edit[4]} (p5's files changed: update scripts/build/p5-trim.mjs)` });
+          }
+        }
+      });
+    },
+  };
+}
