@@ -10,16 +10,16 @@
 /**
  * The coloured order: rows by colour, each colour padded with -1 to a multiple of `lanes`, then the serial tail (each
  * row followed by lanes − 1 times -1); `lanes` consecutive entries form a packet. `slack`[row] is 1 for a link whose
- * limits differ (see visitOrder).
+ * limits differ (see visitOrder). `subset`: colour only these rows (the others are solved elsewhere: runs.ts).
  */
-export function colourRows(count: number, a: Int32Array, b: Int32Array, slack: Uint8Array, invMass: Float64Array, lanes = 2): Int32Array {
+export function colourRows(count: number, a: Int32Array, b: Int32Array, slack: Uint8Array, invMass: Float64Array, lanes = 2, subset?: Int32Array): Int32Array {
   // Masks of the colours each movable particle takes part in; an immovable one's stay 0 and are never set.
   const low = new Uint32Array(invMass.length);
   const high = new Uint32Array(invMass.length);
   const colourOf = new Int8Array(count);
   const sizes = new Int32Array(64);
   let tail = 0;
-  for (const i of visitOrder(count, slack)) {
+  for (const i of visitOrder(count, slack, subset)) {
     const ia = a[i];
     const ib = b[i];
     const c = lowestFree(low[ia] | low[ib], high[ia] | high[ib]);
@@ -38,7 +38,7 @@ export function colourRows(count: number, a: Int32Array, b: Int32Array, slack: U
   const order = new Int32Array(start[64] + lanes * tail).fill(-1);
   const next = start.slice(0, 64);
   let t = start[64];
-  for (const i of visitOrder(count, slack)) {
+  for (const i of visitOrder(count, slack, subset)) {
     const c = colourOf[i];
     if (c < 0) {
       order[t] = i;
@@ -50,10 +50,11 @@ export function colourRows(count: number, a: Int32Array, b: Int32Array, slack: U
 
 /** Sticks first, then slack links (min < max), each in row order: within a colour the two kinds then fill packets of
  *  their own, and a packet of slack links within their limits is skipped whole. */
-function visitOrder(count: number, slack: Uint8Array): Int32Array {
-  const order = new Int32Array(count);
+function visitOrder(count: number, slack: Uint8Array, subset?: Int32Array): Int32Array {
+  const rows = subset ?? Int32Array.from({ length: count }, (_, i) => i);
+  const order = new Int32Array(rows.length);
   let k = 0;
-  for (const kind of [0, 1]) for (let i = 0; i < count; i++) if (slack[i] === kind) order[k++] = i;
+  for (const kind of [0, 1]) for (const i of rows) if (slack[i] === kind) order[k++] = i;
   return order;
 }
 

@@ -9,8 +9,9 @@
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
 //
-// With the WebAssembly kernel (World option kernel, ctx.kernel), integration, velocities and the distance sweep run in
-// it, over the same columns (kernel/wasm-kernel.ts); every other phase is the same JS function either way.
+// With the WebAssembly kernel (World option kernel, ctx.kernel), integration (with the accelerations, unless springs
+// add to them), velocities and the distance sweep run in it, over the same columns (kernel/wasm-kernel.ts); every other
+// phase is the same JS function either way.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
@@ -64,8 +65,10 @@ export function step(ctx: StepContext, dt: number): void {
 export function substep(ctx: StepContext, h: number): void {
   const { settings, particles, kernel } = ctx;
   const damp = 1 / (1 + h * settings.damping);
-  accelerate(ctx, h);
-  if (kernel && settings.integrator === 'verlet') kernel.integrateVerlet(particles, h, damp);
+  // The kernel's Verlet step computes the accelerations itself (gravity and forces) unless springs add to them.
+  const fused = kernel !== null && settings.integrator === 'verlet' && ctx.constraints.springs.count === 0;
+  if (!fused) accelerate(ctx, h);
+  if (kernel && settings.integrator === 'verlet') kernel.integrateVerlet(particles, h, damp, fused ? settings.gravity : null);
   else integrate(particles, h, damp, settings.integrator);
   const sub = ctx.substepReals;
   sub[0] = h;
@@ -152,8 +155,9 @@ function accelerate(ctx: StepContext, h: number): void {
 function resetMultipliers(ctx: StepContext): void {
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
   if (joints.count > 0) joints.beginSubstep();
-  distances.lambda.fill(0, 0, distances.count);
-  ctx.kernel?.resetLambdas();
+  // The kernel keeps the distance multipliers in its own lanes (and starts them at zero itself).
+  if (ctx.kernel) ctx.kernel.resetLambdas();
+  else distances.lambda.fill(0, 0, distances.count);
   angles.lambda.fill(0, 0, angles.count);
   areas.lambda.fill(0, 0, areas.count);
   pins.lambdaX.fill(0, 0, pins.count);
