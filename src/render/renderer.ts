@@ -6,6 +6,14 @@
 // an animation frame whether there is anything new to show (a frame that moved something, the interpolation still on
 // its way, a resize, a style, view or hook change) and asks p5 for one redraw() if so. A paused or settled scene (its
 // frames repeat the positions already drawn) and a reduced-motion one cost no drawing at all.
+//
+// Set-up in tasks of their own: p5's instance (and the default canvas it always makes) in the task that makes the
+// renderer, the real canvas in the next task, so neither adds up with the other into one long task while a page loads.
+//
+// Memory: a canvas costs its backing store (width × height × 4 bytes at the pixel density) and the compositor's copies
+// of it. A scene farther than about a viewport from the screen gives its backing store back (the canvas is 0 × 0 pixels,
+// its CSS box unchanged) and takes it back, drawing what it last showed at once, when it comes near again: a post with
+// many scenes holds the pixels of those a reader can see or is about to.
 import p5 from 'p5';
 import { F, HEADER, POSE, aabbOffset, frameLength, poseOffset, type LinkEnd, type Topology } from '../worker/protocol.js';
 import type { FrameStore } from '../worker/client.js';
@@ -61,6 +69,12 @@ interface Group {
   /** Places in the topology's bodies. */
   bodies: number[];
 }
+
+/** How near the viewport a canvas keeps its pixels: within one viewport's size of it (as a scene starts). */
+const KEEP_MARGIN = '100% 100% 100% 100%';
+
+/** Resolves in a new task (setTimeout 0: the browser may paint or handle input in between). */
+const nextTask = (): Promise<void> => new Promise((resolve) => setTimeout(resolve, 0));
 
 let firstColorMethods: Map<string, unknown> | null = null;
 
@@ -125,6 +139,16 @@ export class SceneRenderer {
   private poses = new Float64Array(3 * 16);
   private readonly instance: p5;
   private readonly observer: ResizeObserver;
+  /** Watches the canvas come near the viewport or go far from it (null where there is no IntersectionObserver). */
+  private readonly nearObserver: IntersectionObserver | null = null;
+  /** Far from the viewport: the canvas has given its pixels back (0 × 0) until it comes near again. */
+  private released = false;
+  /** Far from the viewport, as the near-watch last said (a canvas made far away gives its pixels back once made). */
+  private far = false;
+  /** The 2D context's state (fill, stroke, line width, font, …) when the pixels were given back, to put back with them. */
+  private releasedState: Record<string, unknown> = {};
+  /** The size the ResizeObserver last reported (CSS pixels), or null before its first report. */
+  private observedSize: { width: number; height: number } | null = null;
   private view: DrawView | null = null;
   private ownHooks: unknown[] = [];
   private scale = 1;
@@ -164,7 +188,11 @@ export class SceneRenderer {
       // violation on every page). The element shows its own loading state: mark p5's spinner as already shown (its
       // presetup hook then does nothing; postsetup calls remove() and clears the field).
       (s as unknown as { _loadingIndicator: { remove(): void } | null })._loadingIndicator = { remove() {} };
-      s.setup = () => {
+      // p5 awaits setup: the instance and its default 100 × 100 canvas are this task's work, the canvas the next's.
+      s.setup = async () => {
+        // p5's default canvas, replaced in the next task: never seen.
+        (s as unknown as { canvas?: HTMLCanvasElement }).canvas?.style.setProperty('visibility', 'hidden');
+        await nextTask();
         if (this.removed) {
           // Disposed before p5 finished starting: remove() found no canvas to stop then; stop it now.
           s.noLoop();
@@ -172,9 +200,12 @@ export class SceneRenderer {
           return;
         }
         pinColorDecorators();
-        const { width, height } = this.boxSize();
-        s.pixelDensity(Math.max(1, Math.min(3, window.devicePixelRatio || 1)));
+        // The ResizeObserver's size when it has reported one (no layout to force), else the box as laid out now.
+        const { width, height } = this.observedSize ?? this.boxSize();
         const renderer = s.createCanvas(width, height);
+        // p5 makes the canvas at the display's density rounded up; only a density it did not choose costs a resize.
+        const density = Math.max(1, Math.min(3, window.devicePixelRatio || 1));
+        if (s.pixelDensity() !== density) s.pixelDensity(density);
         const canvas = (renderer as unknown as { elt: HTMLCanvasElement }).elt;
         canvas.setAttribute('part', 'canvas');
         canvas.style.display = 'block';
@@ -184,18 +215,86 @@ export class SceneRenderer {
         // p5 draws once after set-up; from then on only redraw() draws (see watch()).
         s.noLoop();
         if (this.looping) this.watchSoon();
+        else if (this.far) this.release();
       };
       s.draw = () => this.draw(s);
     }, container);
     this.ownHooks = hooks ? hooks.slice(before) : [];
     track('sketches', 1);
-    this.observer = new ResizeObserver(() => this.resize());
+    this.observer = new ResizeObserver((entries) => {
+      const box = entries[entries.length - 1]?.contentRect;
+      if (box) this.observedSize = { width: Math.max(1, Math.round(box.width)), height: Math.max(1, Math.round(box.height)) };
+      this.resize();
+    });
     this.observer.observe(container);
     track('observers', 1);
+    if (typeof IntersectionObserver === 'function') {
+      this.nearObserver = new IntersectionObserver(
+        (entries) => {
+          const e = entries[entries.length - 1];
+          if (e) this.setNear(e.isIntersecting);
+        },
+        { rootMargin: KEEP_MARGIN },
+      );
+      this.nearObserver.observe(container);
+      track('observers', 1);
+    }
   }
 
+  /** The canvas, once made (p5's default canvas before it does not count). */
   get canvas(): HTMLCanvasElement | null {
-    return this.container.querySelector('canvas');
+    return this.ready ? this.container.querySelector('canvas') : null;
+  }
+
+  /** True while the canvas has given its pixels back (far from the viewport): it is 0 × 0 until it comes near again. */
+  get isReleased(): boolean {
+    return this.released;
+  }
+
+  /**
+   * Near the viewport (true): the canvas has its pixels and shows the scene, drawn at once if it had given them back.
+   * Far (false): it gives them back. Called by the renderer's own IntersectionObserver; also for tests.
+   */
+  setNear(near: boolean): void {
+    this.far = !near;
+    if (near) this.restore();
+    else this.release();
+  }
+
+  /** Gives the canvas' backing store back: 0 × 0 pixels, the CSS box unchanged, the context's state kept aside. */
+  private release(): void {
+    if (this.released || !this.ready || this.removed) return;
+    const canvas = this.canvas;
+    const ctx = this.instance.drawingContext as CanvasRenderingContext2D | undefined;
+    if (!canvas || !ctx) return;
+    const state: Record<string, unknown> = {};
+    for (const key in ctx) {
+      const value = (ctx as unknown as Record<string, unknown>)[key];
+      if (typeof value !== 'object' && typeof value !== 'function') state[key] = value;
+    }
+    this.releasedState = state;
+    this.released = true;
+    canvas.width = 0;
+    canvas.height = 0;
+  }
+
+  /** Takes the pixels back at the current size and draws what was last shown (or anything newer) at once. */
+  private restore(): void {
+    if (!this.released || this.removed) return;
+    this.released = false;
+    // resizeCanvas sets the canvas' pixel size and the density's scale; the context's state goes back as it was.
+    this.instance.resizeCanvas(this.cssWidth, this.cssHeight, true);
+    const ctx = this.instance.drawingContext as unknown as Record<string, unknown>;
+    for (const [key, value] of Object.entries(this.releasedState)) {
+      try {
+        ctx[key] = value;
+      } catch {
+        // A read-only property.
+      }
+    }
+    this.releasedState = {};
+    this.dirty = true;
+    void this.instance.redraw();
   }
 
   /**
@@ -205,6 +304,8 @@ export class SceneRenderer {
   setLooping(on: boolean): void {
     if (on === this.looping || this.removed) return;
     this.looping = on;
+    // On screen is near: a canvas whose near-watch has not told it yet takes its pixels back now.
+    if (on) this.restore();
     if (on && this.ready) this.watchSoon();
     if (!on && this.watchRequest) {
       cancelAnimationFrame(this.watchRequest);
@@ -268,6 +369,10 @@ export class SceneRenderer {
     this.watchRequest = 0;
     this.observer.disconnect();
     track('observers', -1);
+    if (this.nearObserver) {
+      this.nearObserver.disconnect();
+      track('observers', -1);
+    }
     const hooks = (p5 as unknown as { lifecycleHooks?: { remove?: unknown[] } }).lifecycleHooks?.remove;
     const own = this.ownHooks;
     void Promise.resolve(this.instance.remove() as unknown).finally(() => {
@@ -286,10 +391,12 @@ export class SceneRenderer {
 
   private resize(): void {
     if (!this.ready || this.removed) return;
-    const { width, height } = this.boxSize();
+    const { width, height } = this.observedSize ?? this.boxSize();
     if (width === this.cssWidth && height === this.cssHeight) return;
     this.cssWidth = width;
     this.cssHeight = height;
+    // Without pixels: the new size is taken with them.
+    if (this.released) return;
     // Resizing clears the canvas: p5's resizeCanvas() redraws at once (before the page paints), whatever the frames.
     this.dirty = true;
     this.instance.resizeCanvas(width, height);
@@ -304,6 +411,7 @@ export class SceneRenderer {
     this.watchRequest = 0;
     if (!this.looping || this.removed) return;
     this.watchSoon();
+    this.restore();
     if (this.changed()) void this.instance.redraw();
   };
 

@@ -217,7 +217,47 @@ describe('SceneRenderer draws only what changes', () => {
     await waitFor(() => hooked.includes(30), 'the hook given the new frame');
   });
 
-  it('draws nothing while not looping (off screen), and what changed meanwhile once it loops again', async () => {
+  it('far from the viewport gives its pixels back (0 × 0, same CSS box); near again draws the newest frame at once, context state kept', async () => {
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, false, [5, 5], 1));
+    const r = await start(frames);
+    r.setStyle(1, { fill: '#00ff00', stroke: null, lineWidth: 1 });
+    await waitFor(() => !r.drawPending, 'the style drawn');
+    const canvas = r.canvas!;
+    const size = [canvas.width, canvas.height];
+    const css = canvas.getBoundingClientRect();
+    expect(size[0] * size[1]).to.be.greaterThan(0);
+    // State a draw hook may have set once and count on (p5 caches its fill and stroke and does not set them again).
+    const ctx = canvas.getContext('2d')!;
+    ctx.miterLimit = 7;
+    r.setLooping(false);
+    r.setNear(false);
+    expect(r.isReleased).to.equal(true);
+    expect([canvas.width, canvas.height]).to.deep.equal([0, 0]);
+    const now = canvas.getBoundingClientRect();
+    expect([now.width, now.height]).to.deep.equal([css.width, css.height]);
+    // Moved while far away, and resized: drawn at the new place and size when near again, before any animation frame.
+    frames.accept(frame(2, 1 / 60, false, [2, 2], 1));
+    const drawn = r.drawn;
+    r.setNear(true);
+    await new Promise((resolve) => setTimeout(resolve, 0));
+    expect(r.drawn).to.equal(drawn + 1);
+    expect([canvas.width, canvas.height]).to.deep.equal(size);
+    expect(ctx.miterLimit).to.equal(7);
+    const density = canvas.width / css.width;
+    const at = (x: number, y: number) => Array.from(ctx.getImageData(Math.floor(x * 20 * density), Math.floor(y * 20 * density), 1, 1).data);
+    expect(at(2, 2).slice(0, 3)).to.deep.equal([0, 255, 0]);
+    expect(at(5, 5).slice(0, 3)).to.not.deep.equal([0, 255, 0]);
+    // A resize while far away is taken with the pixels.
+    r.setNear(false);
+    box.style.width = '150px';
+    await animationFrames(3);
+    expect([canvas.width, canvas.height]).to.deep.equal([0, 0]);
+    r.setNear(true);
+    expect(canvas.width).to.equal(Math.round(150 * density));
+  });
+
+    it('draws nothing while not looping (off screen), and what changed meanwhile once it loops again', async () => {
     const frames = new FrameStore();
     frames.accept(frame(1, 0, false, [5, 5], 1));
     const r = await start(frames);

@@ -410,6 +410,15 @@ export class PhysicsSceneElement extends LitElement {
     this.fallbackChanged();
   }
 
+  /**
+   * The first render waits for a task of its own: elements already in the page upgrade while the script is evaluated,
+   * and rendering them there made that one long task (the page reserves the box meanwhile; see styles.ts).
+   */
+  protected override scheduleUpdate(): void | Promise<unknown> {
+    if (this.hasUpdated) return super.scheduleUpdate();
+    return new Promise<void>((resolve) => setTimeout(resolve, 0)).then(() => super.scheduleUpdate());
+  }
+
   override disconnectedCallback(): void {
     super.disconnectedCallback();
     // A move (disconnect then connect in the same task) keeps the running engine.
