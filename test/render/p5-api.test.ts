@@ -86,6 +86,20 @@ describe('p5 as the builds ship it', () => {
     expect(pixel(ctx, 78, 85)).to.deep.equal([255, 0, 0, 255]); // beside it
   });
 
+  it('maps a colour outside sRGB into the canvas gamut (colorjs.io gamut mapping)', () => {
+    const ctx = p.drawingContext as CanvasRenderingContext2D;
+    p.colorMode(p.OKLCH);
+    // p5's OKLCH chroma 100 is colorjs.io's 0.267: just outside sRGB, whose red is oklch(0.628 0.258 29.2). The gamut
+    // mapping (CSS's, the default) lowers the chroma until the colour fits: sRGB's red, as with p5 untrimmed.
+    p.background(63, 100, 29);
+    expect(pixel(ctx, 50, 50)).to.deep.equal([255, 0, 0, 255]);
+    p.background(63, 40, 29); // inside sRGB: not mapped, a duller red
+    const [r, g, b] = pixel(ctx, 50, 50);
+    expect(r).to.be.within(150, 254);
+    expect(g).to.be.within(40, 120);
+    expect(b).to.be.within(40, 120);
+  });
+
   it('transforms: translate, rotate, scale, push and pop', () => {
     const ctx = p.drawingContext as CanvasRenderingContext2D;
     p.background(255);
@@ -108,6 +122,12 @@ describe('p5 as the builds ship it', () => {
   it('colour and math helpers give the numbers they document', () => {
     const c = p.lerpColor(p.color(0, 0, 0), p.color(200, 100, 50), 0.5);
     expect([p.red(c), p.green(c), p.blue(c), p.alpha(c)]).to.deep.equal([100, 50, 25, 255]);
+    const crimson = p.color('crimson');
+    expect([p.red(crimson), p.green(crimson), p.blue(crimson)]).to.deep.equal([220, 20, 60]);
+    p.colorMode(p.HSB);
+    const hsb = p.color(240, 100, 100);
+    p.colorMode(p.RGB);
+    expect([p.red(hsb), p.green(hsb), p.blue(hsb)].map(Math.round)).to.deep.equal([0, 0, 255]);
     expect(p.map(5, 0, 10, 100, 200)).to.equal(150);
     expect(p.constrain(12, 0, 10)).to.equal(10);
     expect(p.lerp(2, 4, 0.25)).to.equal(2.5);
