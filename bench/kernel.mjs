@@ -104,7 +104,7 @@ if (process.argv.includes('--sweep')) {
     createCloth(world, { origin: { x: 0, y: 0 }, columns: size, rows: size, spacing: 0.5, shear: 0 });
     world.step();
     const ctx = world.ctx;
-    const h2 = (world.timestep / world.substeps) ** 2;
+    const h2 = world.substepDt ** 2;
     const reps = size > 100 ? 10 : 200;
     const js = [];
     const wasm = [];
@@ -157,7 +157,7 @@ if (process.argv.includes('--f32')) {
       f32[base + 12 + l] = row < 0 ? Infinity : c.maxLength[row];
       f32[base + 16 + l] = row < 0 ? 0 : c.compliance[row];
     }
-    const h2 = (world.timestep / world.substeps) ** 2;
+    const h2 = world.substepDt ** 2;
     const reps = size > 100 ? 10 : 200;
     const t = { f64x2: [], f32x4: [], f32x4copies: [] };
     for (let r = 0; r < 11; r++) {

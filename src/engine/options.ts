@@ -9,13 +9,20 @@ export interface Vec2 {
   y: number;
 }
 
+/** A substep count, or 'auto': chosen per step by what the world holds (see WorldOptions.substeps). */
+export type SubstepChoice = number | 'auto';
+
 export interface WorldOptions {
   /** Acceleration of gravity. Default {x: 0, y: 9.81}: y grows downward, as on a canvas or in SVG. */
   gravity?: Vec2;
   /** The fixed step in seconds. Default 1/60. */
   timestep?: number;
-  /** Substeps per step. Default 10 (substeps buy more stiffness per cost than iterations). */
-  substeps?: number;
+  /**
+   * Substeps per step: a count, or 'auto' (default): 4 when every body that moves is a rigid body, 10 when particles,
+   * ropes, cloth, soft bodies, ragdolls or particle-built frames move (substeps buy more stiffness per cost than
+   * iterations; rigid contacts need fewer). World.substepCount reads the count the next step takes.
+   */
+  substeps?: SubstepChoice;
   /** Gauss–Seidel iterations per substep. Default 1. */
   iterations?: number;
   /** Linear damping per second (velocity shrinks by 1/(1 + h·damping) each substep). Default 0. */

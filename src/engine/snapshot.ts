@@ -48,6 +48,7 @@ export const FIELDS = {
       topologyDirty: 'rebuilt by restore()',
       collidersDirty: 'rebuilt by restore()',
       freeMovableParticles: 'rebuilt by restore()',
+      particleRows: 'rebuilt by restore()',
       measureTimings: "the caller's diagnostics switch, not simulation state",
       timings: "the last step's diagnostics",
       acceptPair: CALLBACK,

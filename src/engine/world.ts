@@ -24,8 +24,8 @@ import { Kind } from './constraint-registry.js';
 import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js';
 import { BODY_KINDS, DEFAULT_LIMITS, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
-import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, Vec2, WorldOptions } from './options.js';
-import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, type StepSettings } from './settings.js';
+import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
+import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { KernelDiagnostics, KernelOptions } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
@@ -118,8 +118,14 @@ export class World {
   set variableStep(v: boolean) { this.settings.variableStep = v; }
   get timestep(): number { return this.settings.timestep; }
   set timestep(v: number) { this.settings.timestep = CHECK.timestep(v); }
-  get substeps(): number { return this.settings.substeps; }
-  set substeps(v: number) { this.settings.substeps = CHECK.substeps(v); }
+  /** The substeps option: a count, or 'auto' (see WorldOptions.substeps; substepCount is the count it gives now). */
+  get substeps(): SubstepChoice { return this.settings.substeps; }
+  set substeps(v: SubstepChoice) { this.settings.substeps = CHECK.substeps(v); }
+  /** The substeps the next step takes: the count set, or under 'auto' 4 for a world of rigid bodies, else 10. */
+  get substepCount(): number {
+    ensureTopology(this.ctx);
+    return substepCount(this.settings, this.ctx.particleRows);
+  }
   get iterations(): number { return this.settings.iterations; }
   set iterations(v: number) { this.settings.iterations = CHECK.iterations(v); }
   get damping(): number { return this.settings.damping; }
@@ -143,9 +149,9 @@ export class World {
     this.settings.bounds = CHECK.bounds(bounds);
   }
 
-  /** The substep length h = timestep / substeps. */
+  /** The substep length h = timestep / substepCount. */
   get substepDt(): number {
-    return this.settings.timestep / this.settings.substeps;
+    return this.settings.timestep / this.substepCount;
   }
 
   /** The caps in force. */
@@ -662,7 +668,7 @@ export class World {
 
   // ---- time --------------------------------------------------------------------------------------------------
 
-  /** One step of `dt` seconds (the fixed timestep by default), in `substeps` substeps (see pipeline/step.ts). */
+  /** One step of `dt` seconds (the fixed timestep by default), in `substepCount` substeps (see pipeline/step.ts). */
   step(dt: number = this.settings.timestep): void {
     if (dt !== this.settings.timestep) positive('dt', dt);
     step(this.ctx, dt);

@@ -30,12 +30,15 @@ export async function load(options = {}) {
   const { version } = JSON.parse(readFileSync(root + 'package.json', 'utf8'));
   return {
     version,
-    settings: `${probe.substeps} substeps × ${probe.iterations} iteration (new World() defaults), sleeping off, the ${kernel} kernel; ${tethers ? "S4/S5 use the catalogue's rope/cloth with their default tethers" : 'S4/S5 with tethers: false (links and pin only)'}`,
+    settings: `substeps ${probe.substeps} (${AUTO_NOTE}) × ${probe.iterations} iteration (new World() defaults), sleeping off, the ${kernel} kernel; ${tethers ? "S4/S5 use the catalogue's rope/cloth with their default tethers" : 'S4/S5 with tethers: false (links and pin only)'}`,
     build: (scene) => build(engine, scene, tethers, kernel),
   };
 }
 
 const near = (a, b) => Math.abs(a - b) < 1e-9;
+
+/** What 'auto' substeps gives (settings.ts AUTO_SUBSTEPS): the boxes and circles are rigid bodies, the chain and cloth particles. */
+const AUTO_NOTE = 'auto: 6 for the rigid S1–S3, 10 for the particle S4/S5';
 
 /** Throws unless the catalogue scene is the neutral scene mirrored in y (so every engine runs the same layout). */
 function checkSameScene(description, scene) {

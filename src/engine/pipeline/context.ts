@@ -79,6 +79,8 @@ export class StepContext {
   collidersDirty = false;
   /** Movable particles that belong to no body (they never sleep). */
   freeMovableParticles = 0;
+  /** Movable rows that are not rigid bodies (particles of any body or none): 'auto' substeps depend on it. */
+  particleRows = 0;
 
   /** When true, each step records how long collision detection and the substeps took (ms) in `timings`. */
   measureTimings = false;

@@ -24,11 +24,12 @@ import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
+import { substepCount } from '../settings.js';
 import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { solveJoints } from '../rigid/joints.js';
 import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
-/** One step of `dt` seconds in `settings.substeps` substeps. */
+/** One step of `dt` seconds in substepCount() substeps (settings.substeps, or by what moves under 'auto'). */
 export function step(ctx: StepContext, dt: number): void {
   ensureTopology(ctx);
   if (isSettled(ctx)) {
@@ -43,7 +44,7 @@ export function step(ctx: StepContext, dt: number): void {
   detectCollisions(ctx, dt);
   ctx.kernel?.beginStep(ctx);
   const t1 = ctx.measureTimings ? performance.now() : 0;
-  const n = ctx.settings.substeps;
+  const n = substepCount(ctx.settings, ctx.particleRows);
   const h = dt / n;
   for (let s = 0; s < n; s++) substep(ctx, h);
   if (ctx.measureTimings) {

@@ -73,8 +73,16 @@ export function rebuildTopology(ctx: StepContext): void {
   sleep.setLinks(links);
   listRigidRows(ctx);
   let free = 0;
-  for (let i = 0; i < p.count; i++) if (p.alive[i] && owner[i] < 0 && p.invMass[i] > 0) free++;
+  let movable = 0;
+  for (let i = 0; i < p.count; i++) {
+    if (!p.alive[i] || p.invMass[i] === 0) continue;
+    movable++;
+    if (owner[i] < 0) free++;
+  }
   ctx.freeMovableParticles = free;
+  // Less the dynamic rigid bodies' rows (listRigidRows above lists them with the kinematic ones).
+  for (let k = 0; k < ctx.rigidCount; k++) if (p.invMass[ctx.rigidRows[k]] > 0) movable--;
+  ctx.particleRows = movable;
   let awake = 0;
   for (let b = 0; b < high; b++) if (ids.alive[b] && !sleep.asleep[b]) awake++;
   sleep.awakeCount = awake;

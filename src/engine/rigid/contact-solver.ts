@@ -643,7 +643,7 @@ function onShockPath(c: RigidContacts, r: BodyRows, i: number): boolean {
  * sweep's).
  */
 function shockSweep(c: RigidContacts, r: BodyRows): void {
-  const { x, y, angle, invMass, invInertia } = r;
+  const { x, y, angle, px, py, pangle, invMass, invInertia } = r;
   const level = c.level;
   for (let k = 0; k < c.shockCount; k++) {
     const i = c.shockOrder[k];
@@ -686,12 +686,78 @@ function shockSweep(c: RigidContacts, r: BodyRows): void {
         l0 = Math.max(0, (g0 - k01 * l1) / k00);
       }
     }
-    // A back along n, or B forward.
+    // A back along n, or B forward; the pose at the substep's start moves with it, so the correction adds no
+    // velocity (shockVelocity stops the approach instead: pushed up at depth / h, a loaded pile would jump).
     const s = moveB ? 1 : -1;
     const ln = s * (l0 + l1);
-    x[row] += im * ln * c.nx[i];
-    y[row] += im * ln * c.ny[i];
-    angle[row] += s * ii * (l0 * r0 + l1 * r1);
+    const dx = im * ln * c.nx[i];
+    const dy = im * ln * c.ny[i];
+    const da = s * ii * (l0 * r0 + l1 * r1);
+    x[row] += dx;
+    y[row] += dy;
+    angle[row] += da;
+    px[row] += dx;
+    py[row] += dy;
+    pangle[row] += da;
+  }
+}
+
+/**
+ * The shock sweep on velocities, after the velocity pass: manifold by manifold from the ground up, the upper body
+ * stops approaching the lower one (which counts as fixed) when it comes faster than BOUNCE_THRESHOLD; separating
+ * points are left alone. With the position
+ * sweep above, which moves without adding velocity, a heavy body landing on light ones is stopped within the
+ * substep instead of being lifted out of the overlap it made, and the pile under it neither jumps nor tips.
+ */
+function shockVelocity(c: RigidContacts, r: BodyRows): void {
+  const { vx, vy, omega, invMass, invInertia } = r;
+  const level = c.level;
+  for (let k = 0; k < c.shockCount; k++) {
+    const i = c.shockOrder[k];
+    const two = c.pair[i] === 1;
+    const ia = c.a[i];
+    const ib = c.b[i];
+    const moveB = ib >= 0 && level[ib] > level[ia];
+    const row = moveB ? ib : ia;
+    normalSpeed(c, r, i, 0);
+    const v0 = vel[0];
+    let v1 = 0;
+    if (two) {
+      normalSpeed(c, r, i + 1, 2);
+      v1 = vel[2];
+    }
+    // Impacts only: a resting pile's slow approach (g·h a substep) is the regular velocity pass's.
+    if (v0 >= -BOUNCE_THRESHOLD && v1 >= -BOUNCE_THRESHOLD) continue;
+    const im = invMass[row];
+    const ii = invInertia[row];
+    const r0 = moveB ? c.rnB[i] : c.rnA[i];
+    const r1 = two ? (moveB ? c.rnB[i + 1] : c.rnA[i + 1]) : 0;
+    const k00 = im + ii * r0 * r0;
+    const k11 = im + ii * r1 * r1;
+    const k01 = im + ii * r0 * r1;
+    // Impulses (per unit inverse mass) that bring the approaching points to rest: both by the 2×2 block, else the
+    // faster one, then the other as far as it still approaches.
+    let p0 = 0;
+    let p1 = 0;
+    const det = k00 * k11 - k01 * k01;
+    if (v0 < 0 && v1 < 0 && det > 1e-9 * k00 * k11) {
+      p0 = (k01 * v1 - k11 * v0) / det;
+      p1 = (k01 * v0 - k00 * v1) / det;
+    }
+    if (!(p0 > 0 && p1 > 0)) {
+      if (v0 <= v1) {
+        p0 = -v0 / k00;
+        p1 = two ? Math.max(0, (-v1 - k01 * p0) / k11) : 0;
+      } else {
+        p1 = -v1 / k11;
+        p0 = Math.max(0, (-v0 - k01 * p1) / k00);
+      }
+    }
+    const s = moveB ? 1 : -1;
+    const P = s * (p0 + p1);
+    vx[row] += im * P * c.nx[i];
+    vy[row] += im * P * c.ny[i];
+    omega[row] += s * ii * (p0 * r0 + p1 * r1);
   }
 }
 
@@ -850,6 +916,7 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     }
     if (two) i++;
   }
+  if (c.shockCount > 0) shockVelocity(c, r);
 }
 
 /** A lone point's velocity on the general path (B an edge point of a particle-built outline). */

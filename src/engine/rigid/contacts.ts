@@ -169,82 +169,132 @@ export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, fe
  * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
  * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
  * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
+ *
+ * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
+ * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
+ * expects the next one; only a point the cursor misses builds the hash table by key (once a step, and only then).
  */
 export class RigidAnchorCache {
   private readonly table = new KeyTable();
+  /** The table holds this list (false: not built since the last store). */
+  private tableBuilt = false;
+  private count = 0;
+  private keys = new Float64Array(32);
+  /** 1: the entry holds anchors (its point acted); 0: a point that stayed apart, listed only to keep the order. */
+  private held = new Uint8Array(32);
   private rA = new Float64Array(64);
   private rB = new Float64Array(64);
+  /** The overlap each point still tolerated at the end of the step (RigidContacts.allowance). */
+  private allow = new Float64Array(32);
 
   /** Remembers the anchors of every point that acted and of rigid, particle or world B (not particle edges). */
   store(c: RigidContacts, r: BodyRows): void {
-    this.table.reset(c.count);
-    if (this.rA.length < 2 * c.count) {
+    this.tableBuilt = false;
+    if (this.keys.length < c.count) {
+      this.keys = new Float64Array(2 * c.count);
+      this.held = new Uint8Array(2 * c.count);
+      this.allow = new Float64Array(2 * c.count);
       this.rA = new Float64Array(4 * c.count);
       this.rB = new Float64Array(4 * c.count);
     }
+    const { keys, held, rA, rB, allow } = this;
+    const { rc, rs } = r;
     let n = 0;
     for (let i = 0; i < c.count; i++) {
-      if (!c.touched[i] || c.b2[i] >= 0) continue;
-      const slot = this.table.insert(c.feature[i], n);
-      if (this.table.values[slot] !== n) continue;
+      if (c.b2[i] >= 0) continue;
+      keys[n] = c.feature[i];
+      if (!c.touched[i]) {
+        held[n++] = 0;
+        continue;
+      }
+      held[n] = 1;
       // B's anchor moves along the tangent by what slid this step: that much is no longer held back.
-      const tx = -c.ny[i];
-      const ty = c.nx[i];
+      const slip = c.slip[i];
+      const tx = -c.ny[i] * slip;
+      const ty = c.nx[i] * slip;
       const ib = c.b[i];
       let bx = c.rBx[i];
       let by = c.rBy[i];
-      if (ib >= 0) {
-        const cb = r.rc[ib];
-        const sb = r.rs[ib];
-        bx = r.x[ib] + cb * c.rBx[i] - sb * c.rBy[i];
-        by = r.y[ib] + sb * c.rBx[i] + cb * c.rBy[i];
+      if (ib < 0) {
+        bx += tx;
+        by += ty;
+      } else if (slip !== 0) {
+        // The slide, turned into B's frame.
+        const cb = rc[ib];
+        const sb = rs[ib];
+        bx += cb * tx + sb * ty;
+        by += -sb * tx + cb * ty;
       }
-      bx += c.slip[i] * tx;
-      by += c.slip[i] * ty;
-      if (ib >= 0) {
-        const cb = r.rc[ib];
-        const sb = r.rs[ib];
-        const dx = bx - r.x[ib];
-        const dy = by - r.y[ib];
-        bx = cb * dx + sb * dy;
-        by = -sb * dx + cb * dy;
-      }
-      this.rA[2 * n] = c.rAx[i];
-      this.rA[2 * n + 1] = c.rAy[i];
-      this.rB[2 * n] = bx;
-      this.rB[2 * n + 1] = by;
+      rA[2 * n] = c.rAx[i];
+      rA[2 * n + 1] = c.rAy[i];
+      rB[2 * n] = bx;
+      rB[2 * n + 1] = by;
+      allow[n] = c.allowance[i];
       n++;
     }
+    this.count = n;
   }
 
-  /** Gives each new point the anchors its feature held last step, when they are within `reach` of the fresh ones. */
+  /** The hash table of the stored list (first entry of a key wins). */
+  private build(): void {
+    const table = this.table;
+    table.reset(this.count);
+    for (let k = 0; k < this.count; k++) if (this.held[k] === 1) table.insert(this.keys[k], k);
+    this.tableBuilt = true;
+  }
+
+  /**
+   * Index in the stored list of `key` (its anchors when held[k] is 1), or −1; `cursor` is where the list is expected
+   * to match.
+   */
+  private lookup(key: number, cursor: number): number {
+    if (cursor < this.count && this.keys[cursor] === key) return cursor;
+    if (!this.tableBuilt) this.build();
+    const slot = this.table.find(key);
+    return slot < 0 ? -1 : this.table.values[slot];
+  }
+
+  /**
+   * Gives each new point the anchors its feature held last step, when they are within `reach` of the fresh ones, and
+   * no more overlap allowance than it had left: an old overlap keeps shrinking at maxPushSpeed from step to step
+   * (taken afresh from each step's depth, a deep overlap under a load that pushes back as fast would never clear).
+   */
   restore(c: RigidContacts, reach: number): void {
     const reach2 = reach * reach;
+    const { rA, rB, allow } = this;
+    let cursor = 0;
     for (let i = 0; i < c.count; i++) {
       if (c.b2[i] >= 0) continue;
-      const slot = this.table.find(c.feature[i]);
-      if (slot < 0) continue;
-      const k = this.table.values[slot];
-      const dax = this.rA[2 * k] - c.rAx[i];
-      const day = this.rA[2 * k + 1] - c.rAy[i];
+      const k = this.lookup(c.feature[i], cursor);
+      if (k < 0) continue;
+      cursor = k + 1;
+      if (this.held[k] === 0) continue;
+      if (allow[k] < c.allowance[i]) c.allowance[i] = allow[k];
+      const dax = rA[2 * k] - c.rAx[i];
+      const day = rA[2 * k + 1] - c.rAy[i];
       if (dax * dax + day * day > reach2) continue;
-      const dbx = this.rB[2 * k] - c.rBx[i];
-      const dby = this.rB[2 * k + 1] - c.rBy[i];
+      const dbx = rB[2 * k] - c.rBx[i];
+      const dby = rB[2 * k + 1] - c.rBy[i];
       if (dbx * dbx + dby * dby > reach2) continue;
-      c.rAx[i] = this.rA[2 * k];
-      c.rAy[i] = this.rA[2 * k + 1];
-      c.rBx[i] = this.rB[2 * k];
-      c.rBy[i] = this.rB[2 * k + 1];
+      c.rAx[i] = rA[2 * k];
+      c.rAy[i] = rA[2 * k + 1];
+      c.rBx[i] = rB[2 * k];
+      c.rBy[i] = rB[2 * k + 1];
     }
   }
 
-  snapshot(): { keys: Float64Array; values: Float64Array; rA: Float64Array; rB: Float64Array } {
-    return { ...this.table.snapshot(), rA: this.rA.slice(), rB: this.rB.slice() };
+  snapshot(): { keys: Float64Array; held: Uint8Array; rA: Float64Array; rB: Float64Array; allow: Float64Array } {
+    const n = this.count;
+    return { keys: this.keys.slice(0, n), held: this.held.slice(0, n), rA: this.rA.slice(0, 2 * n), rB: this.rB.slice(0, 2 * n), allow: this.allow.slice(0, n) };
   }
 
-  restoreSnapshot(s: { keys: Float64Array; values: Float64Array; rA: Float64Array; rB: Float64Array }): void {
-    this.table.restore(s);
-    this.rA = s.rA.slice();
-    this.rB = s.rB.slice();
+  restoreSnapshot(s: { keys: Float64Array; held: Uint8Array; rA: Float64Array; rB: Float64Array; allow: Float64Array }): void {
+    this.count = s.keys.length;
+    this.keys = s.keys.length > 0 ? s.keys.slice() : new Float64Array(32);
+    this.held = s.held.length > 0 ? s.held.slice() : new Uint8Array(32);
+    this.allow = s.allow.length > 0 ? s.allow.slice() : new Float64Array(32);
+    this.rA = s.rA.length > 0 ? s.rA.slice() : new Float64Array(64);
+    this.rB = s.rB.length > 0 ? s.rB.slice() : new Float64Array(64);
+    this.tableBuilt = false;
   }
 }
