@@ -4,7 +4,7 @@
 //
 // p5/core is not small on its own: its `rendering` and `graphics` addons (createCanvas, createGraphics) live in one of
 // p5's build chunks (dist/rendering-*.js, ~700 KB of source) together with WebGL's renderer, camera, lights,
-// materials, framebuffers, image loading and saving, and p5.Graphics registers all of those on its prototype. Four
+// materials, framebuffers, image loading and saving, and p5.Graphics registers all of those on its prototype. Five
 // changes, none touching what a 2D sketch or a draw hook calls (docs/drawing.md lists that API):
 //
 // 1. p5's dist modules (and the CommonJS packages omggif and libtess, which only GIF decoding and WebGL tessellation
@@ -19,9 +19,10 @@
 //    which is not registered) is a stand-in that throws.
 // 4. colorjs.io's gamut mapping gets the delta-E methods its default (CSS) mapping uses, not the ones only named
 //    presets use (they bring the CAM16, HCT, Jzazbz and ICtCp spaces); p5 never names a preset.
+// 5. p5.MediaElement and p5.File (the dom addon's, not registered) are stand-ins (see DOM_STAND_INS).
 //
 // Measured (esbuild-minified bundle of modules.js, gzip -9): 116.3 KB untrimmed; 1 + 2 give 73.9, 1 + 2 + 3 give 57.5
-// (none of them does much alone: p5's own chunks reference each other), 4 takes 4.0 more off: 53.5 KB.
+// (none of them does much alone: p5's own chunks reference each other), 4 takes 4.0 more off (53.5), 5 2.1 (51.4).
 //
 // Every change is checked (text edits match as often as expected, stand-ins are used): if p5's or colorjs.io's files
 // change shape (a new version), the build fails and says which change no longer applies, instead of shipping an
@@ -59,12 +60,25 @@ import deltaEOK from "./deltaEOK.js";
 export { deltaE76, deltaE2000, deltaEOK };
 export default { deltaE76, deltaE2000, deltaEOK };`;
 
+/**
+ * p5.MediaElement (createVideo, createAudio) and p5.File (a file dropped on an element) belong to the dom addon, which
+ * the builds do not register; the core names them only to test `instanceof MediaElement` and in p5.Element's drop().
+ * No MediaElement can exist without the addon, so the test is always false with an empty class.
+ */
+const DOM_STAND_INS = {
+  MediaElement: 'export class MediaElement {}\nexport default function media() {}',
+  File: `export class File {
+  static _load() { throw new Error("drop() needs p5's dom addon, which this build of p5 leaves out (docs/drawing.md)"); }
+}
+export default function file() {}`,
+};
+
 export function p5Trim() {
   return {
     name: 'p5-trim',
     setup(build) {
       const applied = new Map(EDITS.map((e) => [e, 0]));
-      const standIns = { filterRenderer2D: 0, deltaE: 0 };
+      const standIns = { filterRenderer2D: 0, deltaE: 0, MediaElement: 0, File: 0 };
       build.onStart(() => {
         applied.forEach((_, e) => applied.set(e, 0));
         for (const k in standIns) standIns[k] = 0;
@@ -74,6 +88,14 @@ export function p5Trim() {
         /[\\/]p5[\\/]dist[\\/]/.test(args.importer) ? (standIns.filterRenderer2D++, { path: 'filterRenderer2D', namespace: 'p5-trim' }) : null,
       );
       build.onLoad({ filter: /^filterRenderer2D$/, namespace: 'p5-trim' }, () => ({ contents: FILTER_STAND_IN, loader: 'js' }));
+
+      build.onResolve({ filter: /(?:^|\/)p5\.(?:MediaElement|File)\.js$/ }, (args) => {
+        if (!/[\\/]p5[\\/]dist[\\/]/.test(args.importer)) return null;
+        const name = /MediaElement/.test(args.path) ? 'MediaElement' : 'File';
+        standIns[name]++;
+        return { path: name, namespace: 'p5-trim' };
+      });
+      build.onLoad({ filter: /^(?:MediaElement|File)$/, namespace: 'p5-trim' }, (args) => ({ contents: DOM_STAND_INS[args.path], loader: 'js' }));
 
       build.onResolve({ filter: /^\.\/deltaE\/index\.js$/ }, (args) =>
         /[\\/]colorjs\.io[\\/]src[\\/]toGamut\.js$/.test(args.importer)
