@@ -65,9 +65,13 @@ new p5((s: p5) => {
     for (const i of ropeIndex) s.circle(x[i] * scale, y[i] * scale, 0.08 * scale);
     stats.textContent = `${world.particleCount} particles · ${world.constraintCount} constraints · physics ${physicsMs.toFixed(2)} ms/frame · ${s.frameRate().toFixed(0)} fps`;
   };
-  s.mousePressed = () => {
-    const mx = s.mouseX / scale;
-    const my = s.mouseY / scale;
+  // Pointer events straight from the stage: the p5 the builds ship has no events addon (no mouseX, mousePressed).
+  const toWorld = (e: PointerEvent) => {
+    const box = stage.getBoundingClientRect();
+    return { mx: (e.clientX - box.left) / scale, my: (e.clientY - box.top) / scale };
+  };
+  stage.addEventListener('pointerdown', (e) => {
+    const { mx, my } = toWorld(e);
     let best = -1;
     let bestD = 0.4;
     const { x, y, invMass } = world.particles;
@@ -78,13 +82,18 @@ new p5((s: p5) => {
     if (best >= 0) {
       const particle = world.particleHandle(best);
       drag = { particle, pin: world.addPin(particle, { x: mx, y: my, compliance: 1e-3 }) };
+      stage.setPointerCapture(e.pointerId);
     }
-  };
-  s.mouseDragged = () => {
-    if (drag) world.setPinTarget(drag.pin, s.mouseX / scale, s.mouseY / scale);
-  };
-  s.mouseReleased = () => {
+  });
+  stage.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const { mx, my } = toWorld(e);
+    world.setPinTarget(drag.pin, mx, my);
+  });
+  const release = () => {
     if (drag) world.removeConstraint(drag.pin);
     drag = null;
   };
+  stage.addEventListener('pointerup', release);
+  stage.addEventListener('pointercancel', release);
 }, stage);
