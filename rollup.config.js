@@ -211,6 +211,15 @@ export function __peWorkerUrl() {
 
 const external = [/^lit/, /^@lit/, 'comlink', 'p5'];
 
+/**
+ * The library's small modules that both the page and the worker use (frame buffers, the protocol, body models and
+ * checks) go in a chunk of their own, apart from the engine: otherwise Rollup puts them in the engine's chunk and a
+ * page that imports the elements loads the whole engine, which it needs only for the main-thread fallback
+ * (src/worker/client.ts imports it on demand). An app's bundler sees each of dist/lib's chunks as one module.
+ */
+const PAGE_SIDE = ['worker/triple-buffer', 'worker/publishers', 'worker/protocol', 'worker/resources', 'engine/builders/common', 'engine/builders/ragdoll', 'engine/options', 'engine/validate'].map((f) => resolve(root, `src/${f}.ts`));
+const pageSideChunk = (id) => (PAGE_SIDE.includes(id) ? 'shared' : undefined);
+
 export default [
   {
     input: { index: 'src/engine/index.ts' },
@@ -220,7 +229,7 @@ export default [
   {
     input: { index: 'src/index.ts' },
     external,
-    output: { dir: 'dist/lib', format: 'es', sourcemap: true, chunkFileNames: '[name]-[hash].js' },
+    output: { dir: 'dist/lib', format: 'es', sourcemap: true, chunkFileNames: '[name]-[hash].js', manualChunks: pageSideChunk },
     plugins: [...basePlugins({ external: true }), worker(), minify()],
   },
   {

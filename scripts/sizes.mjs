@@ -5,8 +5,10 @@
 // - The ESM library is measured twice: as its files (what a page without a bundler fetches with an import map:
 //   dist/lib/index.js, every chunk it imports and the worker chunk), and as an app's bundler ships it for
 //   `import 'physics-elements'` (Rollup + terser, tree-shaken, package.json's sideEffects honoured; lit, comlink and p5
-//   left out). The second is "engine + elements": the engine once (the page holds it for the main-thread fallback),
-//   the elements, the renderer and the worker client; not the worker chunk, which runs the same engine.
+//   left out). The second is "engine + elements" as the page evaluates them: the elements, the renderer, the worker
+//   client and what they use of the engine (body models, checks); the engine itself is a chunk the page imports only
+//   for the main-thread fallback (measured on its own row) and the worker chunk runs it (not counted: it is the same
+//   engine, in the worker).
 // - lit + comlink as the elements use them, and p5: the pieces the builds ship (src/render/p5/modules.js, bundled by
 //   src/render/p5/bundle.mjs, which leaves out the WebGL and image code of p5's core with scripts/build/p5-trim.mjs:
 //   the same module the builds inline) and the whole library, for comparison.
@@ -47,7 +49,10 @@ function libFiles(entry) {
   return [...seen];
 }
 
-/** Bundles `code` (an app's entry module) with Rollup + terser as an app would; `external` stays out. */
+/**
+ * Bundles `code` (an app's entry module) with Rollup + terser as an app would; `external` stays out. Returns the entry
+ * chunk (what the page loads and evaluates at once) and, apart, the chunks it only imports dynamically (`lazy`).
+ */
 async function bundled(name, code, external = []) {
   const id = '\0app';
   const bundle = await rollup({
@@ -56,10 +61,17 @@ async function bundled(name, code, external = []) {
     onwarn: () => {},
     plugins: [{ name: 'app', resolveId: (s) => (s === id ? id : null), load: (i) => (i === id ? code : null) }, nodeResolve({ browser: true }), terser()],
   });
-  const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
+  const { output } = await bundle.generate({ format: 'es' });
   await bundle.close();
-  const bytes = Buffer.from(output[0].code);
-  return { file: name, raw: bytes.length, gzip: gzip(bytes) };
+  const measure = (chunk, file) => {
+    const bytes = Buffer.from(chunk.code);
+    return { file, raw: bytes.length, gzip: gzip(bytes) };
+  };
+  const entry = output.find((c) => c.type === 'chunk' && c.isEntry);
+  const lazy = output.filter((c) => c.type === 'chunk' && !c.isEntry);
+  const chunkFiles = new Set(lazy.map((c) => c.fileName));
+  if (entry.imports.some((f) => chunkFiles.has(f))) throw new Error(`${name}: the entry imports chunks statically (${entry.imports.join(', ')}); count them`);
+  return { entry: measure(entry, name), lazy: lazy.map((c) => measure(c, `${name}, chunk loaded on demand (${c.name})`)) };
 }
 
 const rows = [];
@@ -69,13 +81,17 @@ add('single file, with p5 (the CMS embed)', [fileSize(resolve(dist, 'physics-ele
 add('single file, without p5 (lit and comlink inside; p5 from an import map)', [fileSize(resolve(dist, 'physics-elements.no-p5.js'))]);
 add('ESM library, its files as a page loads them unbundled (lit, comlink, p5 from an import map)', libFiles(resolve(dist, 'lib/index.js')).map(fileSize));
 const lib = JSON.stringify(resolve(dist, 'lib/index.js'));
-add('**engine + elements**: the ESM library in an app\'s bundle (`import \'physics-elements\'`), without lit, comlink and p5', [
-  await bundled('app bundle', `import ${lib};`, [/^lit/, /^@lit/, 'comlink', 'p5']),
-]);
+{
+  const app = await bundled('app bundle', `import ${lib};`, [/^lit/, /^@lit/, 'comlink', 'p5']);
+  add('**engine + elements, as the page evaluates them**: the ESM library in an app\'s bundle (`import \'physics-elements\'`), without lit, comlink and p5', [app.entry]);
+  // The engine itself runs in the worker (its own chunk, not counted here); the page imports it only to run the
+  // engine on its own thread when no worker can start (src/worker/client.ts, startMain).
+  add('the engine on the page, loaded only when no worker can start (main-thread fallback)', app.lazy);
+}
 add('headless engine only', [fileSize(resolve(dist, 'engine/index.js'))]);
 // What the elements import from lit and comlink (src/ imports lit, lit/decorators.js, lit/directives/if-defined.js).
 const deps = 'export * from "lit"; export * from "lit/decorators.js"; export * from "lit/directives/if-defined.js"; export * as Comlink from "comlink";';
-add('lit + comlink (for comparison)', [await bundled('lit + comlink', deps)]);
+add('lit + comlink (for comparison)', [(await bundled('lit + comlink', deps)).entry]);
 {
   const bytes = Buffer.from(await bundleP5());
   add('p5 as the builds ship it: core + shape + color + math, 2D only (docs/drawing.md)', [{ file: 'src/render/p5/modules.js, bundled and trimmed', raw: bytes.length, gzip: gzip(bytes) }]);

@@ -1,7 +1,6 @@
 // The page's side of the engine: a world in one of the page's pooled engine workers (or, with worker="none" or when no
 // Worker can be made, an EngineHost on the main thread), with a timeout on every call, and the two newest published
 // frames kept for the renderer. Both modes expose the same promise-returning EngineApi.
-import { EngineHost } from './engine-host.js';
 import { TripleBuffer } from './triple-buffer.js';
 import { TripleBufferPublisher } from './publishers.js';
 import { F, HEADER, POSE, frameLength, poseOffset, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
@@ -146,7 +145,7 @@ export class EngineClient {
         options.onError?.(`engine worker failed, running on the main thread instead: ${error instanceof Error ? error.message : String(error)}`);
       }
     }
-    return EngineClient.startMain(options);
+    return await EngineClient.startMain(options);
   }
 
   private static async startWorker(options: ClientOptions): Promise<EngineClient> {
@@ -163,7 +162,13 @@ export class EngineClient {
     return client;
   }
 
-  private static startMain(options: ClientOptions): EngineClient {
+  /**
+   * The engine on the page's own thread. Imported only here, on first use: a page whose engine runs in a worker never
+   * loads or evaluates the engine's code itself (in the library build it is a chunk of its own; the single file has
+   * the engine once anyway, for the worker's script).
+   */
+  private static async startMain(options: ClientOptions): Promise<EngineClient> {
+    const { EngineHost } = await import('./engine-host.js');
     let client: EngineClient;
     const publisher = new TripleBufferPublisher('direct', (buffer) => {
       client.triple = new TripleBuffer(buffer);
