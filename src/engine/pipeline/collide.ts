@@ -24,7 +24,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   ctx.narrowPhase.run(ctx.pairs, c, ctx.particles, ctx.motion, slop, ctx.contacts);
   ctx.rigidNarrowPhase.run(ctx.pairs, c, shapes, ctx.particles, ctx.motion, slop, ctx.rigidContacts);
   const bounds = ctx.settings.bounds;
-  if (bounds && ctx.rigidCount > 0) boundsContacts(bounds, shapes, c, ctx.particles, ctx.motion, slop, ctx.settings.boundsFriction, ctx.rigidContacts);
+  if (bounds && ctx.rigidCount > 0) boundsContacts(bounds, shapes, c, ctx.particles, ctx.motion, ctx.pairs, slop, ctx.settings.boundsFriction, ctx.rigidContacts);
   // A sleeping body about to be hit wakes before the solve, not after it (it would meet the impact as static).
   ctx.sleep.wakeTouched(ctx.contacts, ctx.rigidContacts, ctx.bodyParticlesOf, ctx.particles);
   ctx.rigidAnchors.restore(ctx.rigidContacts, slop);

@@ -60,10 +60,11 @@ export interface FuzzRun {
   run(steps: number): void;
 }
 
-/** A random scene and its action script, fully determined by the seed. */
-export function fuzzScene(seed: number): FuzzRun {
+/** A random scene and its action script, fully determined by the seed; under `kernel` when given (else the World's default). */
+export function fuzzScene(seed: number, kernel?: 'js' | 'wasm'): FuzzRun {
   const rnd = mulberry32(seed);
   const world = new World({
+    ...(kernel ? { kernel } : {}),
     gravity: { x: (rnd() * 2 - 1) * 3, y: 5 + rnd() * 15 },
     substeps: 1 + Math.floor(rnd() * 12),
     iterations: 1 + Math.floor(rnd() * 3),
