@@ -120,11 +120,15 @@ export function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, 
     let d = f64x2.sqrt(d2);
     // Past the upper limit the error is d − hi; otherwise d − lo (the same when lo = hi).
     const err = kind == STICK ? f64x2.sub(d, lo) : v128.bitselect(f64x2.sub(d, hi), f64x2.sub(d, lo), f64x2.gt(d, hi));
-    // Coincident particles have no direction: a fixed one keeps the result finite and deterministic.
+    // Coincident particles have no direction: a fixed one keeps the result finite and deterministic. Rare: a branch
+    // around the three selects (and the all-active branch below) gives the same doubles with fewer instructions per pair,
+    // which is what bounds this loop (see docs/engine.md: f32x4 square roots and divisions did not pay).
     const coincident = f64x2.lt(d, tinyLength);
-    dx = v128.bitselect(one, dx, coincident);
-    dy = v128.bitselect(zero, dy, coincident);
-    d = v128.bitselect(one, d, coincident);
+    if (v128.any_true(coincident)) {
+      dx = v128.bitselect(one, dx, coincident);
+      dy = v128.bitselect(zero, dy, coincident);
+      d = v128.bitselect(one, d, coincident);
+    }
     let s: v128;
     if (kind == COMPLIANT) {
       const lambda = fresh ? zero : v128.load(pk, 48);
@@ -132,17 +136,17 @@ export function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, 
       const denominator = v128.bitselect(f64x2.add(w, alpha), one, active);
       const dl = v128.and(f64x2.div(f64x2.sub(f64x2.neg(err), f64x2.mul(alpha, lambda)), denominator), active);
       v128.store(pk, f64x2.add(lambda, dl), 48);
-      s = f64x2.div(dl, d);
+      s = f64x2.neg(f64x2.div(dl, d));
     } else {
       // Rigid: s = −err / (w·d), one division where the JS loop takes two (dl = −err / w, then dl / d), equal to it
-      // within an ulp or two. The square root and the divisions are what a pair waits for: measured 0.93–0.95× the time
-      // of a sweep with two (min of 60 rounds: 30×30 cloth 6.85–7.06 µs against 7.34–7.46; 200×200 323 against 345).
-      s = v128.and(f64x2.div(f64x2.neg(err), f64x2.mul(v128.bitselect(w, one, active), d)), active);
+      // within an ulp or two. Here s holds its negation, err / (w·d), and the corrections below change sign instead.
+      if (i64x2.all_true(active)) s = f64x2.div(err, f64x2.mul(w, d));
+      else s = v128.and(f64x2.div(err, f64x2.mul(v128.bitselect(w, one, active), d)), active);
     }
-    const nxa = f64x2.sub(xa, f64x2.mul(f64x2.mul(wa, s), dx));
-    const nya = f64x2.sub(ya, f64x2.mul(f64x2.mul(wa, s), dy));
-    const nxb = f64x2.add(xb, f64x2.mul(f64x2.mul(wb, s), dx));
-    const nyb = f64x2.add(yb, f64x2.mul(f64x2.mul(wb, s), dy));
+    const nxa = f64x2.add(xa, f64x2.mul(f64x2.mul(wa, s), dx));
+    const nya = f64x2.add(ya, f64x2.mul(f64x2.mul(wa, s), dy));
+    const nxb = f64x2.sub(xb, f64x2.mul(f64x2.mul(wb, s), dx));
+    const nyb = f64x2.sub(yb, f64x2.mul(f64x2.mul(wb, s), dy));
     if (interleaved) {
       v128.store(x + oa, f64x2.shuffle(nxa, nxb, 0, 2));
       v128.store(x + oa, f64x2.shuffle(nxa, nxb, 1, 3), 16);
@@ -190,9 +194,11 @@ function solvePackets(x: usize, y: usize, invMass: usize, packets: usize, count:
     let d = f64x2.sqrt(d2);
     const err = v128.bitselect(f64x2.sub(d, hi), f64x2.sub(d, lo), f64x2.gt(d, hi));
     const coincident = f64x2.lt(d, tinyLength);
-    dx = v128.bitselect(one, dx, coincident);
-    dy = v128.bitselect(zero, dy, coincident);
-    d = v128.bitselect(one, d, coincident);
+    if (v128.any_true(coincident)) {
+      dx = v128.bitselect(one, dx, coincident);
+      dy = v128.bitselect(zero, dy, coincident);
+      d = v128.bitselect(one, d, coincident);
+    }
     const alpha = f64x2.div(compliance, vh2);
     const denominator = v128.bitselect(f64x2.add(w, alpha), one, active);
     const dl = v128.and(f64x2.div(f64x2.sub(f64x2.neg(err), f64x2.mul(alpha, lambda)), denominator), active);
