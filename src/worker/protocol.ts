@@ -1,7 +1,7 @@
 // What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
 // and in the worker), and the layout of one published state frame (a Float64Array).
 import type { BodyDescription, BodyKind, BodyType, Bounds, KernelChoice, Vec2, WorldOptions } from '../engine/index.js';
-import type { JointType } from '../engine/options.js';
+import type { JointType, SubstepChoice } from '../engine/options.js';
 
 /** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
 export interface KeyedBody {
@@ -64,7 +64,8 @@ export interface KeyedLink {
 export interface HostParams {
   gravity: { x: number; y: number };
   timestep: number;
-  substeps: number;
+  /** Substeps per step: a count, or 'auto' (the engine's choice by what moves: see WorldOptions.substeps). */
+  substeps: SubstepChoice;
   iterations: number;
   broadphase: 'grid' | 'brute';
   narrowphase: 'sat' | 'gjk';
@@ -147,6 +148,8 @@ export interface Diagnostics {
   crossOriginIsolated: boolean;
   running: boolean;
   stepCount: number;
+  /** The substeps the next step takes: the count asked for, or the engine's choice under 'auto' (World.substepCount). */
+  substepCount: number;
   particleCount: number;
   bodyCount: number;
   linkCount: number;

@@ -162,6 +162,8 @@ function verdict(attr: Attr, value: string): Verdict {
   const d = attr.description;
   if (attr.kind === 'number') {
     if (value.trim() === '') return 'invalid';
+    // A number that also takes a word its description quotes (substeps: "auto").
+    if (/^[a-z-]+$/.test(value) && d.includes(`"${value}"`)) return 'valid';
     const n = Number(value);
     if (!Number.isFinite(n)) return 'invalid';
     const documented = attr.min !== undefined || attr.max !== undefined || attr.integer;
@@ -560,6 +562,8 @@ describe('markup fuzz', function () {
     expect(find('ragdoll-sim', 'count')).to.deep.include({ kind: 'number', min: 1, max: 12, integer: true });
     expect(find('physics-rope', 'pin').options).to.deep.equal(['start', 'end', 'both', 'none']);
     expect(find('physics-scene', 'timestep').kind).to.equal('number');
+    expect(find('physics-scene', 'substeps')).to.deep.include({ kind: 'number', min: 1, max: 1000, integer: true });
+    expect(['auto', '3', '0', '2.5', 'autos', '-1'].map((v) => verdict(find('physics-scene', 'substeps'), v))).to.deep.equal(['valid', 'valid', 'invalid', 'invalid', 'invalid', 'invalid']);
     expect(find('physics-box', 'static').kind).to.equal('boolean');
     expect(verdict(find('physics-box', 'width'), '0')).to.equal('invalid');
     expect(verdict(find('physics-box', 'x'), '-1')).to.equal('valid');

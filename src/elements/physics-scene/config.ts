@@ -4,7 +4,7 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Bounds, KernelChoice } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
-import { Checker, type Problem } from '../checks.js';
+import { Checker, numberAttribute, type Problem } from '../checks.js';
 
 /** The scene properties the configuration is read from (as set: unchecked). */
 export interface SceneAttributes {
@@ -12,7 +12,8 @@ export interface SceneAttributes {
   height: number;
   gravity: string;
   iterations: number;
-  substeps: number;
+  /** A count, 'auto', or null (no attribute: 'auto'); NaN for a value that is neither. */
+  substeps: number | 'auto' | null;
   timestep: number;
   broadphase: string;
   narrowphase: string;
@@ -25,13 +26,23 @@ export interface SceneAttributes {
   debug: boolean;
 }
 
+/**
+ * Lit converter for the substeps attribute: "auto" stays "auto", anything else reads as a number (blank: NaN, which
+ * the checks report), no attribute as null (auto). @internal
+ */
+export const substepsAttribute = {
+  fromAttribute: (value: string | null): number | 'auto' | null => (value !== null && value.trim() === 'auto' ? 'auto' : numberAttribute.fromAttribute(value)),
+  toAttribute: (value: unknown): unknown => value,
+};
+
 /** The checked configuration. */
 export interface SceneConfig {
   width: number;
   height: number;
   gravity: { x: number; y: number };
   iterations: number;
-  substeps: number;
+  /** A count, or 'auto': the engine's choice by what moves (6 for rigid bodies alone, 10 when particles move). */
+  substeps: number | 'auto';
   timestep: number;
   broadphase: 'grid' | 'brute';
   narrowphase: 'sat' | 'gjk';
@@ -55,7 +66,7 @@ export function readConfig(scene: Element & SceneAttributes): { config: SceneCon
     height: check.number('height', scene.height, { positive: true, fallback: 9 })!,
     gravity: gravityOf(check, scene.gravity),
     iterations: check.number('iterations', scene.iterations, { integer: true, min: 1, max: 1000, fallback: 1 })!,
-    substeps: check.number('substeps', scene.substeps, { integer: true, min: 1, max: 1000, fallback: 10 })!,
+    substeps: substepsOf(check, scene.substeps),
     timestep: check.number('timestep', scene.timestep, { positive: true, max: 1, fallback: 1 / 60 })!,
     broadphase: check.oneOf('broadphase', scene.broadphase, ['grid', 'brute'] as const, 'grid'),
     narrowphase: check.oneOf('narrowphase', scene.narrowphase, ['sat', 'gjk'] as const, 'sat'),
@@ -67,6 +78,17 @@ export function readConfig(scene: Element & SceneAttributes): { config: SceneCon
     background: check.color('background', scene.background, '#f7f5f0') ?? 'transparent',
   };
   return { config, problems: check.problems };
+}
+
+/** Substeps: "auto" (default, also when absent) or a whole number from 1 to 1000 (the engine's limits). */
+function substepsOf(check: Checker, value: unknown): number | 'auto' {
+  if (value === 'auto') return 'auto';
+  // No attribute and no property value: auto. An attribute written blank is NaN here (substepsAttribute): reported.
+  if (value === undefined || value === null) return 'auto';
+  const n = typeof value === 'number' ? value : String(value).trim() === '' ? NaN : Number(value);
+  if (Number.isInteger(n) && n >= 1 && n <= 1000) return n;
+  check.fail('substeps', value, 'must be "auto" or a whole number from 1 to 1000');
+  return 'auto';
 }
 
 /** Gravity "x y": two numbers (default 0 9.81). */

@@ -8,7 +8,7 @@ import { maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import { CollisionEventsController } from './collisions.js';
-import { changedParams, ConfigController } from './config.js';
+import { changedParams, ConfigController, substepsAttribute } from './config.js';
 import { firePhysicsEvent } from './events.js';
 import { KeyboardController, type PickableBody } from './keyboard.js';
 import { MarkupSync } from './markup.js';
@@ -92,8 +92,12 @@ export class PhysicsSceneElement extends LitElement {
   @property() gravity = '0 9.81';
   /** Gauss–Seidel iterations per substep. Default 1. */
   @property({ type: Number }) iterations = 1;
-  /** Substeps per step. Default 10. */
-  @property({ type: Number }) substeps = 10;
+  /**
+   * Substeps per step: "auto" (default) lets the engine choose by what moves, 6 while every moving body is a rigid
+   * body and 10 when particles, ropes, cloth, soft bodies or ragdolls move; a whole number (1..1000) fixes it.
+   * `diagnostics().substepCount` reads the count the engine takes.
+   */
+  @property({ converter: substepsAttribute }) substeps: number | 'auto' = 'auto';
   /** Fixed step in seconds. Default 1/60. */
   @property({ type: Number }) timestep = 1 / 60;
   /** Starts (and stays) paused. */
@@ -347,7 +351,7 @@ export class PhysicsSceneElement extends LitElement {
     this.recovery.keepSnapshot();
   }
 
-  /** Where and how the engine runs, and what it holds. */
+  /** Where and how the engine runs, and what it holds (`substepCount`: the substeps a step takes now). */
   async diagnostics(): Promise<Diagnostics & { mode: 'worker' | 'main' }> {
     const engine = await this.session.running();
     return { ...(await engine.api.diagnostics()), mode: engine.mode };

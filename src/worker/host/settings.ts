@@ -7,7 +7,7 @@ import type { HostError, HostParams } from '../protocol.js';
 const DEFAULT_PARAMS: HostParams = {
   gravity: { x: 0, y: 9.81 },
   timestep: 1 / 60,
-  substeps: 10,
+  substeps: 'auto',
   iterations: 1,
   broadphase: 'grid',
   narrowphase: 'sat',

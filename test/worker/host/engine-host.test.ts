@@ -2,6 +2,7 @@
 // body type, live edits, steps, grabs, snapshots with a frame overlay, diagnostics, frame encoding and bad input.
 import { expect } from 'chai';
 import { BODY_TYPES, RAGDOLL_JOINTS, World, type BodyDescription, type WorldSnapshot } from '../../../src/engine/index.js';
+import { AUTO_SUBSTEPS } from '../../../src/engine/settings.js';
 import type { FramePatch, KeyedLink } from '../../../src/worker/protocol.js';
 import { EVERY_TYPE, decode, makeHost } from './harness.js';
 
@@ -219,6 +220,46 @@ describe('EngineHost (no worker)', () => {
     expect(badJoint!.message).to.match(/lowerAngle/);
   });
 
+  it("substeps: 'auto' unless a count is given; the engine's count by what moves, and a count wins", () => {
+    const rigid = () => clone(EVERY_TYPE.slice(0, 4));
+    const cloth = clone(EVERY_TYPE[5]);
+    const h = makeHost();
+    h.host.load({ world: {}, bodies: rigid(), links: [] });
+    expect(h.host.snapshot().params.substeps).to.equal('auto');
+    expect(h.host.diagnostics().substepCount).to.equal(AUTO_SUBSTEPS.rigid);
+    // The steps taken are the ones said: the same state as a host told the count, not as one told 10.
+    const told = (substeps: number) => {
+      const o = makeHost();
+      o.host.load({ world: {}, params: { substeps }, bodies: rigid(), links: [] });
+      expect(o.host.diagnostics().substepCount).to.equal(substeps);
+      o.host.step(30);
+      return o.host.stateHash();
+    };
+    h.host.step(30);
+    expect(h.host.stateHash()).to.equal(told(AUTO_SUBSTEPS.rigid));
+    expect(h.host.stateHash()).to.not.equal(told(AUTO_SUBSTEPS.particles));
+    // A cloth moves: particles' count. Taken out: the rigid count again.
+    expect(h.host.addBody(cloth)).to.equal(null);
+    expect(h.host.diagnostics().substepCount).to.equal(AUTO_SUBSTEPS.particles);
+    expect(h.host.setParams({ substeps: 3 })).to.equal(null);
+    expect([h.host.snapshot().params.substeps, h.host.diagnostics().substepCount]).to.deep.equal([3, 3]);
+    // A bad count is refused and the last good value stays.
+    for (const bad of [0, 2.5, 1001, 'x']) {
+      const error = h.host.setParams({ substeps: bad as number });
+      expect([error?.key, error?.field]).to.deep.equal([-1, 'substeps']);
+      expect(error!.message).to.match(/substeps/);
+      expect(h.host.snapshot().params.substeps).to.equal(3);
+    }
+    expect(h.host.setParams({ substeps: 'auto' })).to.equal(null);
+    expect(h.host.diagnostics().substepCount).to.equal(AUTO_SUBSTEPS.particles);
+    h.host.removeBody(cloth.key);
+    expect(h.host.diagnostics().substepCount).to.equal(AUTO_SUBSTEPS.rigid);
+    // A rebuild keeps the choice.
+    h.host.setParams({ substeps: 4 });
+    h.host.reset();
+    expect(h.host.diagnostics().substepCount).to.equal(4);
+  });
+
   it('refuses bad descriptions with the key, the field and a message; the rest of the scene loads', () => {
     const h = makeHost();
     const errors = h.host.load({
@@ -244,7 +285,7 @@ describe('EngineHost (no worker)', () => {
     expect(h.topology.bodies.map((b) => b.key)).to.deep.equal([3]);
     // Live: the same answers, and a bad edit takes the body out until it is fixed. NaN never gets in.
     expect(h.host.setParams({ substeps: 0, iterations: 2 })).to.include({ key: -1, field: 'substeps' });
-    expect(h.host.snapshot().params).to.include({ substeps: 10, iterations: 2 });
+    expect(h.host.snapshot().params).to.include({ substeps: 'auto', iterations: 2 });
     expect(h.host.updateBody({ key: 3, desc: { type: 'box', x: Number.NaN, y: 2, width: 1, height: 1 } })).to.include({ key: 3, field: 'x' });
     expect(h.topology.bodies.length).to.equal(0);
     expect(h.host.updateBody({ key: 3, desc: { type: 'box', x: 2, y: 2, width: 1, height: 1 } })).to.equal(null);
