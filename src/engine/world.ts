@@ -325,9 +325,19 @@ export class World {
    */
   private writeVelocity(i: number, vx: number, vy: number): void {
     const p = this.particles;
-    const half = this.settings.integrator === 'verlet' && p.invMass[i] !== 0 ? 0.5 * this.substepDt : 0;
+    const half = this.settings.integrator === 'verlet' && p.invMass[i] !== 0 ? (0.5 * this.settings.timestep) / this.substepsWith(i) : 0;
     p.vx[i] = vx - this.settings.gravity.x * half;
     p.vy[i] = vy - this.settings.gravity.y * half;
+  }
+
+  /**
+   * The substep count of a world that holds movable row i. A moving particle that is not a rigid body makes 'auto'
+   * take the particle count, known without rebuilding the topology: builders write a velocity for every particle they
+   * add, and a rebuild per particle made building a cloth quadratic in its size.
+   */
+  private substepsWith(i: number): number {
+    if (this.settings.substeps !== 'auto' || this.particles.flags[i] & ParticleFlag.Rigid) return this.substepCount;
+    return substepCount(this.settings, 1);
   }
 
   // ---- constraints -------------------------------------------------------------------------------------------

@@ -45,6 +45,28 @@ describe('rigid bodies: the substep choice', () => {
     expect(world.substepCount).to.equal(AUTO_SUBSTEPS.rigid);
   });
 
+  it("building under 'auto' does not rebuild the topology for every particle, and a thrown particle keeps its exact path", () => {
+    // Every particle a builder adds gets a velocity, which depends on the substep length; reading the count through
+    // the topology made building a 600 × 400 cloth take minutes (a rebuild per particle).
+    const world = new World({ sleeping: false, gravity: { x: 0, y: 10 } });
+    const sleep = (world as unknown as { ctx: { sleep: { rebuild: (...a: unknown[]) => void } } }).ctx.sleep;
+    const rebuild = sleep.rebuild.bind(sleep);
+    let rebuilds = 0;
+    sleep.rebuild = (...a: unknown[]) => {
+      rebuilds++;
+      rebuild(...a);
+    };
+    createCloth(world, { origin: { x: 0, y: 0 }, columns: 30, rows: 30, spacing: 0.1, pins: [0, 29] });
+    expect(rebuilds).to.be.at.most(1);
+    // x0 + v0·t + ½·g·t² exactly, at the particle count 'auto' takes once a particle moves.
+    const thrown = world.addParticle({ x: 10, y: 0, vx: 2, vy: -3 });
+    for (let k = 0; k < 30; k++) world.step();
+    const t = 30 / 60;
+    expect(world.substepCount).to.equal(AUTO_SUBSTEPS.particles);
+    expect(world.getPosition(thrown).x).to.be.closeTo(10 + 2 * t, 1e-9);
+    expect(world.getPosition(thrown).y).to.be.closeTo(-3 * t + 5 * t * t, 1e-9);
+  });
+
   it('an explicit count wins, in the constructor or set later; snapshots keep the choice; bad values throw', () => {
     const world = new World({ substeps: 3 });
     world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: 0 });
