@@ -10,8 +10,8 @@
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
 //
 // With the WebAssembly kernel (World option kernel, ctx.kernel), integration (with the accelerations, unless springs
-// add to them), velocities and the distance sweep run in it, over the same columns (kernel/wasm-kernel.ts); every other
-// phase is the same JS function either way.
+// add to them), velocities and the distance sweep run in it, over the same columns (kernel/wasm-kernel.ts), while the
+// world has links to sweep (kernelAtWork); every other phase is the same JS function either way.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
@@ -42,7 +42,7 @@ export function step(ctx: StepContext, dt: number): void {
   const t0 = ctx.measureTimings ? performance.now() : 0;
   recordStartPositions(ctx);
   detectCollisions(ctx, dt);
-  ctx.kernel?.beginStep(ctx);
+  kernelAtWork(ctx)?.beginStep(ctx);
   const t1 = ctx.measureTimings ? performance.now() : 0;
   const n = substepCount(ctx.settings, ctx.particleRows);
   const h = dt / n;
@@ -64,7 +64,8 @@ export function step(ctx: StepContext, dt: number): void {
 
 /** One substep of length h. */
 export function substep(ctx: StepContext, h: number): void {
-  const { settings, particles, kernel } = ctx;
+  const { settings, particles } = ctx;
+  const kernel = kernelAtWork(ctx);
   const damp = 1 / (1 + h * settings.damping);
   // The kernel's Verlet step computes the accelerations itself (gravity and forces) unless springs add to them.
   const fused = kernel !== null && settings.integrator === 'verlet' && ctx.constraints.springs.count === 0;
@@ -88,6 +89,15 @@ export function substep(ctx: StepContext, h: number): void {
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
   if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
+}
+
+/**
+ * The WebAssembly kernel when it has links to sweep. Without any (a world of rigid bodies, free particles) the JS
+ * loops integrate: the same doubles (position Verlet is the same arithmetic either way), and the rigid solver's loops
+ * ran slower between the kernel's calls (S2, 1000 boxes: 2.6 against 2.2 ms per step).
+ */
+function kernelAtWork(ctx: StepContext) {
+  return ctx.kernel !== null && ctx.constraints.distances.count > 0 ? ctx.kernel : null;
 }
 
 /**
@@ -157,7 +167,8 @@ function resetMultipliers(ctx: StepContext): void {
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
   if (joints.count > 0) joints.beginSubstep();
   // The kernel keeps the distance multipliers in its own lanes (and starts them at zero itself).
-  if (ctx.kernel) ctx.kernel.resetLambdas();
+  const kernel = kernelAtWork(ctx);
+  if (kernel) kernel.resetLambdas();
   else distances.lambda.fill(0, 0, distances.count);
   angles.lambda.fill(0, 0, angles.count);
   areas.lambda.fill(0, 0, areas.count);
@@ -172,7 +183,8 @@ function relax(ctx: StepContext, h: number): void {
   const p = ctx.particles;
   const h2 = h * h;
   const { distances, angles, areas, pins, grabs, joints } = ctx.constraints;
-  if (ctx.kernel) ctx.kernel.solveDistances(h2);
+  const kernel = kernelAtWork(ctx);
+  if (kernel) kernel.solveDistances(h2);
   else if (distances.count > 0) solveDistances(distances, p, h2);
   if (angles.count > 0) solveAngles(angles, p, h2);
   if (areas.count > 0) solveAreas(areas, p, h2);
