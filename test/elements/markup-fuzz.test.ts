@@ -349,21 +349,25 @@ async function checkAlive(scene: PhysicsSceneElement, where: string, c?: Case, l
   // One step first: the newest frame then shows every change sent so far (a frame from before a rebuild would do).
   await scene.step(1);
   const before = probe && (await livePose(scene, probe));
-  probe?.setVelocity(1.5, -4);
-  const stepped = await scene.step(3);
-  expect(stepped, `${where}: the step counter advances`).to.be.greaterThan(count);
-  // step() waits up to 2 s for its frame; on a loaded machine it may need longer.
-  const until = performance.now() + 15000;
-  while ((frameOf(scene)?.[F.stepCount] ?? -1) < stepped && performance.now() < until) await new Promise((r) => setTimeout(r, 10));
-  expect(frameOf(scene)?.[F.stepCount], `${where}: the frame of step ${stepped} reaches the page`).to.be.at.least(stepped);
-  expect(nonFinite(scene), `${where}: the published frame is finite`).to.equal(null);
-  if (probe) {
+  let moved = 0;
+  // A kick sent while the probe's rebuild (its y was just set) is still on its way can land on the body being
+  // replaced (seen once under two CPU hogs): kick again, at most three times; a poisoned scene never moves it.
+  for (let kick = 0; kick < 3 && (kick === 0 || moved <= 1e-4); kick++) {
+    probe?.setVelocity(1.5, -4);
+    const stepped = await scene.step(3);
+    expect(stepped, `${where}: the step counter advances`).to.be.greaterThan(count);
+    // step() waits up to 2 s for its frame; on a loaded machine it may need longer.
+    const until = performance.now() + 15000;
+    while ((frameOf(scene)?.[F.stepCount] ?? -1) < stepped && performance.now() < until) await new Promise((r) => setTimeout(r, 10));
+    expect(frameOf(scene)?.[F.stepCount], `${where}: the frame of step ${stepped} reaches the page`).to.be.at.least(stepped);
+    expect(nonFinite(scene), `${where}: the published frame is finite`).to.equal(null);
+    if (!probe) break;
     expect(before, `${where}: the probe body is simulated`).to.not.equal(null);
     const after = await livePose(scene, probe);
     expect(after, `${where}: the probe body is still simulated`).to.not.equal(null);
-    const moved = Math.hypot(after![0] - before![0], after![1] - before![1]);
-    expect(moved, `${where}: the probe body keeps moving`).to.be.greaterThan(1e-4);
+    moved = Math.hypot(after![0] - before![0], after![1] - before![1]);
   }
+  if (probe) expect(moved, `${where}: the probe body keeps moving`).to.be.greaterThan(1e-4);
 }
 
 /** Mounts a scene of `tag` built with DOM calls (so hostile attributes can be set before it connects). */
