@@ -121,7 +121,7 @@ export class World {
   /** The substeps option: a count, or 'auto' (see WorldOptions.substeps; substepCount is the count it gives now). */
   get substeps(): SubstepChoice { return this.settings.substeps; }
   set substeps(v: SubstepChoice) { this.settings.substeps = CHECK.substeps(v); }
-  /** The substeps the next step takes: the count set, or under 'auto' 4 for a world of rigid bodies, else 10. */
+  /** The substeps the next step takes: the count set, or under 'auto' AUTO_SUBSTEPS.rigid (6) for a world of rigid bodies, else AUTO_SUBSTEPS.particles (10). */
   get substepCount(): number {
     ensureTopology(this.ctx);
     return substepCount(this.settings, this.ctx.particleRows);
