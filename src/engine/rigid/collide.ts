@@ -50,14 +50,19 @@ const REFERENCE_TOLERANCE = 5e-4;
 /** Result scratch of maxSeparation (a double returned from a call that is not inlined is boxed). */
 const found = new Float64Array(2);
 
-/** The largest over P's edges of the smallest signed distance of Q's vertices to it, into found[0]; the edge into found[1]. */
-function maxSeparation(P: PolygonRef, Q: PolygonRef): void {
+/**
+ * The largest over P's edges of the smallest signed distance of Q's vertices to it, into found[0]; the edge into
+ * found[1]. Stops early once an edge separates by more than `margin` (the pair is apart: the caller only reads that
+ * found[0] > margin), and leaves an edge's vertex loop once it cannot beat the best edge so far (the result is the
+ * same: only an edge whose smallest distance is larger replaces the best).
+ */
+function maxSeparation(P: PolygonRef, Q: PolygonRef, margin: number): void {
   let best = -Infinity;
   let bestEdge = 0;
   const { x: px, y: py, nx: pnx, ny: pny } = P;
   const { x: qx, y: qy } = Q;
   const qs = Q.start;
-  const qn = Q.count;
+  const qe = qs + Q.count;
   for (let i = 0; i < P.count; i++) {
     const k = P.start + i;
     const nx = pnx[k];
@@ -65,30 +70,31 @@ function maxSeparation(P: PolygonRef, Q: PolygonRef): void {
     const vx = px[k];
     const vy = py[k];
     let min = Infinity;
-    for (let j = qs; j < qs + qn; j++) {
+    for (let j = qs; j < qe; j++) {
       const d = (qx[j] - vx) * nx + (qy[j] - vy) * ny;
-      if (d < min) min = d;
+      if (d < min) {
+        min = d;
+        if (min <= best) break;
+      }
     }
     if (min > best) {
       best = min;
       bestEdge = i;
+      if (best > margin) break;
     }
   }
   found[0] = best;
   found[1] = bestEdge;
 }
 
-/**
- * Polygon A against polygon B. Returns false when they are more than `margin` apart (or no point survives clipping).
- */
 export function collidePolygons(A: PolygonRef, B: PolygonRef, out: ContactManifold): boolean {
   out.count = 0;
   const margin = out.query[0];
-  maxSeparation(A, B);
+  maxSeparation(A, B, margin);
   const sepA = found[0];
   if (sepA > margin) return false;
   const edgeA = found[1];
-  maxSeparation(B, A);
+  maxSeparation(B, A, margin);
   const sepB = found[0];
   if (sepB > margin) return false;
   const edgeB = found[1];

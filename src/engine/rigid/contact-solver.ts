@@ -33,10 +33,21 @@ const vel = new Float64Array(4);
  * computes its levers in the position sweep itself, where it needs them: a point that stays apart costs no more
  * than its overlap test, and the sweep writes what the velocity pass reads only for the points that act.
  */
-export function prepareRigidContacts(c: RigidContacts, r: BodyRows): void {
+export function prepareRigidContacts(c: RigidContacts, r: BodyRows, maxPush = -1): void {
   if (!c.shockReady) orderForShock(c, r);
+  const n = c.count;
+  if (maxPush >= 0) {
+    // The substep's start (RigidContacts.beginSubstep) in the same call: no correction yet, old overlaps may shrink.
+    const { lambdaN, allowance } = c;
+    for (let i = 0; i < n; i++) {
+      lambdaN[i] = 0;
+      const left = allowance[i] - maxPush;
+      allowance[i] = left > 0 ? left : 0;
+    }
+  }
+  if (c.edgePoints === 0) return;
   const { b2, pair } = c;
-  for (let i = 0, n = c.count; i < n; i++) {
+  for (let i = 0; i < n; i++) {
     if (pair[i] === 1) {
       if (b2[i] >= 0 || b2[i + 1] >= 0) {
         preparePoint(c, r, i);
@@ -227,7 +238,7 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
 export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
   const { x, y, angle, qangle, rc, rs, invMass, invInertia } = r;
   const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, rAx, rAy, rBx, rBy, radA, radB, lAx, lAy, lBx, lBy } = c;
-  const { rnA, rnB, wn, kn01, allowance, gap, lambdaN, impulseN, impulseT, lambdaT, slip, friction, touched } = c;
+  const { rnA, rnB, wn, kn01, allowance, gap, lambdaN, impulseN, impulseT, slip, friction, touched } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     // Edge points of particle-built outlines take the general path.
@@ -421,7 +432,6 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       else if (total < -limit) total = -limit;
       const dt = total - before;
       impulseT[i] = total;
-      lambdaT[i] += dt;
       slip[i] += (want - dt) * w;
       if (two) slip[j] = slip[i];
       // Along t = (−ny, nx): A back, B forward.
@@ -513,7 +523,6 @@ function hold(c: RigidContacts, r: BodyRows, i: number, points: number): void {
   c.impulseT[i] = total;
   c.slip[i] += (want - dt) * wt;
   if (points === 2) c.slip[i + 1] = c.slip[i];
-  c.lambdaT[i] += dt;
   pt[1] = dt;
   push(c, r, i, 0, 1);
 }
@@ -571,6 +580,9 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
   const { a: A, b: B, b2: B2, pair } = c;
   const { invMass, invInertia } = r;
   const n = c.count;
+  let edges = 0;
+  for (let i = 0; i < n; i++) if (B2[i] >= 0) edges++;
+  c.edgePoints = edges;
   let needed = false;
   for (let i = 0; i < n && !needed; i++) {
     const ib = B[i];

@@ -23,7 +23,7 @@ import type { BodyRows } from './rows.js';
  */
 export class RigidContacts extends Table {
   readonly columns = [
-    'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN', 'lambdaT',
+    'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN',
     'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
     'lAx', 'lAy', 'mAx', 'mAy', 'lBx', 'lBy', 'mBx', 'mBy', 'rnA', 'rnB', 'rtA', 'rtB', 'wn', 'wt', 'kn01', 'kt01',
   ] as const;
@@ -42,9 +42,8 @@ export class RigidContacts extends Table {
   radB = new Float64Array(16);
   friction = new Float64Array(16);
   restitution = new Float64Array(16);
-  /** Normal and tangential corrections of the current substep (XPBD multipliers, in position units × mass). */
+  /** Normal correction of the current substep (XPBD multiplier, in position units × mass): > 0 when the point acted. */
   lambdaN = new Float64Array(16);
-  lambdaT = new Float64Array(16);
   /** Tangential distance the point has slid since the step began (friction holds the rest). */
   slip = new Float64Array(16);
   /** Overlap tolerated this substep: an old deep overlap is pushed out at a bounded speed, not in one substep. */
@@ -102,6 +101,11 @@ export class RigidContacts extends Table {
    */
   shockReady = false;
   shockCount = 0;
+  /**
+   * Points whose B side is an edge of a particle-built outline (b2 ≥ 0), counted with the shock set-up once a step:
+   * only they need the per-substep prepare pass.
+   */
+  edgePoints = 0;
   shockOrder = new Int32Array(16);
   level = new Int32Array(16);
   /** Manifolds per level (a counting sort's buckets). */
@@ -129,7 +133,6 @@ export class RigidContacts extends Table {
     this.depth[i] = f[11];
     this.allowance[i] = f[11] > 0 ? f[11] : 0;
     this.lambdaN[i] = 0;
-    this.lambdaT[i] = 0;
     this.impulseN[i] = 0;
     this.impulseT[i] = 0;
     this.slip[i] = 0;
@@ -142,12 +145,14 @@ export class RigidContacts extends Table {
     this.feature[i] = f[12];
   }
 
-  /** Start of a substep: no correction yet; old overlaps may shrink by up to `maxPush` more. */
+  /**
+   * Start of a substep: no correction yet; old overlaps may shrink by up to `maxPush` more. (prepareRigidContacts does
+   * the same in its own pass when given maxPush; this stays for callers that prepare apart.)
+   */
   beginSubstep(maxPush: number): void {
-    const { lambdaN, lambdaT, allowance } = this;
+    const { lambdaN, allowance } = this;
     for (let i = 0, n = this.count; i < n; i++) {
       lambdaN[i] = 0;
-      lambdaT[i] = 0;
       const left = allowance[i] - maxPush;
       allowance[i] = left > 0 ? left : 0;
     }
