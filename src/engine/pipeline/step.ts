@@ -78,11 +78,11 @@ export function substep(ctx: StepContext, h: number): void {
   if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, sub);
   if (ctx.rigidCount > 0) syncRotation(particles, ctx.rigidRows, ctx.rigidCount, false);
-  if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles);
+  // The rigid contacts' substep start (no correction yet, allowances shrink) is part of their prepare pass.
+  if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles, settings.maxPushSpeed * h);
   placeRigidPins(ctx.constraints.pins, particles);
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
-  ctx.rigidContacts.beginSubstep(settings.maxPushSpeed * h);
   for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
   if (kernel && settings.integrator !== 'explicit-euler') kernel.updateVelocities(particles, h);
   else updateVelocities(particles, h, settings.integrator);
