@@ -214,19 +214,30 @@ function pushApart(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   push(c, r, i, o, 0);
 }
 
-/** The first time point i acts in a step: its approach speed (and its partner's) for restitution. */
-function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
+/**
+ * Point i acts: the first time in a step it is marked touched; a bouncy point (restitution > 0) also keeps its
+ * approach speed for restitution, the fastest seen at the start of any substep in which it acted, until it bounces
+ * (then +∞). Taking only the first substep's would lose impacts that arrive through a chain of touching bodies within
+ * the step: in a Newton's cradle the second ball is pushed into the third in the substep the first ball hits it,
+ * while its velocity is still 0, and the third ball's point then never bounced (the far ball rose to 13% of the
+ * release height and the middle balls swung along). A manifold's two points bounce together (a box landing flat may
+ * touch with one corner a substep earlier).
+ */
+function touch(c: RigidContacts, r: BodyRows, i: number): void {
   c.touched[i] = 1;
-  if (c.restitution[i] > 0 && c.approach[i] !== c.approach[i]) {
-    normalSpeed(c, r, i, 0);
-    c.approach[i] = vel[0];
-    // A manifold's two points bounce together (a box landing flat may touch with one corner a substep earlier).
+  if (c.restitution[i] > 0) {
+    keepApproach(c, r, i);
     const j = c.pair[i] === 1 ? i + 1 : i > 0 && c.pair[i - 1] === 1 ? i - 1 : -1;
-    if (j >= 0 && c.approach[j] !== c.approach[j]) {
-      normalSpeed(c, r, j, 0);
-      c.approach[j] = vel[0];
-    }
+    if (j >= 0) keepApproach(c, r, j);
   }
+}
+
+/** Point i's approach speed: its normal speed now if none was kept or this one approaches faster (not once bounced). */
+function keepApproach(c: RigidContacts, r: BodyRows, i: number): void {
+  const kept = c.approach[i];
+  if (kept === Infinity) return;
+  normalSpeed(c, r, i, 0);
+  if (kept !== kept || vel[0] < kept) c.approach[i] = vel[0];
 }
 
 /**
@@ -238,7 +249,7 @@ function firstTouch(c: RigidContacts, r: BodyRows, i: number): void {
 export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
   const { x, y, angle, qangle, rc, rs, invMass, invInertia } = r;
   const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, rAx, rAy, rBx, rBy, radA, radB, lAx, lAy, lBx, lBy } = c;
-  const { rnA, rnB, wn, kn01, allowance, gap, lambdaN, impulseN, impulseT, slip, friction, touched } = c;
+  const { rnA, rnB, wn, kn01, allowance, gap, lambdaN, impulseN, impulseT, slip, friction, touched, restitution } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     // Edge points of particle-built outlines take the general path.
@@ -310,7 +321,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       if (two) i++;
       continue;
     }
-    // The manifold acts: its weights, and what the velocity pass (and firstTouch) read, for both points.
+    // The manifold acts: its weights, and what the velocity pass (and touch) read, for both points.
     const imA = invMass[ia];
     const iiA = invInertia[ia];
     const imB = onRow ? invMass[ib] : 0;
@@ -343,8 +354,8 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       wn[j] = k11;
       kn01[i] = k01;
     }
-    if (g0 > 0 && touched[i] === 0) firstTouch(c, r, i);
-    if (g1 > 0 && touched[j] === 0) firstTouch(c, r, j);
+    if (g0 > 0 && (touched[i] === 0 || restitution[i] > 0)) touch(c, r, i);
+    if (g1 > 0 && (touched[j] === 0 || restitution[j] > 0)) touch(c, r, j);
     // Normal corrections: one point, or a manifold's two by the 2×2 block (one after the other when it would pull).
     let l0 = 0;
     let l1 = 0;
@@ -366,8 +377,8 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
           l0 = k00 > 0 ? Math.max(0, (g0 - k01 * l1) / k00) : 0;
         }
       }
-      if (l1 > 0 && touched[j] === 0) firstTouch(c, r, j);
-      if (l0 > 0 && touched[i] === 0) firstTouch(c, r, i);
+      if (l1 > 0 && (touched[j] === 0 || restitution[j] > 0)) touch(c, r, j);
+      if (l0 > 0 && (touched[i] === 0 || restitution[i] > 0)) touch(c, r, i);
     }
     // Apply: A back along n, B forward, each turned by its levers' cross products.
     const ln = l0 + l1;
@@ -452,7 +463,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
 function solvePoint(c: RigidContacts, r: BodyRows, i: number): void {
   overlap(c, r, i, 0);
   if (pt[0] <= 0 || c.wn[i] === 0) return;
-  if (c.touched[i] === 0) firstTouch(c, r, i);
+  if (c.touched[i] === 0 || c.restitution[i] > 0) touch(c, r, i);
   pt[1] = pt[0] / c.wn[i];
   pushApart(c, r, i, 0);
   friction(c, r, i);
@@ -464,8 +475,8 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
   const d0 = pt[0];
   const d1 = pt[4];
   if (d0 <= 0 && d1 <= 0) return;
-  if (d0 > 0 && c.touched[i] === 0) firstTouch(c, r, i);
-  if (d1 > 0 && c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
+  if (d0 > 0 && (c.touched[i] === 0 || c.restitution[i] > 0)) touch(c, r, i);
+  if (d1 > 0 && (c.touched[i + 1] === 0 || c.restitution[i + 1] > 0)) touch(c, r, i + 1);
   const k00 = c.wn[i];
   const k11 = c.wn[i + 1];
   if (d0 > 0 && d1 > 0) {
@@ -488,7 +499,7 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
   }
   overlap(c, r, i + 1, 4);
   if (pt[4] > 0 && k11 > 0) {
-    if (c.touched[i + 1] === 0) firstTouch(c, r, i + 1);
+    if (c.touched[i + 1] === 0 || c.restitution[i + 1] > 0) touch(c, r, i + 1);
     pt[5] = pt[4] / k11;
     pushApart(c, r, i + 1, 4);
   }
@@ -797,14 +808,20 @@ function normalSpeed(c: RigidContacts, r: BodyRows, i: number, o: number): void 
   vel[o] = vx * c.nx[i] + vy * c.ny[i];
 }
 
-/** Target normal speed of point i into vel[o+1]: −e × its approach for an impact (once), else 0. */
+/**
+ * Target normal speed of point i into vel[o+1]: −e × its approach for an impact (once), else 0; the approach is the
+ * faster of the one kept and its normal speed now, vel[o] (see solveRigidContactVelocities).
+ */
 function target(c: RigidContacts, i: number, o: number): void {
   let t = 0;
   const e = c.restitution[i];
-  const approach = c.approach[i];
-  if (e > 0 && approach < -BOUNCE_THRESHOLD) {
-    t = -e * approach;
-    c.approach[i] = 0;
+  if (e > 0) {
+    const kept = c.approach[i];
+    const approach = kept !== kept || vel[o] < kept ? vel[o] : kept;
+    if (approach < -BOUNCE_THRESHOLD) {
+      t = -e * approach;
+      c.approach[i] = Infinity;
+    }
   }
   vel[o + 1] = t;
 }
@@ -881,18 +898,27 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     // A point joins when it acted, or when its partner acted while it was within two substeps' approach.
     const use0 = acted0 || (v0 < 0 && gap[i] > 2 * v0 * h);
     const use1 = two && (acted1 || (v1 < 0 && gap[j] > 2 * v1 * h));
-    // Targets: −e × the approach for an impact (once), else 0.
+    // Targets: −e × the approach for an impact (once), else 0. The approach is the faster of the one kept (touch())
+    // and the one now: an impulse that reached A or B earlier in this sweep (a cradle's ball just hit) bounces on.
     let t0 = 0;
     let t1 = 0;
     const e = restitution[i];
     if (e > 0) {
-      if (use0 && approach[i] < -BOUNCE_THRESHOLD) {
-        t0 = -e * approach[i];
-        approach[i] = 0;
+      if (use0) {
+        const kept = approach[i];
+        const a0 = kept !== kept || v0 < kept ? v0 : kept;
+        if (a0 < -BOUNCE_THRESHOLD) {
+          t0 = -e * a0;
+          approach[i] = Infinity;
+        }
       }
-      if (use1 && approach[j] < -BOUNCE_THRESHOLD) {
-        t1 = -e * approach[j];
-        approach[j] = 0;
+      if (use1) {
+        const kept = approach[j];
+        const a1 = kept !== kept || v1 < kept ? v1 : kept;
+        if (a1 < -BOUNCE_THRESHOLD) {
+          t1 = -e * a1;
+          approach[j] = Infinity;
+        }
       }
     }
     let p0 = 0;
