@@ -37,10 +37,15 @@ export class RigidNarrowPhase {
         a = b;
         b = t;
       }
+      const kb = c.kind[b];
+      if (kb === ColliderKind.Rigid && shapes.kind[a] === RigidShapeKind.Circle && shapes.kind[b] === RigidShapeKind.Circle) {
+        this.tests++;
+        circles(c, shapes, p, motion, slop, a, b, out);
+        continue;
+      }
       this.manifold.query[0] = motion[a] + motion[b] + slop;
       this.pair[0] = Math.sqrt(c.friction[a] * c.friction[b]);
       this.pair[1] = Math.max(c.restitution[a], c.restitution[b]);
-      const kb = c.kind[b];
       if (kb === ColliderKind.Rigid) this.rigidRigid(shapes, p, a, b, out);
       else if (kb === ColliderKind.Polygon) this.rigidFrame(c, shapes, p, a, b, out);
       else if (kb === ColliderKind.Particles) this.rigidParticles(c, shapes, p, a, b, out);
@@ -233,6 +238,55 @@ export class RigidNarrowPhase {
     if (b >= 0) writeAnchorKey(f, a, b, m.feature[k]);
     else f[12] = 0;
   }
+}
+
+/**
+ * Two rigid discs (body slots a, b): their one point written straight into `out`, without the manifold, with the same
+ * arithmetic as collideCircles followed by emit (the same doubles, so results do not change), and the pair's
+ * friction and restitution only for a pair within reach.
+ */
+function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Float64Array, slop: number, a: number, b: number, out: RigidContacts): void {
+  const ia = shapes.row[a];
+  const ib = shapes.row[b];
+  const { x, y } = p;
+  const ax = x[ia];
+  const ay = y[ia];
+  const bx = x[ib];
+  const by = y[ib];
+  const ra = shapes.radius[a];
+  const rb = shapes.radius[b];
+  const dx = bx - ax;
+  const dy = by - ay;
+  const reach = ra + rb + (motion[a] + motion[b] + slop);
+  const d2 = dx * dx + dy * dy;
+  if (d2 > reach * reach) return;
+  const d = Math.sqrt(d2);
+  const nx = d > 1e-12 ? dx / d : 0;
+  const ny = d > 1e-12 ? dy / d : -1;
+  // The contact points on each disc, then their offsets from the centres turned into each body's frame.
+  const aX = ax + ra * nx - ax;
+  const aY = ay + ra * ny - ay;
+  const bX = bx - rb * nx - bx;
+  const bY = by - rb * ny - by;
+  const ca = p.rc[ia];
+  const sa = p.rs[ia];
+  const cb = p.rc[ib];
+  const sb = p.rs[ib];
+  const f = out.next;
+  f[0] = nx;
+  f[1] = ny;
+  f[2] = ca * aX + sa * aY;
+  f[3] = -sa * aX + ca * aY;
+  f[4] = cb * bX + sb * bY;
+  f[5] = -sb * bX + cb * bY;
+  f[6] = ra;
+  f[7] = rb;
+  f[8] = 0;
+  f[9] = Math.sqrt(c.friction[a] * c.friction[b]);
+  f[10] = Math.max(c.restitution[a], c.restitution[b]);
+  f[11] = ra + rb - d;
+  writeAnchorKey(f, a, b, 0);
+  out.add(ia, ib, -1, a, b, 0);
 }
 
 function emptyRef(): PolygonRef {

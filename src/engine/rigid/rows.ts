@@ -95,14 +95,14 @@ export const MAX_TURN = 0.5;
 
 /**
  * The angular half of a substep's integration for the listed rigid rows: remember the angle, add the torque's
- * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles).
- * The rotation follows at the next syncRotation(). Rows with inverse inertia 0 (static and kinematic bodies) keep
+ * angular acceleration, turn by h·ω (step = [h, damping factor], in a typed array so the call boxes no doubles),
+ * and bring the rotation (rc, rs) up to the new angle as syncRotation() does. Rows with inverse inertia 0 (static and kinematic bodies) keep
  * their ω undamped.
  */
 export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32Array, count: number, step: Float64Array): void {
   const h = step[0];
   const damp = step[1];
-  const { angle, pangle, omega, invInertia } = b;
+  const { angle, pangle, omega, invInertia, qangle } = b;
   for (let k = 0; k < count; k++) {
     const i = rows[k];
     pangle[i] = angle[i];
@@ -113,7 +113,16 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
     if (w * h > MAX_TURN) w = MAX_TURN / h;
     else if (w * h < -MAX_TURN) w = -MAX_TURN / h;
     omega[i] = w;
-    angle[i] += h * w;
+    const a = angle[i] + h * w;
+    angle[i] = a;
+    // The rotation follows here, as syncRotation(b, rows, count, false) would (one pass over the rows, not two).
+    const d = a - qangle[i];
+    if (d !== 0) {
+      turnTo[0] = d;
+      turnTo[1] = a;
+      rotate(b, i);
+      qangle[i] = a;
+    }
   }
 }
 
