@@ -49,6 +49,18 @@ function growPushedBodies(ctx: StepContext): boolean {
   const c = ctx.colliders;
   const pairs = ctx.pairs;
   const motion = ctx.motion;
+  // Nothing to grow unless the fastest body moves more than a quarter of the smallest one's size (most steps).
+  let fastest = 0;
+  let smallest = Infinity;
+  for (let k = 0; k < c.activeCount; k++) {
+    const s = c.active[k];
+    const m = motion[s];
+    if (m > fastest) fastest = m;
+    if (c.isStatic[s]) continue;
+    const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
+    if (size < smallest) smallest = size;
+  }
+  if (fastest <= 0.25 * smallest) return false;
   if (partnerMotion.length < motion.length) partnerMotion = grown(partnerMotion, motion.length);
   const pushed = partnerMotion;
   for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
