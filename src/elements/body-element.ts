@@ -5,7 +5,7 @@ import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import type { BodyStyle } from '../render/renderer.js';
 import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
-import type { SceneHost } from './scene-host.js';
+import type { SceneHost, SceneParent } from './scene-host.js';
 
 /**
  * x, y and angle read the live pose, so Lit's own check (new getter value vs old) would compare the pose with the old
@@ -106,14 +106,25 @@ export abstract class PhysicsBodyElement extends LitElement {
     return { x: this._x, y: this._y, angle: this._angle };
   }
 
-  /** Changes the body's velocity by impulse / mass (world units · mass / s). */
+  /**
+   * Changes the body's velocity by impulse / mass (world units · mass / s). Like setVelocity(), it acts on the body as
+   * the markup describes it now, also right after a change of its attributes or after the element was added.
+   */
   applyImpulse(ix: number, iy: number): void {
-    this._scene?.applyImpulse(this, ix, iy);
+    this.host()?.applyImpulse(this, ix, iy);
   }
 
-  /** Sets the body's velocity (world units / s): a rigid body's, or every particle's of a body of particles. */
+  /**
+   * Sets the body's velocity (world units / s): a rigid body's, or every particle's of a body of particles. A change of
+   * attributes made just before (in the same task) reaches the engine first, so the body it builds gets the velocity.
+   */
   setVelocity(vx: number, vy: number): void {
-    this._scene?.setVelocity(this, vx, vy);
+    this.host()?.setVelocity(this, vx, vy);
+  }
+
+  /** The scene running this body; asked of the parent scene when this element was added in the current task. */
+  private host(): SceneHost | null {
+    return this._scene ?? (this.parentElement as Partial<SceneParent> | null)?._hostOf?.(this) ?? null;
   }
 
   /** The body as plain data for the engine, or null with problems when the markup cannot make one. @internal */

@@ -8,3 +8,11 @@ export interface SceneHost {
   applyImpulse(child: Element, ix: number, iy: number): void;
   setVelocity(child: Element, vx: number, vy: number): void;
 }
+
+/**
+ * What a scene element offers a child it has not adopted yet (added in this task; the scene's observer reports it in a
+ * microtask): the child is adopted now, and its host returned (null when the scene is not running it).
+ */
+export interface SceneParent {
+  _hostOf(child: Element): SceneHost | null;
+}

@@ -169,6 +169,12 @@ export class MarkupSync implements SceneHost {
     this.refreshLinks();
   }
 
+  /** The host of a child added since the observer last ran (a command right after it was added), or null. */
+  hostOf(child: Element): SceneHost | null {
+    this.flush(child);
+    return this.keys.has(child) ? this : null;
+  }
+
   poseOf(child: Element): [number, number, number] | null {
     const key = this.keys.get(child);
     const shown = this.options.engine.shown;
@@ -176,16 +182,30 @@ export class MarkupSync implements SceneHost {
   }
 
   applyImpulse(child: Element, ix: number, iy: number): void {
-    const key = this.keys.get(child);
+    const key = this.flush(child);
     if (key !== undefined && Number.isFinite(ix) && Number.isFinite(iy)) this.options.engine.send('applyImpulse', key, ix, iy);
   }
 
   setVelocity(child: Element, vx: number, vy: number): void {
-    const key = this.keys.get(child);
+    const key = this.flush(child);
     if (key !== undefined && Number.isFinite(vx) && Number.isFinite(vy)) this.options.engine.send('setVelocity', key, vx, vy);
   }
 
   // ---- internals ---------------------------------------------------------------------------------------------
+
+  /**
+   * Before a command about `child`: the markup changes made so far go to the engine first, so the command acts on the
+   * body they build, not on the one they replace. Children added or removed since the observer last ran (its records
+   * come in a microtask) are synced now, and the child's own attribute changes, which Lit renders in a microtask,
+   * are described now (its update then finds nothing new to send). Returns the child's key.
+   */
+  private flush(child: Element): number | undefined {
+    if (this.options.engine.live) {
+      if (this.observer.takeRecords().length > 0 || (!this.keys.has(child) && child.parentNode === this.options.container())) this.sync();
+      if (this.keys.has(child) && (child as Element & { isUpdatePending?: boolean }).isUpdatePending) this.childChanged(child);
+    }
+    return this.keys.get(child);
+  }
 
   /** The body and link elements of the container; the other element children are reported (once each) instead. */
   private children(): Child[] {

@@ -7,6 +7,7 @@ import { loadP5, type DrawHook } from '../../render/renderer.js';
 import { maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
+import type { SceneHost } from '../scene-host.js';
 import { CollisionEventsController } from './collisions.js';
 import { changedParams, ConfigController, substepsAttribute } from './config.js';
 import { firePhysicsEvent } from './events.js';
@@ -332,12 +333,17 @@ export class PhysicsSceneElement extends LitElement {
     this.paused = true;
   }
 
-  /** Takes `n` fixed steps now (also while paused). Resolves to the step count. */
+  /**
+   * Takes `n` fixed steps now (also while paused). Resolves to the step count once the page has the state after them:
+   * body elements' `x`, `y` and `angle` then read it (also of bodies a markup change rebuilt just before).
+   */
   async step(n = 1): Promise<number> {
     const engine = await this.session.whenReady();
     if (!engine) return 0;
     const count = await engine.api.step(n);
-    await engine.frameAt(count);
+    // The frame with the topology it was drawn with: a rebuild's topology travels apart from the frame, and without it
+    // the rebuilt bodies have no pose yet.
+    await engine.synced(count);
     this.recovery.keepSnapshot();
     return count;
   }
@@ -347,7 +353,7 @@ export class PhysicsSceneElement extends LitElement {
     const engine = await this.session.whenReady();
     if (!engine) return;
     await engine.api.reset();
-    await engine.frameAt(0);
+    await engine.synced(0);
     this.recovery.keepSnapshot();
   }
 
@@ -388,6 +394,11 @@ export class PhysicsSceneElement extends LitElement {
   /** Live pose [x, y, angle (radians)] of a body element of this scene, or null before it is simulated. @internal */
   poseOf(child: Element): [number, number, number] | null {
     return this.markup.poseOf(child);
+  }
+
+  /** A child added in this task asks for its scene host (SceneParent): it is adopted now. @internal */
+  _hostOf(child: Element): SceneHost | null {
+    return child.parentNode === this.bodyContainer ? this.markup.hostOf(child) : null;
   }
 
   /** The engine client (null while there is none): for diagnostics and tests. @internal */
