@@ -1,7 +1,7 @@
 // The step, as a short list of named phases over a StepContext (the layout of Box2D v3's b2World_Step):
 //
-//   prepare → detect collisions (bounding boxes, broad phase, narrow phase)
-//   → per substep: accelerate → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → reset
+//   prepare → detect collisions (bounding boxes, broad phase, narrow phase) → accelerate (gravity and forces, once)
+//   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
 //     velocities (linear, angular) → contact velocities (particle, rigid)
 //   → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
@@ -46,6 +46,8 @@ export function step(ctx: StepContext, dt: number): void {
   const t1 = ctx.measureTimings ? performance.now() : 0;
   const n = substepCount(ctx.settings, ctx.particleRows);
   const h = dt / n;
+  // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
+  if (ctx.constraints.springs.count === 0 && !fusedAccelerations(ctx)) accelerate(ctx, h);
   for (let s = 0; s < n; s++) substep(ctx, h);
   if (ctx.measureTimings) {
     ctx.timings.detect = t1 - t0;
@@ -67,9 +69,10 @@ export function substep(ctx: StepContext, h: number): void {
   const { settings, particles } = ctx;
   const kernel = kernelAtWork(ctx);
   const damp = 1 / (1 + h * settings.damping);
-  // The kernel's Verlet step computes the accelerations itself (gravity and forces) unless springs add to them.
-  const fused = kernel !== null && settings.integrator === 'verlet' && ctx.constraints.springs.count === 0;
-  if (!fused) accelerate(ctx, h);
+  // The kernel's Verlet step computes the accelerations itself (gravity and forces) unless springs add to them;
+  // without springs, step() computed them once for all substeps.
+  const fused = fusedAccelerations(ctx);
+  if (ctx.constraints.springs.count > 0) accelerate(ctx, h);
   if (kernel && settings.integrator === 'verlet') kernel.integrateVerlet(particles, h, damp, fused ? settings.gravity : null);
   else integrate(particles, h, damp, settings.integrator);
   const sub = ctx.substepReals;
@@ -89,6 +92,11 @@ export function substep(ctx: StepContext, h: number): void {
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
   if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
+}
+
+/** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */
+function fusedAccelerations(ctx: StepContext): boolean {
+  return kernelAtWork(ctx) !== null && ctx.settings.integrator === 'verlet' && ctx.constraints.springs.count === 0;
 }
 
 /**
