@@ -34,4 +34,8 @@ export default {
   concurrency: 2,
   testFramework: { config: { timeout: 60000 } },
   testsFinishTimeout: 15 * 60 * 1000,
+  // CI may run while the machine is busy: under two CPU hogs the first test page took more than the default 30 s to
+  // open in some runs ("unable to create and start a test page"), and a page's tests more than 20 s to start.
+  browserStartTimeout: 2 * 60 * 1000,
+  testsStartTimeout: 2 * 60 * 1000,
 };
