@@ -43,13 +43,18 @@ export class RigidNarrowPhase {
         circles(c, shapes, p, motion, slop, a, b, out);
         continue;
       }
-      this.manifold.query[0] = motion[a] + motion[b] + slop;
+      this.margin(motion, a, b, slop);
       this.pair[0] = Math.sqrt(c.friction[a] * c.friction[b]);
       this.pair[1] = Math.max(c.restitution[a], c.restitution[b]);
       if (kb === ColliderKind.Rigid) this.rigidRigid(shapes, p, a, b, out);
       else if (kb === ColliderKind.Polygon) this.rigidFrame(c, shapes, p, a, b, out);
       else if (kb === ColliderKind.Particles) this.rigidParticles(c, shapes, p, a, b, out);
     }
+  }
+
+  /** The manifold's query margin: both bodies' motion this step and the contact slop. */
+  private margin(motion: Float64Array, a: number, b: number, slop: number): void {
+    this.manifold.query[0] = motion[a] + motion[b] + slop;
   }
 
   /** The circle of body slot s (row i) as the manifold's query circle at `at` (1: A's, 4: B's in collideCircles). */
