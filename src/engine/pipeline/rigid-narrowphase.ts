@@ -26,9 +26,14 @@ export class RigidNarrowPhase {
   run(pairs: PairList, c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Float64Array, slop: number, out: RigidContacts): void {
     out.count = 0;
     this.tests = 0;
-    for (let k = 0; k < pairs.count; k++) {
+    // Pairs with a static side are written after the others, so the solver's sweep (in this order) ends on them:
+    // the last word in a Gauss–Seidel sweep goes to the wall, and a light body pressed into it by a heavier one is
+    // put back out each substep (a disc hit by a box 10× its mass at 500 units/s went through a wall 1 thick; a
+    // particle-built hammer 100× heavier drove it through at 100 units/s). Box2D v3 solves static contacts last too.
+    for (let pass = 0; pass < 2; pass++) for (let k = 0; k < pairs.count; k++) {
       let a = pairs.a[k];
       let b = pairs.b[k];
+      if ((c.isStatic[a] | c.isStatic[b]) !== pass) continue;
       const aRigid = c.kind[a] === ColliderKind.Rigid;
       if (!aRigid && c.kind[b] !== ColliderKind.Rigid) continue;
       // Side A is rigid.
