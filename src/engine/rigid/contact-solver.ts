@@ -865,7 +865,7 @@ function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  */
 export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
   const { vx, vy, omega, invMass, invInertia } = r;
-  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, approach } = c;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     if (B2[i] >= 0 || (two && B2[i + 1] >= 0)) {
@@ -905,20 +905,14 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     const e = restitution[i];
     if (e > 0) {
       if (use0) {
-        const kept = approach[i];
-        const a0 = kept !== kept || v0 < kept ? v0 : kept;
-        if (a0 < -BOUNCE_THRESHOLD) {
-          t0 = -e * a0;
-          approach[i] = Infinity;
-        }
+        vel[0] = v0;
+        target(c, i, 0);
+        t0 = vel[1];
       }
       if (use1) {
-        const kept = approach[j];
-        const a1 = kept !== kept || v1 < kept ? v1 : kept;
-        if (a1 < -BOUNCE_THRESHOLD) {
-          t1 = -e * a1;
-          approach[j] = Infinity;
-        }
+        vel[0] = v1;
+        target(c, j, 0);
+        t1 = vel[1];
       }
     }
     let p0 = 0;
