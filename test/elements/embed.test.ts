@@ -25,10 +25,18 @@ async function expectStill(scene: PhysicsSceneElement): Promise<void> {
   expect((await scene.diagnostics()).stepCount).to.equal(steps);
 }
 
+/**
+ * The scene steps and its canvas keeps up: it draws again (a moving scene) or shows the newest state (a still one).
+ * drawn() alone is not enough for a moving scene: with frames arriving every animation frame and blended, it is almost
+ * never "showing the newest state" at the moment a test's frame callback looks (the breezy cloth in a shadow root
+ * timed out after 15 s in one CI run).
+ */
 async function expectSteps(scene: PhysicsSceneElement): Promise<void> {
   const steps = scene.stepCount;
   await waitFor(() => scene.stepCount > steps + 5, 'the scene to step again');
-  await drawn(scene, 3);
+  await frames(3);
+  const drawings = scene.renderedFrames;
+  await waitFor(() => scene.renderedFrames > drawings + 2 || !scene.drawPending, 'the canvas to draw again or show the newest state');
 }
 
 describe('embedding', () => {
