@@ -23,7 +23,28 @@ export interface BroadPhase {
   findPairs(c: Colliders, accept: (a: number, b: number) => boolean, out: PairList): void;
 }
 
-function overlaps(c: Colliders, a: number, b: number): boolean {
+/** Per collider slot: the largest motion of its pairs' other bodies (partnerMotions). Grown, never shrunk. */
+let partnerMotion = new Float64Array(64);
+
+/**
+ * For each active collider, the largest `motion` among the colliders it is paired with: how far a partner may push it
+ * this step. The array is shared (valid until the next call).
+ */
+export function partnerMotions(c: Colliders, pairs: PairList, motion: Float64Array): Float64Array {
+  if (partnerMotion.length < motion.length) partnerMotion = grown(partnerMotion, motion.length);
+  const pushed = partnerMotion;
+  for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
+  for (let k = 0; k < pairs.count; k++) {
+    const a = pairs.a[k];
+    const b = pairs.b[k];
+    if (motion[b] > pushed[a]) pushed[a] = motion[b];
+    if (motion[a] > pushed[b]) pushed[b] = motion[a];
+  }
+  return pushed;
+}
+
+/** Whether the AABBs of colliders a and b overlap. */
+export function overlaps(c: Colliders, a: number, b: number): boolean {
   return c.minX[a] <= c.maxX[b] && c.minX[b] <= c.maxX[a] && c.minY[a] <= c.maxY[b] && c.minY[b] <= c.maxY[a];
 }
 

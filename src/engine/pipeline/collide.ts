@@ -8,6 +8,7 @@ import { RigidShapeKind } from '../rigid/shapes.js';
 import { boundsContacts } from './rigid-narrowphase.js';
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
+import { overlaps, partnerMotions } from './broadphase.js';
 
 /** Broad phase then narrow phase: the contacts found act in every substep of the step (speculatively). */
 export function detectCollisions(ctx: StepContext, dt: number): void {
@@ -34,8 +35,6 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   recordApproachSpeeds(ctx.contacts, ctx.particles);
 }
 
-/** Per collider slot: the largest motion of its broad-phase partners this step (growPushedBodies). */
-let partnerMotion = new Float64Array(64);
 /** The static colliders, gathered when some body grows (growPushedBodies). */
 let statics = new Int32Array(16);
 
@@ -64,16 +63,7 @@ function growPushedBodies(ctx: StepContext): void {
     if (size < smallest) smallest = size;
   }
   if (fastest <= 0.25 * smallest) return;
-  if (partnerMotion.length < motion.length) partnerMotion = grown(partnerMotion, motion.length);
-  const pushed = partnerMotion;
-  for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
-  const paired = pairs.count;
-  for (let k = 0; k < paired; k++) {
-    const a = pairs.a[k];
-    const b = pairs.b[k];
-    if (motion[b] > pushed[a]) pushed[a] = motion[b];
-    if (motion[a] > pushed[b]) pushed[b] = motion[a];
-  }
+  const pushed = partnerMotions(c, pairs, motion);
   let staticCount = -1;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
@@ -90,8 +80,8 @@ function growPushedBodies(ctx: StepContext): void {
     for (let q = 0; q < staticCount; q++) {
       const w = statics[q];
       const reaches = minX <= c.maxX[w] && c.minX[w] <= maxX && minY <= c.maxY[w] && c.minY[w] <= maxY;
-      const reached = c.minX[s] <= c.maxX[w] && c.minX[w] <= c.maxX[s] && c.minY[s] <= c.maxY[w] && c.minY[w] <= c.maxY[s];
-      if (reaches && !reached && ctx.acceptPair(s, w)) pairs.push(s, w);
+      // A pair the broad phase found already (the boxes overlapped before growing) is not listed twice.
+      if (reaches && !overlaps(c, s, w) && ctx.acceptPair(s, w)) pairs.push(s, w);
     }
     motion[s] = m + extra;
     c.minX[s] = minX;

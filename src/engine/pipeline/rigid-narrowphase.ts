@@ -4,7 +4,7 @@
 import type { ParticleStore } from '../particles.js';
 import type { Bounds } from '../bounds.js';
 import { ColliderKind, type Colliders } from './colliders.js';
-import type { PairList } from './broadphase.js';
+import { partnerMotions, type PairList } from './broadphase.js';
 import { collideCircles, collidePolygonCircle, collidePolygons, ContactManifold, type PolygonRef } from '../rigid/collide.js';
 import { writeAnchorKey, type RigidContacts } from '../rigid/contacts.js';
 import { RigidShapeKind, type RigidShapes } from '../rigid/shapes.js';
@@ -303,9 +303,6 @@ function emptyRef(): PolygonRef {
   return { x: new Float64Array(8), y: new Float64Array(8), nx: new Float64Array(8), ny: new Float64Array(8), start: 0, count: 0 };
 }
 
-/** Per body slot: the largest motion of the bodies it may touch this step (boundsContacts). Grown, never shrunk. */
-let pushedBy = new Float64Array(64);
-
 /**
  * A rigid body's contacts with the world's bounds (four walls, static, B = the world): every vertex of its parts, or
  * its disc, within the margin of a wall. The margin is the body's own motion this step plus the largest motion of
@@ -315,15 +312,7 @@ let pushedBy = new Float64Array(64);
  */
 export function boundsContacts(bounds: Bounds, shapes: RigidShapes, c: Colliders, p: ParticleStore, motion: Float64Array, pairs: PairList, slop: number, friction: number, out: RigidContacts): void {
   w6[6] = friction;
-  if (pushedBy.length < motion.length) pushedBy = grown(pushedBy, motion.length);
-  const pushed = pushedBy;
-  for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
-  for (let k = 0; k < pairs.count; k++) {
-    const a = pairs.a[k];
-    const b = pairs.b[k];
-    if (motion[b] > pushed[a]) pushed[a] = motion[b];
-    if (motion[a] > pushed[b]) pushed[b] = motion[a];
-  }
+  const pushed = partnerMotions(c, pairs, motion);
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
     if (c.kind[s] !== ColliderKind.Rigid || c.isStatic[s]) continue;
