@@ -179,13 +179,29 @@ function overlap(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  */
 function push(c: RigidContacts, r: BodyRows, i: number, o: number, along: number): void {
   const l = pt[o + 1];
-  const dx = along === 1 ? -c.ny[i] * l : c.nx[i] * l;
-  const dy = along === 1 ? c.nx[i] * l : c.ny[i] * l;
+  move[0] = along === 1 ? -c.ny[i] * l : c.nx[i] * l;
+  move[1] = along === 1 ? c.nx[i] * l : c.ny[i] * l;
+  move[2] = l;
+  applyAt(c, r, i, r.x, r.y, r.angle);
+}
+
+/** What applyAt() applies: [x, y of the move (or impulse) per unit inverse mass, its magnitude for the turn]. */
+const move = new Float64Array(3);
+
+/**
+ * Applies move[] at point i, A back and B forward, to the columns given: positions and angles (push) or velocities
+ * and angular velocities (kick). A turns by its inverse inertia × lev[0] × magnitude, B by lev[1]; an edge point's
+ * two particles share B's move by their weights along the edge.
+ */
+function applyAt(c: RigidContacts, r: BodyRows, i: number, X: Float64Array, Y: Float64Array, turn: Float64Array): void {
+  const dx = move[0];
+  const dy = move[1];
+  const l = move[2];
   const ia = c.a[i];
   const mA = r.invMass[ia];
-  r.x[ia] -= mA * dx;
-  r.y[ia] -= mA * dy;
-  r.angle[ia] -= r.invInertia[ia] * lev[0] * l;
+  X[ia] -= mA * dx;
+  Y[ia] -= mA * dy;
+  turn[ia] -= r.invInertia[ia] * lev[0] * l;
   const ib = c.b[i];
   if (ib < 0) return;
   const ib2 = c.b2[i];
@@ -193,16 +209,16 @@ function push(c: RigidContacts, r: BodyRows, i: number, o: number, along: number
     const al = c.alpha[i];
     const w0 = r.invMass[ib] * (1 - al);
     const w1 = r.invMass[ib2] * al;
-    r.x[ib] += w0 * dx;
-    r.y[ib] += w0 * dy;
-    r.x[ib2] += w1 * dx;
-    r.y[ib2] += w1 * dy;
+    X[ib] += w0 * dx;
+    Y[ib] += w0 * dy;
+    X[ib2] += w1 * dx;
+    Y[ib2] += w1 * dy;
     return;
   }
   const mB = r.invMass[ib];
-  r.x[ib] += mB * dx;
-  r.y[ib] += mB * dy;
-  r.angle[ib] += r.invInertia[ib] * lev[1] * l;
+  X[ib] += mB * dx;
+  Y[ib] += mB * dy;
+  turn[ib] += r.invInertia[ib] * lev[1] * l;
 }
 
 /** Applies pt[o+1] as point i's normal correction (λn of the substep and of the step). */
@@ -829,30 +845,12 @@ function target(c: RigidContacts, i: number, o: number): void {
 /** Point i's sides get the normal velocity impulse pt[o+1] (per unit inverse mass; prepared levers). */
 function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   const P = pt[o + 1];
-  const px = P * c.nx[i];
-  const py = P * c.ny[i];
-  const ia = c.a[i];
-  const mA = r.invMass[ia];
-  r.vx[ia] -= mA * px;
-  r.vy[ia] -= mA * py;
-  r.omega[ia] -= r.invInertia[ia] * c.rnA[i] * P;
-  const ib = c.b[i];
-  if (ib < 0) return;
-  const ib2 = c.b2[i];
-  if (ib2 >= 0) {
-    const al = c.alpha[i];
-    const w0 = r.invMass[ib] * (1 - al);
-    const w1 = r.invMass[ib2] * al;
-    r.vx[ib] += w0 * px;
-    r.vy[ib] += w0 * py;
-    r.vx[ib2] += w1 * px;
-    r.vy[ib2] += w1 * py;
-    return;
-  }
-  const mB = r.invMass[ib];
-  r.vx[ib] += mB * px;
-  r.vy[ib] += mB * py;
-  r.omega[ib] += r.invInertia[ib] * c.rnB[i] * P;
+  move[0] = P * c.nx[i];
+  move[1] = P * c.ny[i];
+  move[2] = P;
+  lev[0] = c.rnA[i];
+  lev[1] = c.rnB[i];
+  applyAt(c, r, i, r.vx, r.vy, r.omega);
 }
 
 /**
