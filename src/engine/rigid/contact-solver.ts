@@ -706,25 +706,9 @@ function shockSweep(c: RigidContacts, r: BodyRows): void {
     const ii = invInertia[row];
     const r0 = moveB ? c.rnB[i] : c.rnA[i];
     const r1 = two ? (moveB ? c.rnB[i + 1] : c.rnA[i + 1]) : 0;
-    const k00 = im + ii * r0 * r0;
-    const k11 = im + ii * r1 * r1;
-    const k01 = im + ii * r0 * r1;
-    let l0 = 0;
-    let l1 = 0;
-    const det = k00 * k11 - k01 * k01;
-    if (g0 > 0 && g1 > 0 && det > 1e-9 * k00 * k11) {
-      l0 = (k11 * g0 - k01 * g1) / det;
-      l1 = (k00 * g1 - k01 * g0) / det;
-    }
-    if (!(l0 > 0 && l1 > 0)) {
-      if (g0 >= g1) {
-        l0 = g0 / k00;
-        l1 = two ? Math.max(0, (g1 - k01 * l0) / k11) : 0;
-      } else {
-        l1 = g1 / k11;
-        l0 = Math.max(0, (g0 - k01 * l1) / k00);
-      }
-    }
+    shockBlock(im, ii, r0, r1, g0, g1, two);
+    const l0 = blk[0];
+    const l1 = blk[1];
     // A back along n, or B forward; the pose at the substep's start moves with it, so the correction adds no
     // velocity (shockVelocity stops the approach instead: pushed up at depth / h, a loaded pile would jump).
     const s = moveB ? 1 : -1;
@@ -739,6 +723,39 @@ function shockSweep(c: RigidContacts, r: BodyRows): void {
     py[row] += dy;
     pangle[row] += da;
   }
+}
+
+/** shockBlock()'s answer: the two points' corrections (or impulses), both ≥ 0. */
+const blk = new Float64Array(2);
+
+/**
+ * The shock sweeps' 2×2 block for the one body that moves (inverse mass im and inertia ii, the points' lever cross
+ * products r0, r1) against what each point needs, b0 and b1 (an overlap, or an approach speed): both by the block
+ * when both need and it pushes, else the larger first, then the other as far as it still needs once the first has
+ * moved the body. Into blk (a typed array: doubles returned from a call are boxed).
+ */
+function shockBlock(im: number, ii: number, r0: number, r1: number, b0: number, b1: number, two: boolean): void {
+  const k00 = im + ii * r0 * r0;
+  const k11 = im + ii * r1 * r1;
+  const k01 = im + ii * r0 * r1;
+  let l0 = 0;
+  let l1 = 0;
+  const det = k00 * k11 - k01 * k01;
+  if (b0 > 0 && b1 > 0 && det > 1e-9 * k00 * k11) {
+    l0 = (k11 * b0 - k01 * b1) / det;
+    l1 = (k00 * b1 - k01 * b0) / det;
+  }
+  if (!(l0 > 0 && l1 > 0)) {
+    if (b0 >= b1) {
+      l0 = b0 / k00;
+      l1 = two ? Math.max(0, (b1 - k01 * l0) / k11) : 0;
+    } else {
+      l1 = b1 / k11;
+      l0 = Math.max(0, (b0 - k01 * l1) / k00);
+    }
+  }
+  blk[0] = l0;
+  blk[1] = l1;
 }
 
 /**
@@ -771,27 +788,10 @@ function shockVelocity(c: RigidContacts, r: BodyRows): void {
     const ii = invInertia[row];
     const r0 = moveB ? c.rnB[i] : c.rnA[i];
     const r1 = two ? (moveB ? c.rnB[i + 1] : c.rnA[i + 1]) : 0;
-    const k00 = im + ii * r0 * r0;
-    const k11 = im + ii * r1 * r1;
-    const k01 = im + ii * r0 * r1;
-    // Impulses (per unit inverse mass) that bring the approaching points to rest: both by the 2×2 block, else the
-    // faster one, then the other as far as it still approaches.
-    let p0 = 0;
-    let p1 = 0;
-    const det = k00 * k11 - k01 * k01;
-    if (v0 < 0 && v1 < 0 && det > 1e-9 * k00 * k11) {
-      p0 = (k01 * v1 - k11 * v0) / det;
-      p1 = (k01 * v0 - k00 * v1) / det;
-    }
-    if (!(p0 > 0 && p1 > 0)) {
-      if (v0 <= v1) {
-        p0 = -v0 / k00;
-        p1 = two ? Math.max(0, (-v1 - k01 * p0) / k11) : 0;
-      } else {
-        p1 = -v1 / k11;
-        p0 = Math.max(0, (-v0 - k01 * p1) / k00);
-      }
-    }
+    // Impulses (per unit inverse mass) that bring the approaching points to rest.
+    shockBlock(im, ii, r0, r1, -v0, -v1, two);
+    const p0 = blk[0];
+    const p1 = blk[1];
     const s = moveB ? 1 : -1;
     const P = s * (p0 + p1);
     vx[row] += im * P * c.nx[i];
