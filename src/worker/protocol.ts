@@ -1,7 +1,7 @@
 // What crosses the worker boundary: plain-data scene descriptions, the command interface (the same on the main thread
 // and in the worker), and the layout of one published state frame (a Float64Array).
-import type { BodyDescription, BodyKind, BodyType, Bounds, KernelChoice, Vec2, WorldOptions } from '../engine/index.js';
-import type { JointType, SubstepChoice } from '../engine/options.js';
+import type { BodyDescription, BodyKind, BodyType, Bounds, KernelChoice, WorldOptions } from '../engine/index.js';
+import type { JointOptions, JointType, SubstepChoice } from '../engine/options.js';
 
 /** A body as the host knows it: the element layer's numeric key plus the engine's plain-data description. */
 export interface KeyedBody {
@@ -27,7 +27,7 @@ export type LinkDescription =
  * <physics-joint>: an engine joint (World.addJoint) between body `a` and body `b`, or the world when `b` is absent.
  * Angles in radians, angular speeds in rad/s (the element converts its degrees).
  */
-export interface JointLink {
+export interface JointLink extends Pick<JointOptions, JointSettings> {
   type: 'joint';
   /** Default 'distance' (a stick between the ends: the joint's meaning before it had types). */
   joint?: JointType;
@@ -41,19 +41,10 @@ export interface JointLink {
   y1?: number;
   x2?: number;
   y2?: number;
-  axis?: Vec2;
-  lowerAngle?: number;
-  upperAngle?: number;
-  motorSpeed?: number;
-  maxMotorTorque?: number;
-  lower?: number;
-  upper?: number;
-  length?: number;
-  stiffness?: number;
-  damping?: number;
-  compliance?: number;
-  collideConnected?: boolean;
 }
+
+/** The joint settings a <physics-joint> passes on as World.addJoint takes them (documented there). */
+type JointSettings = 'axis' | 'lowerAngle' | 'upperAngle' | 'motorSpeed' | 'maxMotorTorque' | 'lower' | 'upper' | 'length' | 'stiffness' | 'damping' | 'compliance' | 'collideConnected';
 
 export interface KeyedLink {
   key: number;
