@@ -7,8 +7,25 @@
 // starts a drag and its touchstart is cancelled (the page does not scroll); any other touch is left to the browser.
 // Only the primary pointer drags, so a second finger makes a pinch, not a second drag. A mouse press asks the engine
 // (the page never scrolls on a mouse press).
+//
+// A grab is the engine's answer to the press, and it comes later (a worker round trip; longer under load). Until it
+// comes, the pointer's moves are recorded with their times; once it comes, the grab replays them at the pace they were
+// made, behind the pointer by the time the answer took (at most MAX_LAG), and a lift is replayed as a release at its
+// place in that replay. So a quick flick lifted before the answer throws the body as a flick whose grab was there from
+// the start would (the release is the normal one: the body keeps the velocity the moving grab gave it); a tap, lifted
+// without moving, releases at once (no throw). While the pointer is held, the replay ends as soon as it has caught up
+// (the pointer rested for the lag): from then on moves go straight to the grab.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { realClock, type Clock } from './recovery.js';
 import type { Engine } from './session.js';
+
+/** How often a replay sends the pointer's next recorded position (ms). */
+const REPLAY_TICK = 8;
+/**
+ * The most a replay lags the pointer (ms). An answer later than this skips the start of the drag (the grab jumps to
+ * where the pointer was this long ago), so a long drag under load does not trail its pointer by seconds.
+ */
+const MAX_LAG = 250;
 
 export interface PointerOptions {
   /** The engine to grab in (null: none). */
@@ -20,48 +37,81 @@ export interface PointerOptions {
    * where to take it, or null.
    */
   hit(x: number, y: number): { x: number; y: number } | null;
+  /** Time and timers (performance.now and window's intervals unless told; unit tests pass a fake clock). */
+  clock?: Clock;
+}
+
+/** Where the grab should go (world units) and when the pointer was there (clock ms). */
+interface Sample {
+  t: number;
+  x: number;
+  y: number;
 }
 
 interface Drag {
   pointer: number;
-  /** The engine's grab, once it answered (null until then, or when the press hit nothing). */
+  /** The engine the grab was asked of (it holds the grab). */
+  engine: Pick<Engine, 'api'>;
+  /** The engine's grab, once it answered (null until then, after the release, or when the press hit nothing). */
   grab: number | null;
-  /** Where the grab holds the body, in world units: the pointer, plus `dx`, `dy`. */
+  /** Where the pointer holds the body now, in world units: the pointer, plus `dx`, `dy`. */
   x: number;
   y: number;
   /** From the pointer to the point taken (a touch near a body's edge takes the nearest point on it). */
   dx: number;
   dy: number;
-  /** Let go (possibly before the engine answered the grab). */
-  done: boolean;
   /** A finger or pen: its touchstart is cancelled so the page does not scroll. */
   touch: boolean;
+  /** When the press was made (clock ms). */
+  at: number;
+  /** Moves not yet sent to the grab (before the answer, and while a replay runs), oldest first. */
+  queue: Sample[];
+  /** How far the grab's replay runs behind the pointer (ms). */
+  lag: number;
+  /** When the pointer was lifted (clock ms), null while it is held. */
+  liftedAt: number | null;
+  /** Over: released, or given up (scene left, engine gone); a grab answered later is released at once. */
+  over: boolean;
+  /** The replay's interval while one runs. */
+  timer: number | null;
 }
 
 /** @internal */
 export class PointerDragController implements ReactiveController {
+  /** The drag of the pointer held now. */
   private drag: Drag | null = null;
+  /** A drag whose pointer was lifted and whose grab is still to answer or to replay to the lift (at most one). */
+  private tail: Drag | null = null;
+  private readonly clock: Clock;
 
   constructor(
     host: ReactiveControllerHost,
     private readonly options: PointerOptions,
   ) {
+    this.clock = options.clock ?? realClock;
     host.addController(this);
   }
 
-  /** Out of the document the pointer capture is lost and no pointerup will come: let go now. */
+  /** Out of the document the pointer capture is lost and no pointerup will come: let go now (replays too). */
   hostDisconnected(): void {
-    this.letGo();
+    if (this.drag) this.finish(this.drag);
+    if (this.tail) this.finish(this.tail);
   }
 
   /** The grab held now (snapshots note it, so that a restore lets go of it), or null. */
   get grab(): number | null {
-    return this.drag?.grab ?? null;
+    return this.drag?.grab ?? this.tail?.grab ?? null;
   }
 
-  /** Forgets the drag (the engine that held it is gone). */
+  /** Forgets the drags (the engine that held them is gone): nothing more is sent to it, and a late answer is released. */
   cancel(): void {
-    this.drag = null;
+    for (const d of [this.drag, this.tail]) {
+      if (!d) continue;
+      d.over = true;
+      d.grab = null;
+      this.stop(d);
+    }
+    this.drag = this.tail = null;
   }
 
   readonly down = (e: PointerEvent): void => {
@@ -79,26 +129,17 @@ export class PointerDragController implements ReactiveController {
     } catch {
       // Synthetic events have no active pointer to capture.
     }
-    const drag: Drag = { pointer: e.pointerId, grab: null, x: p.x, y: p.y, dx: p.x - pointer.x, dy: p.y - pointer.y, done: false, touch };
+    // One grab at a time: a throw still being replayed lets go where it is.
+    if (this.tail) this.finish(this.tail);
+    const drag: Drag = {
+      pointer: e.pointerId, engine, grab: null, x: p.x, y: p.y, dx: p.x - pointer.x, dy: p.y - pointer.y, touch,
+      at: this.clock.now(), queue: [], lag: 0, liftedAt: null, over: false, timer: null,
+    };
     this.drag = drag;
     e.preventDefault();
     engine.api.grab(p.x, p.y).then(
-      (grab) => {
-        if (grab === null) {
-          if (this.drag === drag) this.drag = null;
-          return;
-        }
-        // Let go before the answer, or the engine replaced meanwhile: release at once.
-        if (drag.done || this.options.engine() !== engine) {
-          engine.api.release(grab).catch(() => {});
-          return;
-        }
-        drag.grab = grab;
-        engine.api.moveGrab(grab, drag.x, drag.y).catch(() => {});
-      },
-      () => {
-        if (this.drag === drag) this.drag = null;
-      },
+      (grab) => this.answered(drag, grab),
+      () => this.finish(drag),
     );
   };
 
@@ -114,18 +155,26 @@ export class PointerDragController implements ReactiveController {
 
   readonly move = (e: PointerEvent): void => {
     const d = this.drag;
-    const engine = this.options.engine();
-    if (!d || e.pointerId !== d.pointer || !engine) return;
+    if (!d || e.pointerId !== d.pointer || !this.options.engine()) return;
     const p = this.options.toWorld(e.clientX, e.clientY);
     if (!Number.isFinite(p.x)) return;
-    d.x = p.x + d.dx;
-    d.y = p.y + d.dy;
-    if (d.grab !== null) engine.api.moveGrab(d.grab, d.x, d.y).catch(() => {});
+    const x = p.x + d.dx;
+    const y = p.y + d.dy;
+    if (x === d.x && y === d.y) return;
+    d.x = x;
+    d.y = y;
+    if (d.grab !== null && d.timer === null) d.engine.api.moveGrab(d.grab, x, y).catch(() => {});
+    else d.queue.push({ t: this.clock.now(), x, y });
   };
 
   readonly up = (e: PointerEvent): void => {
-    if (!this.drag || e.pointerId !== this.drag.pointer) return;
-    this.letGo();
+    const d = this.drag;
+    if (!d || e.pointerId !== d.pointer) return;
+    this.drag = null;
+    d.liftedAt = this.clock.now();
+    // Held and caught up: let go now. Else the release waits for the answer and the replay up to the lift.
+    if (d.grab !== null && d.timer === null) this.finish(d);
+    else this.tail = d;
     try {
       (e.currentTarget as Element).releasePointerCapture(e.pointerId);
     } catch {
@@ -133,12 +182,58 @@ export class PointerDragController implements ReactiveController {
     }
   };
 
-  /** Ends the drag; a grab the engine answers later is released at once. */
-  private letGo(): void {
-    const d = this.drag;
-    if (!d) return;
-    d.done = true;
-    this.drag = null;
-    if (d.grab !== null) this.options.engine()?.api.release(d.grab).catch(() => {});
+  /** The engine answered the press of `d`. */
+  private answered(d: Drag, grab: number | null): void {
+    if (grab === null) {
+      this.finish(d);
+      return;
+    }
+    // Given up meanwhile (the scene left, a new press, the engine replaced): release at once.
+    if (d.over || this.options.engine() !== d.engine) {
+      d.engine.api.release(grab).catch(() => {});
+      this.finish(d);
+      return;
+    }
+    d.grab = grab;
+    if (d.queue.length === 0) {
+      // Not moved: held where pressed; a tap (already lifted) lets go at once, with nothing to throw.
+      if (d.liftedAt !== null) this.finish(d);
+      return;
+    }
+    d.lag = Math.min(this.clock.now() - d.at, MAX_LAG);
+    d.timer = this.clock.setInterval(() => this.replay(d), REPLAY_TICK);
+    this.replay(d);
+  }
+
+  /** Sends the newest recorded move now due; at the end of the queue, goes live (held) or lets go (lifted). */
+  private replay(d: Drag): void {
+    if (d.grab === null || this.options.engine() !== d.engine) {
+      this.finish(d);
+      return;
+    }
+    const due = this.clock.now() - d.lag;
+    let next: Sample | null = null;
+    while (d.queue.length > 0 && d.queue[0].t <= due) next = d.queue.shift()!;
+    if (next) d.engine.api.moveGrab(d.grab, next.x, next.y).catch(() => {});
+    if (d.queue.length > 0) return;
+    if (d.liftedAt === null) this.stop(d);
+    else if (d.liftedAt <= due) this.finish(d);
+  }
+
+  /** Ends a drag: its grab (if answered) is released, its replay stopped; an answer still to come is released. */
+  private finish(d: Drag): void {
+    d.over = true;
+    this.stop(d);
+    if (this.drag === d) this.drag = null;
+    if (this.tail === d) this.tail = null;
+    if (d.grab === null) return;
+    d.engine.api.release(d.grab).catch(() => {});
+    d.grab = null;
+  }
+
+  private stop(d: Drag): void {
+    if (d.timer === null) return;
+    this.clock.clearInterval(d.timer);
+    d.timer = null;
   }
 }
