@@ -1,5 +1,6 @@
 // Attribute checks for the elements: a bad value is recorded as a problem naming the attribute and the value as
 // written in the markup, and a fallback is used, so bad markup never throws.
+import { MAX_WORLD_COORDINATE } from '../engine/validate.js';
 
 /** A rejected attribute value. */
 export interface Problem {
@@ -16,7 +17,23 @@ export interface NumberRule {
   /** Must be > 0. */
   positive?: boolean;
   integer?: boolean;
+  /**
+   * A position, length or size in world units: within ±1e9 (the engine's MAX_WORLD_COORDINATE). Default: true for the
+   * attribute names in COORDINATES.
+   */
+  coordinate?: boolean;
 }
+
+/**
+ * Number attributes that are positions, lengths or sizes in world units, on every element: body and pin positions,
+ * rope ends, the scene's and a box's width and height, radii, cloth spacing, link lengths and a link's lower limit (a
+ * distance joint's shortest length). A point list (`points`) is checked the same way. Upper limits are not: they move
+ * nothing.
+ */
+export const COORDINATES: ReadonlySet<string> = new Set(['x', 'y', 'x1', 'y1', 'x2', 'y2', 'width', 'height', 'radius', 'spacing', 'length', 'lower', 'points']);
+
+const OUT_OF_RANGE = 'must be within ±1e9 (world units)';
+const outOfRange = (n: number) => n > MAX_WORLD_COORDINATE || n < -MAX_WORLD_COORDINATE;
 
 /**
  * Lit converter for number attributes: a blank value reads as NaN, which the checks report. Lit's own converter gives
@@ -55,6 +72,7 @@ export class Checker {
     else if (rule.min !== undefined && n < rule.min) problem = `must be >= ${rule.min}`;
     else if (rule.max !== undefined && n > rule.max) problem = `must be <= ${rule.max}`;
     else if (rule.integer && !Number.isInteger(n)) problem = 'must be a whole number';
+    else if ((rule.coordinate ?? COORDINATES.has(attribute)) && outOfRange(n)) problem = OUT_OF_RANGE;
     if (problem) {
       this.fail(attribute, value, problem);
       return rule.fallback;
@@ -76,6 +94,10 @@ export class Checker {
     const out = parts.map(Number);
     if (out.length === 0 || out.some((n) => !Number.isFinite(n))) {
       this.fail(attribute, value, 'must be a list of numbers');
+      return null;
+    }
+    if (COORDINATES.has(attribute) && out.some(outOfRange)) {
+      this.fail(attribute, value, `coordinates ${OUT_OF_RANGE}`);
       return null;
     }
     return out;

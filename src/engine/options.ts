@@ -2,7 +2,7 @@
 import type { Bounds } from './bounds.js';
 import type { Handle } from './handles.js';
 import type { Integrator } from './integrate.js';
-import { finite, integer, nonNegative, oneOf } from './validate.js';
+import { coordinate, finite, integer, nonNegative, oneOf } from './validate.js';
 
 export interface Vec2 {
   x: number;
@@ -281,7 +281,7 @@ export function resolveCollider(o: ColliderOptions, particleCount: number): Reso
 
 export function checkBounds(b: Bounds): Bounds {
   if (b == null || typeof b !== 'object') throw new TypeError(`bounds must be {minX, minY, maxX, maxY} or null, got ${String(b)}`);
-  const out = { minX: finite('bounds.minX', b.minX), minY: finite('bounds.minY', b.minY), maxX: finite('bounds.maxX', b.maxX), maxY: finite('bounds.maxY', b.maxY) };
+  const out = { minX: coordinate('bounds.minX', b.minX), minY: coordinate('bounds.minY', b.minY), maxX: coordinate('bounds.maxX', b.maxX), maxY: coordinate('bounds.maxY', b.maxY) };
   if (!(out.minX < out.maxX && out.minY < out.maxY)) throw new RangeError(`bounds must have minX < maxX and minY < maxY, got ${JSON.stringify(b)}`);
   return out;
 }

@@ -32,7 +32,7 @@ import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
+import { coordinate, finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -219,11 +219,11 @@ export class World {
 
   addParticle(options: ParticleOptions): Handle {
     if (options == null || typeof options !== 'object') throw new TypeError(`particle options must be an object, got ${String(options)}`);
-    const x = finite('x', options.x);
-    const y = finite('y', options.y);
+    const x = coordinate('x', options.x);
+    const y = coordinate('y', options.y);
     const mass = options.mass === undefined ? 1 : options.mass;
     if (mass !== Infinity) positive('mass', mass);
-    const radius = nonNegative('radius', options.radius ?? 0);
+    const radius = coordinate('radius', nonNegative('radius', options.radius ?? 0));
     const vx = finite('vx', options.vx ?? 0);
     const vy = finite('vy', options.vy ?? 0);
 
@@ -274,8 +274,8 @@ export class World {
   setPosition(handle: Handle, x: number, y: number): void {
     const i = this.particleIndex(handle);
     wakeParticle(this.ctx, i);
-    const nx = finite('x', x);
-    const ny = finite('y', y);
+    const nx = coordinate('x', x);
+    const ny = coordinate('y', y);
     const p = this.particles;
     p.px[i] += nx - p.x[i];
     p.py[i] += ny - p.y[i];
@@ -347,8 +347,9 @@ export class World {
     const [ia, ib] = this.pair(a, b);
     const p = this.particles;
     const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
-    const length = options.length === undefined ? current : nonNegative('length', options.length);
-    const minLength = options.minLength === undefined ? length : nonNegative('minLength', options.minLength);
+    const length = options.length === undefined ? current : coordinate('length', nonNegative('length', options.length));
+    const minLength = options.minLength === undefined ? length : coordinate('minLength', nonNegative('minLength', options.minLength));
+    // An upper bound moves nothing (a particle only ever reaches it from within): any, as Infinity is.
     const maxLength = options.maxLength === undefined ? length : nonNegativeOrInfinity('maxLength', options.maxLength);
     if (minLength > maxLength) throw new RangeError(`minLength (${minLength}) must be <= maxLength (${maxLength})`);
     const compliance = nonNegative('compliance', options.compliance ?? 0);
@@ -386,7 +387,7 @@ export class World {
     if (options == null) throw new TypeError('spring options {stiffness} are required');
     const p = this.particles;
     const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
-    const restLength = options.length === undefined ? current : nonNegative('length', options.length);
+    const restLength = options.length === undefined ? current : coordinate('length', nonNegative('length', options.length));
     const stiffness = nonNegative('stiffness', options.stiffness);
     const damping = nonNegative('damping', options.damping ?? 0);
     return this.added(this.ctx.constraints.add(this.springs, { a: ia, b: ib, restLength, stiffness, damping }));
@@ -397,8 +398,8 @@ export class World {
     const i = this.particleIndex(particle);
     const p = this.particles;
     if (p.flags[i] & ParticleFlag.Pinned) throw new RangeError(`particle ${particle} is already rigidly pinned`);
-    const tx = options.x === undefined ? p.x[i] : finite('x', options.x);
-    const ty = options.y === undefined ? p.y[i] : finite('y', options.y);
+    const tx = options.x === undefined ? p.x[i] : coordinate('x', options.x);
+    const ty = options.y === undefined ? p.y[i] : coordinate('y', options.y);
     const compliance = nonNegative('compliance', options.compliance ?? 0);
     const rigid = compliance === 0;
     // A rigid pin makes the particle kinematic: its inverse mass is parked in the pin while the pin lives.
@@ -417,8 +418,8 @@ export class World {
   setPinTarget(pin: Handle, x: number, y: number): void {
     const row = this.ctx.constraints.rowOf(pin, Kind.Pin, 'pin');
     wakeParticle(this.ctx, this.pins.p[row]);
-    this.pins.tx[row] = finite('x', x);
-    this.pins.ty[row] = finite('y', y);
+    this.pins.tx[row] = coordinate('x', x);
+    this.pins.ty[row] = coordinate('y', y);
   }
 
   /** Keeps the area of the closed loop of particles (in order) at pressure × its current area. */
@@ -626,7 +627,7 @@ export class World {
   grab(x: number, y: number, options: GrabOptions = {}): Handle | null {
     this.query(['x', 'y'], x, y);
     const stiffness = positive('stiffness', options.stiffness ?? 2000);
-    const pickRadius = nonNegative('pickRadius', options.pickRadius ?? 0.5);
+    const pickRadius = coordinate('pickRadius', nonNegative('pickRadius', options.pickRadius ?? 0.5));
     const g = pickGrabPoint(this.ctx, x, y, pickRadius);
     if (!g) return null;
     wakeParticle(this.ctx, g.p0);
@@ -637,8 +638,8 @@ export class World {
   /** Moves a grab's target (the pointer). */
   moveGrab(grab: Handle, x: number, y: number): void {
     const row = this.ctx.constraints.rowOf(grab, Kind.Grab, 'grab');
-    this.grabs.tx[row] = finite('x', x);
-    this.grabs.ty[row] = finite('y', y);
+    this.grabs.tx[row] = coordinate('x', x);
+    this.grabs.ty[row] = coordinate('y', y);
     wakeParticle(this.ctx, this.grabs.p0[row]);
   }
 
@@ -671,7 +672,7 @@ export class World {
 
   /** Checks a query's numbers (by name), then brings the bookkeeping and rigid shapes to where the bodies are now. */
   private query(names: readonly string[], ...values: number[]): void {
-    values.forEach((v, k) => finite(names[k], v));
+    values.forEach((v, k) => coordinate(names[k], v));
     ensureTopology(this.ctx);
     if (this.ctx.rigidShapes.polygonCount > 0) this.ctx.rigidShapes.updateWorld(this.particles);
   }

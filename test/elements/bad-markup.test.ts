@@ -49,6 +49,40 @@ describe('<physics-scene> bad markup', () => {
     expect(errors.length).to.equal(4);
   });
 
+  it('reports coordinates beyond ±1e9 (x="1e12" on a box, a pin and a spring\'s length, a polygon point); the rest runs', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="10" height="10" gravity="0 10"',
+      `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>
+       <physics-box id="far" x="1e12" y="2" width="1" height="1"></physics-box>
+       <physics-pin body="box" x="-1e12" y="2"></physics-pin>
+       <physics-spring a="box" b="far" length="1e12"></physics-spring>
+       <physics-polygon x="3" y="3" points="0,0 1e12,0 0,1"></physics-polygon>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    const seen = errors.map((e) => [e.element.localName, e.attribute, e.value]);
+    expect(seen).to.have.deep.members([
+      ['physics-box', 'x', '1e12'],
+      ['physics-pin', 'x', '-1e12'],
+      ['physics-spring', 'length', '1e12'],
+      ['physics-polygon', 'points', '0,0 1e12,0 0,1'],
+    ]);
+    expect(errors.every((e) => e.message.includes('within ±1e9')), errors.map((e) => e.message).join('; ')).to.equal(true);
+    for (const [tag, attribute, value] of seen) {
+      expect(warnings.filter((w) => w.includes(`<${tag}`) && w.includes(`${attribute}="${value}"`)).length, `one warning for <${tag}> ${attribute}="${value}"`).to.equal(1);
+    }
+    expect(warnings.length).to.equal(4);
+    // The far box falls back to x 0 (at the left wall, which holds it within the view) and is simulated; the spring
+    // takes its default rest length (the bodies' distance); the pin and the polygon are left out. Both boxes fall.
+    const d = await scene.diagnostics();
+    expect([d.bodyCount, d.linkCount]).to.deep.equal([2, 1]);
+    const [box, far] = ['#box', '#far'].map((s) => scene!.querySelector<PhysicsBoxElement>(s)!);
+    expect(far.x).to.be.within(0, 1);
+    await waitFor(() => box.y > 2.5 && far.y > 2.5, 'both boxes to fall');
+  });
+
   it('an attribute value never reaches the DOM as markup', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));

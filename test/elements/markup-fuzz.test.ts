@@ -147,8 +147,10 @@ function rangeOf(description: string): Partial<Attr> {
 
 type Verdict = 'invalid' | 'valid' | 'either';
 
-/** Positions and angles: any finite number is fine. */
+/** Positions and angles: any finite number is fine (positions within ±1e9, as every coordinate). */
 const UNBOUNDED = new Set(['x', 'y', 'x1', 'y1', 'x2', 'y2', 'angle']);
+/** Positions, lengths and sizes in world units: documented (docs/embedding.md, Bad markup) as within ±1e9. */
+const COORDINATES = new Set(['x', 'y', 'x1', 'y1', 'x2', 'y2', 'width', 'height', 'radius', 'spacing', 'length', 'lower']);
 
 function listOfNumbers(value: string): number[] | null {
   const parts = value.trim().split(/[\s,]+/).filter(Boolean);
@@ -170,6 +172,7 @@ function verdict(attr: Attr, value: string): Verdict {
     if (attr.min !== undefined && (attr.minExclusive ? !(n > attr.min) : n < attr.min)) return 'invalid';
     if (attr.max !== undefined && n > attr.max) return 'invalid';
     if (attr.integer && !Number.isInteger(n)) return 'invalid';
+    if (COORDINATES.has(attr.name) && Math.abs(n) > 1e9) return 'invalid';
     // Documented on both sides, or unbounded by nature: a valid number must be taken without complaint.
     if ((attr.min !== undefined && attr.max !== undefined) || UNBOUNDED.has(attr.name)) return 'valid';
     // One side documented: a moderate value on the allowed side must be taken, unless the bound depends on the scene.

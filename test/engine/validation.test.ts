@@ -1,5 +1,5 @@
 import { expect } from 'chai';
-import { World, createCloth, createRope, createPolygon } from '../../src/engine/index.js';
+import { World, createBox, createCircle, createCloth, createPolygon, createRagdoll, createRope, createSoftBody } from '../../src/engine/index.js';
 import { allFinite } from './helpers.js';
 
 function throwsNaming(fn: () => unknown, type: typeof RangeError | typeof TypeError, ...words: string[]) {
@@ -63,6 +63,82 @@ describe('bad input', () => {
     expect(world.hasParticle(c)).to.equal(false);
     expect(world.hasParticle(d)).to.equal(true);
     throwsNaming(() => world.removeConstraint(999), RangeError, 'constraint');
+  });
+
+  it('coordinates beyond ±1e9 (here 1e12) throw a RangeError naming the argument and value, at every entry point; the world is left as it was', () => {
+    const w = new World({ gravity: { x: 0, y: 0 } });
+    const p = w.addParticle({ x: 0, y: 0 });
+    const q = w.addParticle({ x: 1, y: 0 });
+    const pin = w.addPin(q, { compliance: 0.1 });
+    const grab = w.grab(0, 0)!;
+    // What was there stays as it was (a builder that failed half-way leaves nothing behind, though the handles it took
+    // and gave back are spent: the state hash, which covers them, moves on).
+    const state = () => ({ p: w.getPosition(p), q: w.getPosition(q), particles: w.particleCount, constraints: w.constraintCount, bodies: [...w.bodies()].length });
+    const before = state();
+    const far = 1e12;
+    const cases: [() => unknown, string][] = [
+      [() => w.addParticle({ x: far, y: 0 }), 'x'],
+      [() => w.addParticle({ x: 0, y: -far }), 'y'],
+      [() => w.addParticle({ x: 0, y: 0, radius: far }), 'radius'],
+      [() => w.setPosition(p, far, 0), 'x'],
+      [() => w.setPosition(p, 0, -far), 'y'],
+      [() => w.addDistance(p, q, { length: far }), 'length'],
+      [() => w.addDistance(p, q, { minLength: far, maxLength: Infinity }), 'minLength'],
+      [() => w.addSpring(p, q, { length: far, stiffness: 1 }), 'length'],
+      [() => w.addPin(p, { x: far }), 'x'],
+      [() => w.addPin(p, { y: -far }), 'y'],
+      [() => w.setPinTarget(pin, far, 0), 'x'],
+      [() => w.grab(far, 0), 'x'],
+      [() => w.grab(0, 0, { pickRadius: far }), 'pickRadius'],
+      [() => w.moveGrab(grab, 0, far), 'y'],
+      [() => w.bodiesAtPoint(0, -far), 'y'],
+      [() => w.bodiesInBox(-far, 0, 1, 1), 'minX'],
+      [() => w.rayCast(0, 0, far, 0), 'x1'],
+      [() => w.setBounds({ minX: -far, minY: 0, maxX: 1, maxY: 1 }), 'bounds.minX'],
+      [() => new World({ bounds: { minX: 0, minY: 0, maxX: 1, maxY: far } }), 'bounds.maxY'],
+      [() => createRope(w, { from: { x: far, y: 0 }, to: { x: 1, y: 0 } }), 'from.x'],
+      [() => createRope(w, { from: { x: 0, y: 0 }, to: { x: 1, y: far } }), 'to.y'],
+      [() => createRope(w, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 }, radius: far }), 'radius'],
+      [() => createCloth(w, { origin: { x: 0, y: -far }, columns: 3, rows: 3, spacing: 1 }), 'origin.y'],
+      [() => createCloth(w, { origin: { x: 0, y: 0 }, columns: 3, rows: 3, spacing: far }), 'spacing'],
+      [() => createSoftBody(w, { center: { x: far, y: 0 }, radius: 1 }), 'center.x'],
+      [() => createSoftBody(w, { center: { x: 0, y: 0 }, radius: far }), 'radius'],
+      [() => createCircle(w, { x: far, y: 0, radius: 1 }), 'x'],
+      [() => createCircle(w, { x: 0, y: 0, radius: far, model: 'particles' }), 'radius'],
+      [() => createBox(w, { x: 0, y: far, width: 1, height: 1 }), 'y'],
+      [() => createBox(w, { x: 0, y: 0, width: far, height: 1 }), 'width'],
+      [() => createBox(w, { x: 0, y: 0, width: 1, height: far, model: 'particles' }), 'height'],
+      [() => createPolygon(w, { points: [{ x: 0, y: 0 }, { x: far, y: 0 }, { x: 0, y: 1 }] }), 'points[1].x'],
+      [() => createPolygon(w, { x: -far, points: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }], model: 'particles' }), 'x'],
+      [() => createRagdoll(w, { x: far, y: 0 }), 'x'],
+      [() => createRagdoll(w, { x: 0, y: 0, height: far }), 'height'],
+    ];
+    for (const [call, name] of cases) {
+      throwsNaming(call, RangeError, `${name} must be within ±1e9`);
+      let message = '';
+      try {
+        call();
+      } catch (e) {
+        message = (e as Error).message;
+      }
+      expect(message, message).to.match(/got -?[0-9]+$/);
+    }
+    // Each number within the limit, the cloth's far corner beyond it.
+    throwsNaming(() => createCloth(w, { origin: { x: 9e8, y: 0 }, columns: 3, rows: 3, spacing: 1e8 }), RangeError, 'spacing must keep the cloth within ±1e9', '(1100000000, 200000000)', 'got 100000000');
+    throwsNaming(() => w.setPosition(p, far, 0), RangeError, 'x', '1000000000000');
+    throwsNaming(() => w.setPosition(p, 0, -far), RangeError, 'y', '-1000000000000');
+    expect(state()).to.deep.equal(before);
+    // ±1e9 itself is taken.
+    const edge = new World({ bounds: null });
+    const r = createRope(edge, { from: { x: 1e9 - 4, y: -1e9 }, to: { x: 1e9, y: -1e9 }, segments: 4 });
+    // An upper bound moves nothing: any is taken, as Infinity is.
+    edge.addDistance(r.particles[0], r.particles[4], { minLength: 0, maxLength: 1e12 });
+    expect(edge.bodiesAtPoint(-1e9, 1e9)).to.deep.equal([]);
+    for (let k = 0; k < 60; k++) edge.step();
+    expect(allFinite(edge)).to.equal(true);
+    // The rope hangs from its pinned start: its free end fell (y grows downwards) and stays within its length of the pin.
+    const end = edge.getPosition(r.particles[4]);
+    expect(end.y + 1e9).to.be.within(1, 4.1);
   });
 
   it('a failed builder leaves nothing behind, and the world keeps running', () => {

@@ -1,5 +1,5 @@
 import type { World } from '../world.js';
-import { finite, positive } from '../validate.js';
+import { coordinate, positive } from '../validate.js';
 import { colliderOf, transactional, type Built } from './common.js';
 import { createRigid, modelOf, type RigidOptions } from './rigid.js';
 
@@ -13,11 +13,11 @@ export interface CircleOptions extends RigidOptions {
 
 /** A ball: a rigid disc that spins and rolls, or (model 'particles') one particle colliding as a circle. */
 export function createCircle(world: World, o: CircleOptions): Built {
-  const radius = positive('radius', o?.radius);
-  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: finite('x', o.x), y: finite('y', o.y) }, undefined, radius);
+  const radius = coordinate('radius', positive('radius', o?.radius));
+  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, undefined, radius);
   const mass = o.static ? Infinity : positive('mass', o.mass ?? Math.PI * radius * radius);
-  const x = finite('x', o.x);
-  const y = finite('y', o.y);
+  const x = coordinate('x', o.x);
+  const y = coordinate('y', o.y);
   return transactional(world, (particles) => {
     particles.push(world.addParticle({ x, y, radius, mass, vx: o.vx ?? 0, vy: o.vy ?? 0 }));
     return world.addBody('particle', particles, [], colliderOf(o, 'particles', true));

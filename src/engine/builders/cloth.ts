@@ -1,5 +1,5 @@
 import type { World } from '../world.js';
-import { integer, nonNegative, positive } from '../validate.js';
+import { coordinate, integer, MAX_WORLD_COORDINATE, nonNegative, positive } from '../validate.js';
 import { addTethers, colliderOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 /** Which particles of the top row are pinned: every one, the two corners, none, or a list of column indices. */
@@ -35,14 +35,18 @@ export function createCloth(world: World, o: ClothOptions): Built {
   const origin = point('origin', o?.origin);
   const columns = integer('columns', o.columns, 2, 4096);
   const rows = integer('rows', o.rows, 2, 4096);
-  const spacing = positive('spacing', o.spacing);
+  const spacing = coordinate('spacing', positive('spacing', o.spacing));
   const each = massEach('mass', o.mass, columns * rows, (columns * rows) / 100);
   const structural = nonNegative('structural', o.structural ?? 0);
   const shear = o.shear == null ? null : nonNegative('shear', o.shear);
   const bend = o.bend == null ? null : nonNegative('bend', o.bend);
   const pinned = pinnedColumns(o.pins ?? 'top', columns);
-  const radius = nonNegative('radius', o.radius ?? 0);
+  const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));
   const breakStrain = o.tear === undefined ? undefined : positive('tear', o.tear);
+  const far = { x: origin.x + (columns - 1) * spacing, y: origin.y + (rows - 1) * spacing };
+  if (Math.max(Math.abs(far.x), Math.abs(far.y)) > MAX_WORLD_COORDINATE) {
+    throw new RangeError(`spacing must keep the cloth within ±1e9 (its far corner would be at (${far.x}, ${far.y})), got ${spacing}`);
+  }
   return transactional(world, (particles, constraints) => {
     for (let r = 0; r < rows; r++) {
       for (let c = 0; c < columns; c++) {

@@ -1,5 +1,5 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { finite, nonNegative, positive } from '../validate.js';
+import { coordinate, nonNegative, positive } from '../validate.js';
 
 /** What every builder returns: the body and the handles of what it made. */
 export interface Built {
@@ -11,7 +11,7 @@ export interface Built {
 export function point(name: string, p: unknown): Vec2 {
   if (p == null || typeof p !== 'object') throw new TypeError(`${name} must be a point {x, y}, got ${String(p)}`);
   const v = p as Vec2;
-  return { x: finite(`${name}.x`, v.x), y: finite(`${name}.y`, v.y) };
+  return { x: coordinate(`${name}.x`, v.x), y: coordinate(`${name}.y`, v.y) };
 }
 
 /** How a box, polygon or circle is made: a true rigid body, or a frame of particles and sticks (the thesis' model). */

@@ -1,5 +1,5 @@
 import type { Handle, World } from '../world.js';
-import { finite, positive } from '../validate.js';
+import { coordinate, positive } from '../validate.js';
 import { colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RagdollOptions extends BodyOptions {
@@ -58,9 +58,9 @@ const LIMITS: [number, number, number, number, number][] = [
  * at the neck, shoulders, elbows, hips and knees.
  */
 export function createRagdoll(world: World, o: RagdollOptions): Built {
-  const x = finite('x', o?.x);
-  const y = finite('y', o.y);
-  const height = positive('height', o.height ?? RAGDOLL_HEIGHT);
+  const x = coordinate('x', o?.x);
+  const y = coordinate('y', o.y);
+  const height = coordinate('height', positive('height', o.height ?? RAGDOLL_HEIGHT));
   const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70);
   const compliance = complianceOf('jointCompliance', o.jointCompliance);
   return transactional(world, (particles, constraints) => {

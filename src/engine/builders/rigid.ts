@@ -1,5 +1,5 @@
 import type { World } from '../world.js';
-import { finite, oneOf, positive } from '../validate.js';
+import { coordinate, finite, oneOf, positive } from '../validate.js';
 import { BODY_MODELS, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
 
@@ -87,8 +87,8 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   if (shoelace(local) < 0) local = local.reverse();
   const area = shoelace(local);
   if (!(area > 0)) throw new RangeError(`points must enclose a non-zero area, got ${JSON.stringify(o.points)}`);
-  const ox = finite('x', o.x ?? 0);
-  const oy = finite('y', o.y ?? 0);
+  const ox = coordinate('x', o.x ?? 0);
+  const oy = coordinate('y', o.y ?? 0);
   const angle = finite('angle', o.angle ?? 0);
   const each = o.static ? Infinity : massEach('mass', o.mass, local.length, area);
   const compliance = complianceOf('compliance', o.compliance);
@@ -112,9 +112,9 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
 
 /** A box centred on (x, y): a rigid body, or (model 'particles') 4 corner particles, 4 edges and 2 diagonals. */
 export function createBox(world: World, o: BoxOptions): Built {
-  const w = positive('width', o?.width) / 2;
-  const h = positive('height', o.height) / 2;
-  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: finite('x', o.x), y: finite('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);
+  const w = coordinate('width', positive('width', o?.width)) / 2;
+  const h = coordinate('height', positive('height', o.height)) / 2;
+  if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);
   // The fan gives one diagonal; the second keeps the frame square under large loads as well.
   return createFrame(
     world,

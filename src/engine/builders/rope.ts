@@ -1,5 +1,5 @@
 import type { World } from '../world.js';
-import { integer, nonNegative } from '../validate.js';
+import { coordinate, integer, nonNegative } from '../validate.js';
 import { addTethers, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RopeOptions extends BodyOptions {
@@ -29,7 +29,7 @@ export function createRope(world: World, o: RopeOptions): Built {
   const each = massEach('mass', o.mass, segments + 1, 1);
   const slack = nonNegative('slack', o.slack ?? 1);
   const compliance = complianceOf('compliance', o.compliance);
-  const radius = nonNegative('radius', o.radius ?? 0);
+  const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));
   const link = (Math.hypot(to.x - from.x, to.y - from.y) / segments) * slack;
   return transactional(world, (particles, constraints) => {
     for (let k = 0; k <= segments; k++) {

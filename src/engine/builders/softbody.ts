@@ -1,5 +1,5 @@
 import type { World } from '../world.js';
-import { integer, nonNegative, oneOf, positive } from '../validate.js';
+import { coordinate, integer, nonNegative, oneOf, positive } from '../validate.js';
 import { colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface SoftBodyOptions extends BodyOptions {
@@ -27,7 +27,7 @@ export interface SoftBodyOptions extends BodyOptions {
 /** A deformable ring (seed 2.3/2.4). */
 export function createSoftBody(world: World, o: SoftBodyOptions): Built {
   const c = point('center', o?.center);
-  const radius = positive('radius', o.radius);
+  const radius = coordinate('radius', positive('radius', o.radius));
   const segments = integer('segments', o.segments ?? 16, 3, 4096);
   const model = oneOf('model', o.model ?? 'pressure', ['pressure', 'springs'] as const);
   const each = o.static ? Infinity : massEach('mass', o.mass, segments, Math.PI * radius * radius);

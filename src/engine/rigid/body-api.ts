@@ -6,7 +6,7 @@ import { positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
-import { finite, oneOf } from '../validate.js';
+import { coordinate, finite, oneOf } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
 import type { JointSide } from './joint-setup.js';
 import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
@@ -25,8 +25,8 @@ export function rigidBodyPlan(o: RigidBodyOptions): {
     source: withDensity(shape, density),
     type,
     collider: resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3),
-    x: finite('x', o.x),
-    y: finite('y', o.y),
+    x: coordinate('x', o.x),
+    y: coordinate('y', o.y),
     angle: finite('angle', o.angle ?? 0),
     vx: finite('vx', o.vx ?? 0),
     vy: finite('vy', o.vy ?? 0),
@@ -53,7 +53,7 @@ export function bodyPose(ctx: StepContext, body: Handle): Pose {
 
 export function setBodyPose(ctx: StepContext, body: Handle, x: number, y: number, angle: number): void {
   const r = rigidOf(ctx, body);
-  setPose(ctx.particles, r.i, r.source, finite('x', x), finite('y', y), finite('angle', angle));
+  setPose(ctx.particles, r.i, r.source, coordinate('x', x), coordinate('y', y), finite('angle', angle));
   wake(ctx, r.slot);
 }
 
@@ -82,7 +82,7 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const p = ctx.particles;
   const names = impulse ? ['ix', 'iy'] : ['fx', 'fy'];
   const [jx, jy] = [finite(names[0], fx), finite(names[1], fy)];
-  const [px, py] = [x === undefined ? p.x[r.i] : finite('x', x), y === undefined ? p.y[r.i] : finite('y', y)];
+  const [px, py] = [x === undefined ? p.x[r.i] : coordinate('x', x), y === undefined ? p.y[r.i] : coordinate('y', y)];
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);

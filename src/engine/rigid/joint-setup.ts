@@ -2,7 +2,7 @@
 // Setup-time code: it checks every option and names the one at fault.
 import type { ParticleStore } from '../particles.js';
 import type { JointOptions, Vec2 } from '../options.js';
-import { finite, nonNegative, oneOf, positive } from '../validate.js';
+import { coordinate, finite, nonNegative, oneOf, positive } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
 import { JointKind } from './joints.js';
 
@@ -16,10 +16,11 @@ export interface JointSide {
 /** The values of a Joints row. */
 export type JointRow = Record<'kind' | 'a' | 'b' | 'rAx' | 'rAy' | 'rBx' | 'rBy' | 'compliance' | 'damping' | 'refAngle' | 'lower' | 'upper' | 'limit' | 'motor' | 'motorSpeed' | 'maxMotorTorque' | 'axisX' | 'axisY' | 'bodyA' | 'bodyB' | 'collide', number>;
 
-function vec(name: string, v: unknown): Vec2 {
+/** A point {x, y}: an anchor (`check` coordinate: within ±1e9) or a direction (finite). */
+function vec(name: string, v: unknown, check: (name: string, value: unknown) => number = coordinate): Vec2 {
   if (v == null || typeof v !== 'object') throw new TypeError(`${name} must be a point {x, y}, got ${String(v)}`);
   const p = v as Vec2;
-  return { x: finite(`${name}.x`, p.x), y: finite(`${name}.y`, p.y) };
+  return { x: check(`${name}.x`, p.x), y: check(`${name}.y`, p.y) };
 }
 
 /** A side's anchor in its own frame: a rigid body's point turned back; a particle's is itself; the world's is the point. */
@@ -56,8 +57,9 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
     const ra = local(p, A, at);
     const rb = local(p, B, bt);
     Object.assign(row, { kind: JointKind.Distance, rAx: ra.x, rAy: ra.y, rBx: rb.x, rBy: rb.y });
-    const length = o.length === undefined ? Math.sqrt((bt.x - at.x) ** 2 + (bt.y - at.y) ** 2) : nonNegative('length', o.length);
-    row.lower = o.lower === undefined ? length : nonNegative('lower', o.lower);
+    const length = o.length === undefined ? Math.sqrt((bt.x - at.x) ** 2 + (bt.y - at.y) ** 2) : coordinate('length', nonNegative('length', o.length));
+    row.lower = o.lower === undefined ? length : coordinate('lower', nonNegative('lower', o.lower));
+    // An upper bound moves nothing (the bodies only ever reach it from within): any, as Infinity is.
     row.upper = o.upper === undefined ? length : o.upper === Infinity ? Infinity : nonNegative('upper', o.upper);
     if (row.lower > row.upper) throw new RangeError(`lower (${row.lower}) must be <= upper (${row.upper})`);
     if (type === 'spring') {
@@ -75,7 +77,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   }
   if (type === 'prismatic') {
     row.kind = JointKind.Prismatic;
-    const axis = o.axis === undefined ? { x: 1, y: 0 } : vec('axis', o.axis);
+    const axis = o.axis === undefined ? { x: 1, y: 0 } : vec('axis', o.axis, finite);
     const len = Math.sqrt(axis.x * axis.x + axis.y * axis.y);
     if (!(len > 0)) throw new RangeError(`axis must be a non-zero direction, got ${JSON.stringify(o.axis)}`);
     // The axis in A's frame (it turns with A).
@@ -96,7 +98,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   return row;
 }
 
-/** Both limits given: the joint is limited to [lower, upper]. */
+/** Both limits given: the joint is limited to [lower, upper] (bounds only: they move nothing, so any finite value). */
 function limits(row: JointRow, lower: number | undefined, upper: number | undefined, lowerName: string, upperName: string): void {
   if (lower === undefined && upper === undefined) return;
   const lo = lower === undefined ? -Infinity : lower === -Infinity ? -Infinity : finite(lowerName, lower);

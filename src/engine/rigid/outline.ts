@@ -1,7 +1,7 @@
 // From an outline or a radius to what a rigid body needs: its shape in the body's frame (centre of mass at the
 // origin) and its mass properties. Setup-time code (it allocates).
 import { decompose } from '../collision/decompose.js';
-import { finite, positive } from '../validate.js';
+import { coordinate, positive } from '../validate.js';
 import { circleMass, combineMass, polygonMass, type MassProperties } from './mass.js';
 import { cleanOutline, RigidShapeKind, type RigidShapeSource } from './shapes.js';
 
@@ -57,8 +57,8 @@ function outlinePieces(points: readonly { x: number; y: number }[], name: string
   if (!Array.isArray(points) || points.length < 3) {
     throw new RangeError(`${name} must be a list of at least 3 points, got ${Array.isArray(points) ? points.length : String(points)}`);
   }
-  const xs = points.map((p, k) => finite(`${name}[${k}].x`, p?.x));
-  const ys = points.map((p, k) => finite(`${name}[${k}].y`, p?.y));
+  const xs = points.map((p, k) => coordinate(`${name}[${k}].x`, p?.x));
+  const ys = points.map((p, k) => coordinate(`${name}[${k}].y`, p?.y));
   const clean = cleanOutline(xs, ys);
   const unit = polygonMass(clean.xs, clean.ys, 1);
   if (!(unit.area > 0) || !Number.isFinite(unit.area) || !Number.isFinite(unit.inertia)) {
@@ -77,7 +77,7 @@ function outlinePieces(points: readonly { x: number; y: number }[], name: string
 
 /** A disc's shape: radius r about the centre of mass. */
 export function circleShape(radius: number): RigidShape {
-  const r = positive('radius', radius);
+  const r = coordinate('radius', positive('radius', radius));
   return { source: sourceOf(RigidShapeKind.Circle, [], r, circleMass(0, 0, r, 1)) };
 }
 
