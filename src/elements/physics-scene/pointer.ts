@@ -10,8 +10,8 @@
 //
 // A grab is the engine's answer to the press, and it comes later (a worker round trip; longer under load). Until it
 // comes, the pointer's moves are recorded with their times; once it comes, the grab replays them at the pace they were
-// made, behind the pointer by the time the answer took (at most MAX_LAG), and a lift is replayed as a release at its
-// place in that replay. So a quick flick lifted before the answer throws the body as a flick whose grab was there from
+// made, behind the pointer by the time the answer took, and a lift is replayed as a release at its place in that
+// replay. At most the last MAX_LAG of the drag is replayed (the grab first jumps to where the pointer was then). So a quick flick lifted before the answer throws the body as a flick whose grab was there from
 // the start would (the release is the normal one: the body keeps the velocity the moving grab gave it); a tap, lifted
 // without moving, releases at once (no throw). While the pointer is held, the replay ends as soon as it has caught up
 // (the pointer rested for the lag): from then on moves go straight to the grab.
@@ -22,8 +22,9 @@ import type { Engine } from './session.js';
 /** How often a replay sends the pointer's next recorded position (ms). */
 const REPLAY_TICK = 8;
 /**
- * The most a replay lags the pointer (ms). An answer later than this skips the start of the drag (the grab jumps to
- * where the pointer was this long ago), so a long drag under load does not trail its pointer by seconds.
+ * How much of a drag a late answer replays (ms): the last this long before the answer (pointer held) or before the
+ * lift. Earlier moves are skipped (the grab jumps to where the pointer was then), so a long drag under load does not
+ * trail its pointer by seconds, while a flick lifted before the answer is replayed to its end, however late the answer.
  */
 const MAX_LAG = 250;
 
@@ -200,7 +201,8 @@ export class PointerDragController implements ReactiveController {
       if (d.liftedAt !== null) this.finish(d);
       return;
     }
-    d.lag = Math.min(this.clock.now() - d.at, MAX_LAG);
+    const now = this.clock.now();
+    d.lag = now - Math.max(d.at, (d.liftedAt ?? now) - MAX_LAG);
     d.timer = this.clock.setInterval(() => this.replay(d), REPLAY_TICK);
     this.replay(d);
   }

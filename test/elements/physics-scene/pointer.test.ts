@@ -162,24 +162,55 @@ describe('PointerDragController', () => {
     expect(r.drag.grab).to.equal(null);
   });
 
-  it('an answer later than 250 ms skips the start of the drag: the grab jumps to where the pointer was 250 ms before', async () => {
+  it('a late answer replays at most the last 250 ms of the drag: held, the grab jumps to where the pointer was 250 ms before; lifted, to 250 ms before the lift', async () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    /** Pressed at x 1, moved 1 unit every 100 ms to x 10 at 900 ms; answered at 1000 ms (lifted at 900 ms if `lift`). */
+    const drag = async (lift: boolean) => {
+      const answer = deferred<number | null>();
+      r.engine.answers.grab = () => answer.promise;
+      const t0 = r.clock.time;
+      host!.dispatchEvent(at('pointerdown', 10, 10));
+      for (let k = 2; k <= 10; k++) {
+        r.clock.advance(100);
+        host!.dispatchEvent(at('pointermove', 10 * k, 10));
+      }
+      if (lift) host!.dispatchEvent(at('pointerup', 100, 10));
+      r.clock.advance(100);
+      answer.resolve(2);
+      await settle();
+      r.clock.advance(400);
+      if (!lift) host!.dispatchEvent(at('pointerup', 100, 10));
+      const log = r.log.map(([t, ...rest]) => [(t as number) - t0, ...rest]);
+      r.log.length = 0;
+      return log;
+    };
+    // Held: 250 ms behind: x 8 (moved at 700 ms) at once, then x 9 and x 10 100 ms apart; let go when lifted.
+    expect(await drag(false)).to.deep.equal([[1000, 'move', 8, 1], [1056, 'move', 9, 1], [1152, 'move', 10, 1], [1400, 'release']]);
+    // Lifted at 900 ms: the 250 ms before the lift, 350 ms behind: x 7 (600 ms) at once, x 8, 9, 10, then the release.
+    expect(await drag(true)).to.deep.equal([[1000, 'move', 7, 1], [1056, 'move', 8, 1], [1152, 'move', 9, 1], [1256, 'move', 10, 1], [1256, 'release']]);
+    expect(r.clock.pending).to.equal(0);
+  });
+
+  it('a quick flick answered 400 ms late (after the lift) is replayed whole, 400 ms behind', async () => {
     const r = rig();
     host = r.host;
     document.body.append(host);
     const answer = deferred<number | null>();
     r.engine.answers.grab = () => answer.promise;
     host.dispatchEvent(at('pointerdown', 10, 10));
-    for (let k = 2; k <= 10; k++) {
-      r.clock.advance(100);
-      host.dispatchEvent(at('pointermove', 10 * k, 10));
+    for (const x of [30, 50, 70]) {
+      r.clock.advance(16);
+      host.dispatchEvent(at('pointermove', x, 10));
     }
-    host.dispatchEvent(at('pointerup', 100, 10));
-    // Answered at 1000 ms: the pointer was at x 8 (moved at 700 ms) 250 ms before.
-    r.clock.advance(100);
-    answer.resolve(2);
+    r.clock.advance(8);
+    host.dispatchEvent(at('pointerup', 70, 10));
+    r.clock.advance(344);
+    answer.resolve(4);
     await settle();
-    r.clock.advance(300);
-    expect(r.log).to.deep.equal([[1000, 'move', 8, 1], [1056, 'move', 9, 1], [1152, 'move', 10, 1], [1152, 'release']]);
+    r.clock.advance(200);
+    expect(r.log).to.deep.equal([[416, 'move', 3, 1], [432, 'move', 5, 1], [448, 'move', 7, 1], [456, 'release']]);
   });
 
   it('a grab answered after the scene left the document, or replaced by a new press, or whose engine went, lets go at once', async () => {
