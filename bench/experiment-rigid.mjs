@@ -5,7 +5,10 @@
 //
 //   node bench/experiment-rigid.mjs                       S3 (2,000 circles) and the 10,000-circle pile, both parts
 //   node bench/experiment-rigid.mjs --scenes s3 --steps 60 --settle 600
-//   node bench/experiment-rigid.mjs --no-quality          only the per-sweep A/B
+//   node bench/experiment-rigid.mjs --no-quality          only the per-sweep A/B (--no-ab: only the whole steps)
+//   node bench/experiment-rigid.mjs --f32                 also an f32x4 sweep over float32 copies of the body columns
+//   node bench/experiment-rigid.mjs --serial              one contact a packet in list order: the JS doubles, exactly
+//   valgrind --tool=callgrind ... node --no-liftoff bench/experiment-rigid.mjs --count js|lanes|none   (see below)
 //
 // Part 1, per-sweep A/B: the engine steps with the JS solver (the reference trajectory); in every substep the position
 // sweep runs three times on the same input (restored in between, untimed): JS over plain columns (today's engine), JS
@@ -14,8 +17,9 @@
 // the JS one, the colouring and layout (once per step) and the unpack a step's end would need.
 // Part 2, quality and whole steps: two worlds from the same start, one with the JS solver (plain columns), one with the
 // lanes doing every sweep and velocity pass (columns in WebAssembly memory, coloured and laid out each step, unpacked
-// at the step's end), stepped alternately: CPU ms per step and the deepest disc overlap (% of a diameter) after N
-// steps.
+// at the step's end), stepped alternately: CPU ms per step and the deepest disc overlap (% of a diameter) every 100
+// steps. What the lanes cover is what disc piles hold: single points between two rows, restitution 0, no shock sweep
+// (checked each step; anything else throws).
 import { build } from 'esbuild';
 import { readFileSync, rmSync } from 'node:fs';
 import { loadavg } from 'node:os';
@@ -33,6 +37,7 @@ const hookPlugin = {
     b.onLoad({ filter: SOLVER }, (args) => {
       let text = readFileSync(args.path, 'utf8');
       for (const name of ['prepareRigidContacts', 'solveRigidContacts', 'solveRigidContactVelocities']) {
+        if (!text.includes(`export function ${name}(`)) throw new Error(`contact-solver.ts no longer exports ${name}(: update the hooks`);
         text = text.replace(`export function ${name}(`, `export function ${name}Js(`);
       }
       text += `
@@ -94,6 +99,9 @@ const PF = PACKET / 8; // f64 words a packet
 const PI = PACKET / 4; // i32 words a packet
 // Field index k: the lane pair at f64 word 2k of the packet (see experiment-rigid.as).
 const F = { nx: 1, ny: 2, rAx: 3, rAy: 4, rBx: 5, rBy: 6, radA: 7, radB: 8, friction: 9, imA: 10, iiA: 11, imB: 12, iiB: 13, allowance: 14, lambdaN: 15, impulseN: 16, impulseT: 17, slip: 18, gap: 19, touched: 20, lAx: 21, lAy: 22, lBx: 23, lBy: 24, rnA: 25, rnB: 26, wn: 27 };
+const PACKET4 = 464; // the f32x4 variant's packet of four points: i32x4 a, i32x4 b, then field k at 16 + 16k
+const P4 = PACKET4 / 4;
+const F32_COLUMNS = ['x', 'y', 'angle', 'qangle', 'rc', 'rs'];
 const STATIC_FIELDS = ['nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction'];
 const STATE_FIELDS = ['allowance', 'lambdaN', 'impulseN', 'impulseT', 'slip', 'gap'];
 const LEVER_FIELDS = ['lAx', 'lAy', 'lBx', 'lBy', 'rnA', 'rnB', 'wn'];
@@ -131,7 +139,11 @@ class Lanes {
   grow(packets) {
     if (packets <= this.packetCapacity) return;
     this.packetCapacity = Math.max(packets, 2 * this.packetCapacity);
-    const need = this.packetBase + this.packetCapacity * PACKET;
+    // The f32x4 variant's region after the packets: float32 copies of the sweep's body columns, then its packets.
+    this.colBytes4 = Math.ceil(((this.rows + 4) * 4) / 16) * 16;
+    this.f32Base = this.packetBase + this.packetCapacity * PACKET;
+    this.packet4Base = this.f32Base + F32_COLUMNS.length * this.colBytes4;
+    const need = this.packet4Base + this.packetCapacity * PACKET4;
     const have = this.memory.buffer.byteLength;
     // Keep the state: copy the columns out before the buffer grows (views of a grown memory are detached).
     const saved = COLUMNS.map((name) => this.p[name].slice());
@@ -147,6 +159,82 @@ class Lanes {
     });
     this.f64 = new Float64Array(buffer);
     this.i32 = new Int32Array(buffer);
+    this.f32 = new Float32Array(buffer);
+    this.address4 = {};
+    F32_COLUMNS.forEach((name, k) => (this.address4[name] = this.f32Base + k * this.colBytes4));
+  }
+
+  /** The f32x4 layout of the same colours (batches padded to multiples of four). */
+  layout4(c) {
+    const n = c.count;
+    if (!this.slot4Of || this.slot4Of.length < n) this.slot4Of = new Int32Array(2 * n);
+    const { sizes, colourOf, f32, i32, slot4Of } = this;
+    const start = new Int32Array(129);
+    for (let k = 0; k < 128; k++) start[k + 1] = start[k] + ((sizes[k] + 3) & ~3);
+    this.packets4 = start[128] >> 2;
+    const cursor = start.slice(0, 128);
+    const base = this.packet4Base / 4;
+    const spare = this.rows * 4;
+    for (let k = 0; k < 128; k++) {
+      for (let s = start[k] + sizes[k]; s < start[k + 1]; s++) {
+        const w = base + (s >> 2) * P4 + (s & 3);
+        i32[w] = spare;
+        i32[w + 4] = spare;
+        for (let field = 1; field <= 27; field++) f32[w + 4 + 4 * field] = 0;
+        f32[w + 4 + 4 * F.allowance] = 1;
+      }
+    }
+    const { invMass, invInertia } = this.p;
+    const { a: A, b: B, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction } = c;
+    for (let i = 0; i < n; i++) {
+      const s = cursor[colourOf[i]]++;
+      slot4Of[i] = s;
+      const w = base + (s >> 2) * P4 + (s & 3);
+      i32[w] = A[i] * 4;
+      i32[w + 4] = B[i] * 4;
+      const v = w + 4;
+      f32[v + 4] = nx[i];
+      f32[v + 8] = ny[i];
+      f32[v + 12] = rAx[i];
+      f32[v + 16] = rAy[i];
+      f32[v + 20] = rBx[i];
+      f32[v + 24] = rBy[i];
+      f32[v + 28] = radA[i];
+      f32[v + 32] = radB[i];
+      f32[v + 36] = friction[i];
+      f32[v + 40] = invMass[A[i]];
+      f32[v + 44] = invInertia[A[i]];
+      f32[v + 48] = invMass[B[i]];
+      f32[v + 52] = invInertia[B[i]];
+    }
+    this.packState4(c);
+  }
+
+  /** The per-substep state into the f32x4 lanes. */
+  packState4(c) {
+    const { f32, i32, slot4Of } = this;
+    const base = this.packet4Base / 4;
+    const cols = STATE_FIELDS.map((name) => [c[name], F[name]]);
+    for (let i = 0, n = c.count; i < n; i++) {
+      const s = slot4Of[i];
+      const v = base + (s >> 2) * P4 + (s & 3) + 4;
+      for (let k = 0; k < cols.length; k++) f32[v + 4 * cols[k][1]] = cols[k][0][i];
+      i32[v + 4 * F.touched] = c.touched[i] ? -1 : 0;
+    }
+  }
+
+  /** The f32x4 sweep: the body columns demoted to float32, swept, x, y and angle promoted back ({demote, sweep, promote} ms). */
+  sweep32() {
+    const e = this.exports;
+    const n = this.rows + 2;
+    let t = performance.now();
+    for (const name of F32_COLUMNS) e.demote(this.address[name], this.address4[name], n);
+    const t1 = performance.now();
+    const a = this.address4;
+    e.sweep32(a.x, a.y, a.angle, a.qangle, a.rc, a.rs, this.packet4Base, this.packets4);
+    const t2 = performance.now();
+    for (const name of ['x', 'y', 'angle']) e.promote(a[name], this.address[name], this.rows);
+    return { demote: t1 - t, sweep: t2 - t1, promote: performance.now() - t2 };
   }
 
   /**
@@ -402,9 +490,10 @@ function perSweep(scene) {
   // Today's engine: the same columns as plain arrays (refreshed from the views before each run, untimed).
   const plain = {};
   for (const name of COLUMNS) plain[name] = new Float64Array(p[name].length);
-  const T = { jsPlain: [], jsViews: [], lanes: [], vJsPlain: [], vJsViews: [], vLanes: [], layout: [], unpack: [], begin: [], beginJs: [], colour: [] };
-  const R = { sweep: [], vel: [] };
-  const diff = { sweep: 0, sweepAngle: 0, vel: 0, velOmega: 0 };
+  const T = { jsPlain: [], jsViews: [], lanes: [], vJsPlain: [], vJsViews: [], vLanes: [], layout: [], unpack: [], begin: [], beginJs: [], colour: [], f32: [], demote: [], promote: [] };
+  const R = { sweep: [], vel: [], f32: [] };
+  const diff = { sweep: 0, sweepAngle: 0, vel: 0, velOmega: 0, f32: 0, f32Angle: 0 };
+  const rF64 = {};
   const stats = { contacts: [], colours: [], batches: [], acting: [] };
   const sBody = {};
   const sC = {};
@@ -423,6 +512,7 @@ function perSweep(scene) {
       lanes.layout(c, SERIAL);
       T.layout.push(performance.now() - t);
       T.colour.push(lanes.colourMs);
+      if (F32) lanes.layout4(c);
       stats.contacts.push(c.count);
       stats.colours.push(lanes.colours[0] + lanes.colours[1]);
       stats.batches.push(lanes.batchSizes());
@@ -477,6 +567,19 @@ function perSweep(scene) {
     lanes.sweep();
     diff.sweep = Math.max(diff.sweep, maxDiff(p, rJs, ['x', 'y'], rows));
     diff.sweepAngle = Math.max(diff.sweepAngle, maxDiff(p, rJs, ['angle'], rows));
+    if (F32) {
+      // The f32x4 variant on the same input: its time, and how far it lands from the f64x2 lanes (same colours).
+      const r64 = save(p, BODY_SWEEP, rows, rF64);
+      load(p, BODY_SWEEP, rows, sBody);
+      lanes.packState4(c);
+      const t32 = lanes.sweep32();
+      T.f32.push(t32.sweep);
+      T.demote.push(t32.demote);
+      T.promote.push(t32.promote);
+      R.f32.push(t32.sweep / T.lanes.at(-1));
+      diff.f32 = Math.max(diff.f32, maxDiff(p, r64, ['x', 'y'], rows));
+      diff.f32Angle = Math.max(diff.f32Angle, maxDiff(p, r64, ['angle'], rows));
+    }
     if (maxDiff(rPlain, rJs, BODY_SWEEP, rows) !== 0) throw new Error('JS over plain columns and over views differ');
     let acting = 0;
     for (let i = 0; i < n; i++) if (rC.lambdaN[i] > 0) acting++;
@@ -551,6 +654,10 @@ function perSweep(scene) {
   const perStepLanes = sub * (median(T.lanes) + median(T.vLanes)) + median(T.layout) + median(T.unpack);
   console.log(`a step's contact solve: JS ${(perStepJs).toFixed(3)} ms, lanes with layout and unpack ${(perStepLanes).toFixed(3)} ms (${(perStepLanes / perStepJs).toFixed(2)}×)`);
   console.log(`largest difference lanes − JS after one sweep: position ${diff.sweep.toExponential(2)}, angle ${diff.sweepAngle.toExponential(2)}; after one velocity pass: velocity ${diff.vel.toExponential(2)}, ω ${diff.velOmega.toExponential(2)}${SERIAL ? ' (--serial: one contact a packet in list order, the JS order: must be 0)' : ''}`);
+  if (F32) {
+    console.log(`f32x4 lanes (same colours, batches padded to fours, ${lanes.packets4} packets): sweep ${us(median(T.f32))}, ${median(R.f32).toFixed(2)}× the f64x2 sweep (${quart(R.f32, 0.25).toFixed(2)}–${quart(R.f32, 0.75).toFixed(2)}); demoting the six body columns ${us(median(T.demote))}, promoting x, y, angle ${us(median(T.promote))} a substep`);
+    console.log(`f32x4 − f64x2 lanes after one sweep: position ${diff.f32.toExponential(2)}, angle ${diff.f32Angle.toExponential(2)}`);
+  }
   return { perStepJs, perStepLanes };
 }
 
@@ -584,6 +691,7 @@ function wholeSteps(scene) {
   };
   const n = Number(arg('--quality', scene.quality));
   const cpu = { js: [], lanes: [] };
+  const checkpoints = [];
   for (let k = 0; k < n; k++) {
     for (const which of k % 2 ? ['lanes', 'js'] : ['js', 'lanes']) {
       useLanes(which === 'lanes');
@@ -593,6 +701,7 @@ function wholeSteps(scene) {
       cpu[which].push((c1.user + c1.system) / 1000);
     }
     if (w.ctx.particles !== pw) throw new Error('the particle store was replaced');
+    if ((k + 1) % 100 === 0) checkpoints.push(`${k + 1}: ${(100 * deepestOverlap(js)).toFixed(2)} / ${(100 * deepestOverlap(w)).toFixed(2)}`);
   }
   useLanes(false);
   const window = Math.min(100, n);
@@ -602,6 +711,7 @@ function wholeSteps(scene) {
   console.log(`\n## ${scene.title}: whole steps, JS solver vs lanes, ${n} steps from the start, alternating (load ${loadavg()[0].toFixed(1)})`);
   console.log(`CPU ms per step, median of the last ${window}: JS ${mJs.toFixed(2)}, lanes ${mLanes.toFixed(2)}, paired ratio ${median(pairs).toFixed(2)}`);
   console.log(`deepest disc overlap after ${n} steps: JS ${(100 * dJs).toFixed(2)}%, lanes ${(100 * dLanes).toFixed(2)}% of a diameter`);
+  console.log(`deepest overlap every 100 steps, JS / lanes (%): ${checkpoints.join(', ')}`);
   let escaped = 0;
   const { x, y } = w.ctx.particles;
   for (let i = 0; i < w.ctx.particles.count; i++) if (w.ctx.particles.invMass[i] > 0 && (!Number.isFinite(x[i]) || y[i] > 0.01)) escaped++;
@@ -649,6 +759,7 @@ function countSweeps(scene, kind) {
 }
 
 const SERIAL = process.argv.includes('--serial');
+const F32 = process.argv.includes('--f32');
 if (process.argv.includes('--count')) {
   countSweeps(SCENES[arg('--scenes', 's3')], arg('--count', 'none'));
   process.exit(0);
@@ -658,6 +769,6 @@ console.log(`experiment-rigid: ${bytes.length} bytes of WebAssembly, Node ${proc
 for (const name of names) {
   const scene = SCENES[name];
   if (!scene) throw new Error(`unknown scene ${name}: ${Object.keys(SCENES).join(', ')}`);
-  perSweep(scene);
+  if (!process.argv.includes('--no-ab')) perSweep(scene);
   if (!process.argv.includes('--no-quality')) wholeSteps(scene);
 }
