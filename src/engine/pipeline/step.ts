@@ -78,9 +78,10 @@ export function substep(ctx: StepContext, h: number): void {
   const sub = ctx.substepReals;
   sub[0] = h;
   sub[1] = damp;
+  // integrateRotation also brings every rigid row's rotation (rc, rs) up to its angle: the last substep's corrections
+  // and this substep's turn (no separate syncRotation pass).
   if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, sub);
-  if (ctx.rigidCount > 0) syncRotation(particles, ctx.rigidRows, ctx.rigidCount, false);
   // The rigid contacts' substep start (no correction yet, allowances shrink) is part of their prepare pass.
   if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles, settings.maxPushSpeed * h);
   placeRigidPins(ctx.constraints.pins, particles);
