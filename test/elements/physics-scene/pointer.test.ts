@@ -45,15 +45,39 @@ function rig() {
 }
 
 describe('PointerDragController', () => {
-  let host: FakeHost | null = null;
+  // The mounted rig's host (mounted()); removed after each test.
+  let host!: FakeHost;
   afterEach(() => host?.remove());
 
-  it('a press grabs at the world point; moves follow once the grab is answered; letting go releases it', async () => {
+  /** A rig whose host is in the document (removed after the test). */
+  function mounted() {
     const r = rig();
     host = r.host;
     document.body.append(host);
+    return r;
+  }
+
+  /** The engine answers the next press when the test resolves what this returns. */
+  function answerLater(r: ReturnType<typeof rig>) {
     const answer = deferred<number | null>();
     r.engine.answers.grab = () => answer.promise;
+    return answer;
+  }
+
+  /** Pressed at x 1 at 0 ms, moved 2 units every 16 ms to x 7, lifted at 56 ms. */
+  function flick(r: ReturnType<typeof rig>) {
+    r.host.dispatchEvent(at('pointerdown', 10, 10));
+    for (const x of [30, 50, 70]) {
+      r.clock.advance(16);
+      r.host.dispatchEvent(at('pointermove', x, 10));
+    }
+    r.clock.advance(8);
+    r.host.dispatchEvent(at('pointerup', 70, 10));
+  }
+
+  it('a press grabs at the world point; moves follow once the grab is answered; letting go releases it', async () => {
+    const r = mounted();
+    const answer = answerLater(r);
     const down = at('pointerdown', 30, 50);
     host.dispatchEvent(down);
     expect(down.defaultPrevented).to.equal(true);
@@ -74,11 +98,8 @@ describe('PointerDragController', () => {
   });
 
   it('a tap let go before the engine answered: the grab is released as soon as it is answered, nothing thrown; so too when the engine changed', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
-    const answer = deferred<number | null>();
-    r.engine.answers.grab = () => answer.promise;
+    const r = mounted();
+    const answer = answerLater(r);
     host.dispatchEvent(at('pointerdown', 10, 10));
     host.dispatchEvent(at('pointerup', 10, 10));
     answer.resolve(4);
@@ -95,19 +116,10 @@ describe('PointerDragController', () => {
   });
 
   it('a flick lifted before the answer: the answer replays its moves at their pace, then releases where it was lifted', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
-    const answer = deferred<number | null>();
-    r.engine.answers.grab = () => answer.promise;
+    const r = mounted();
+    const answer = answerLater(r);
     // Pressed at x 1 at 0 ms, moved 2 units every 16 ms to x 7, lifted at 56 ms; the engine answers at 100 ms.
-    host.dispatchEvent(at('pointerdown', 10, 10));
-    for (const x of [30, 50, 70]) {
-      r.clock.advance(16);
-      host.dispatchEvent(at('pointermove', x, 10));
-    }
-    r.clock.advance(8);
-    host.dispatchEvent(at('pointerup', 70, 10));
+    flick(r);
     r.clock.advance(44);
     answer.resolve(4);
     await settle();
@@ -121,9 +133,7 @@ describe('PointerDragController', () => {
   });
 
   it('answered during the drag: the grab replays the moves it missed until it catches up, then follows at once; a lift while it replays releases in its turn', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     let answer = deferred<number | null>();
     r.engine.answers.grab = () => answer.promise;
     host.dispatchEvent(at('pointerdown', 10, 10));
@@ -163,9 +173,7 @@ describe('PointerDragController', () => {
   });
 
   it('a late answer replays at most the last 250 ms of the drag: held, the grab jumps to where the pointer was 250 ms before; lifted, to 250 ms before the lift', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     /** Pressed at x 1, moved 1 unit every 100 ms to x 10 at 900 ms; answered at 1000 ms (lifted at 900 ms if `lift`). */
     const drag = async (lift: boolean) => {
       const answer = deferred<number | null>();
@@ -194,18 +202,9 @@ describe('PointerDragController', () => {
   });
 
   it('a quick flick answered 400 ms late (after the lift) is replayed whole, 400 ms behind', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
-    const answer = deferred<number | null>();
-    r.engine.answers.grab = () => answer.promise;
-    host.dispatchEvent(at('pointerdown', 10, 10));
-    for (const x of [30, 50, 70]) {
-      r.clock.advance(16);
-      host.dispatchEvent(at('pointermove', x, 10));
-    }
-    r.clock.advance(8);
-    host.dispatchEvent(at('pointerup', 70, 10));
+    const r = mounted();
+    const answer = answerLater(r);
+    flick(r);
     r.clock.advance(344);
     answer.resolve(4);
     await settle();
@@ -214,9 +213,7 @@ describe('PointerDragController', () => {
   });
 
   it('a grab answered after the scene left the document, or replaced by a new press, or whose engine went, lets go at once', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     // Flicked, then removed before the answer: released when answered, nothing replayed.
     let answer = deferred<number | null>();
     r.engine.answers.grab = () => answer.promise;
@@ -284,9 +281,7 @@ describe('PointerDragController', () => {
   it('with a real engine, a flick lifted before the answer throws the body as the same flick answered at once does, 100 ms later', async () => {
     /** A 1 × 1 box at (3, 5), no gravity; a flick from x 3.2 to 6 in 80 ms; the grab answered after `delay` ms. */
     const throwBox = async (delay: number) => {
-      const r = rig();
-      host = r.host;
-      document.body.append(host);
+      const r = mounted();
       const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
       const box = createBox(world, { x: 3, y: 5, width: 1, height: 1 }).body;
       const answer = deferred<number | null>();
@@ -318,9 +313,9 @@ describe('PointerDragController', () => {
     };
     const atOnce = await throwBox(0);
     const late = await throwBox(100);
-    // Thrown to the right (the pointer moved 2.8 units in 80 ms, 35 u/s; the soft grab, still catching up when let go,
-    // throws faster), the grab let go.
-    expect(atOnce.vx).to.be.within(20, 140);
+    // Thrown to the right at about the pointer's speed (2.8 units in 80 ms, 35 u/s; the damped grab throws it at 36.9,
+    // the undamped one, still swinging when let go, threw it at 70.6), the grab let go.
+    expect(atOnce.vx).to.be.within(28, 46);
     expect(atOnce.grabs).to.equal(0);
     expect(late.grabs).to.equal(0);
     // The same throw, 100 ms (6 steps) later.
@@ -330,9 +325,7 @@ describe('PointerDragController', () => {
   });
 
   it('a press on nothing, with the right button, or with no engine makes no drag', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     host.dispatchEvent(at('pointerdown', 10, 10));
     await settle();
     expect(r.drag.grab).to.equal(null);
@@ -347,9 +340,7 @@ describe('PointerDragController', () => {
   });
 
   it('the scene leaving the document lets go (no pointerup will come); cancel() forgets the drag', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     r.engine.answers.grab = () => 6;
     host.dispatchEvent(at('pointerdown', 10, 10));
     await settle();
@@ -366,9 +357,7 @@ describe('PointerDragController', () => {
   });
 
   it('a touch on a body drags it and cancels its touchstart (no scroll); a touch on nothing is left to the page', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     r.engine.answers.grab = () => 5;
     // On a body (x < 50): pointerdown grabs, the touchstart that follows is cancelled.
     const down = at('pointerdown', 30, 20, { pointerType: 'touch', isPrimary: true });
@@ -397,9 +386,7 @@ describe('PointerDragController', () => {
   });
 
   it('a second finger makes no drag (a pinch); a touchstart with no pointerdown before it asks the hit test itself', async () => {
-    const r = rig();
-    host = r.host;
-    document.body.append(host);
+    const r = mounted();
     r.engine.answers.grab = () => 5;
     const second = at('pointerdown', 30, 20, { pointerType: 'touch', isPrimary: false, pointerId: 2 });
     host.dispatchEvent(second);
