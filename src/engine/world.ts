@@ -6,7 +6,7 @@ import { loopArea, type AreaConstraints } from './constraints/area.js';
 import { stretchOf, type DistanceConstraints } from './constraints/distance.js';
 import type { PinConstraints } from './constraints/pin.js';
 import type { Springs } from './constraints/spring.js';
-import type { GrabConstraints } from './constraints/grab.js';
+import { grabLag, type GrabConstraints } from './constraints/grab.js';
 import type { Integrator } from './integrate.js';
 import type { Bounds } from './bounds.js';
 import { hashColumns } from './hash.js';
@@ -632,7 +632,8 @@ export class World {
     if (!g) return null;
     wakeParticle(this.ctx, g.p0);
     const compliance = 1 / (stiffness * g.mass);
-    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, compliance, rx: g.rx, ry: g.ry }));
+    const lag = grabLag(stiffness);
+    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, compliance, rx: g.rx, ry: g.ry, lag }));
   }
 
   /** Moves a grab's target (the pointer). */
