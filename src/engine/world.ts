@@ -633,7 +633,7 @@ export class World {
     wakeParticle(this.ctx, g.p0);
     const compliance = 1 / (stiffness * g.mass);
     const lag = grabLag(stiffness);
-    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, compliance, rx: g.rx, ry: g.ry, lag }));
+    return this.added(this.ctx.constraints.add(this.grabs, { p0: g.p0, p1: g.p1, p2: g.p2, w0: g.w0, w1: g.w1, w2: g.w2, tx: x, ty: y, aimX: x, aimY: y, compliance, rx: g.rx, ry: g.ry, lag }));
   }
 
   /** Moves a grab's target (the pointer). */

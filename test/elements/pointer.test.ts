@@ -19,9 +19,10 @@ describe('<physics-scene> pointer drag', () => {
     };
     // 3.8 units in 20 moves of 2 steps: the pointer moves at 5.7 units/s.
     await steppedDrag(scene, [3.2, 5.1], [7, 5.1], 20, 2);
-    // The crate followed the pointer to the right, held at the pressed point (softly: within a spring's swing of it).
+    // The crate followed the pointer to the right, held at the pressed point (softly: the damped grab trails a moving
+    // pointer by 0.036 s of its motion, 0.2 at 5.7 units/s, and catches up once the pointer rests).
     const atRelease = { x: crate.x, y: crate.y, angle: crate.angle };
-    expect(held().x).to.be.closeTo(7, 0.15);
+    expect(held().x).to.be.closeTo(7, 0.25);
     expect(held().y).to.be.closeTo(5.1, 0.15);
     expect(atRelease.x).to.be.above(6);
     pointerAt(scene, 'pointerup', 7, 5.1);
@@ -61,10 +62,12 @@ describe('<physics-scene> pointer drag', () => {
     await scene.step(10);
     pointerAt(scene, 'pointerup', 6, 2);
     const after = await positions();
-    // The grabbed particle moved by more than a unit (to the pointer, about √2 away; the cloth around it folds).
-    let most = 0;
-    for (let i = 0; i < before.length; i += 2) most = Math.max(most, Math.hypot(after[i] - before[i], after[i + 1] - before[i + 1]));
-    expect(most).to.be.within(1, 2);
+    // The grabbed particle went to the pointer, √2 away (the cloth around it folds and flaps: its free corner moves
+    // about as far, by how it swings).
+    let grabbed = -1;
+    for (let i = 0; i < before.length; i += 2) if (Math.hypot(before[i] - 7, before[i + 1] - 3) < 1e-6) grabbed = i;
+    expect(grabbed).to.be.at.least(0);
+    expect(Math.hypot(after[grabbed] - 6, after[grabbed + 1] - 2)).to.be.below(0.1);
   });
 
   it('a press inside a soft body (not on its ring) drags it', async () => {

@@ -106,14 +106,11 @@ function jumpTo(make: () => Subject, jump: number): { overshoot: number; settled
 describe('pointer drag: a damped grab', () => {
   for (const [name, make] of Object.entries(SUBJECTS)) {
     it(`${name}: dragged at constant speed then let go, it leaves at the pointer's speed; a jump is met without swinging`, () => {
-      // The cloth's held particle takes the pull in the first substeps of each step (the pointer's new place is
-      // there for the whole step): it leaves at 0.82-0.89 of the pointer's speed. The bodies, at 0.96.
-      const tolerance = name === 'cloth particle' ? 0.2 : 0.15;
       for (const v of [3, 10, 35]) {
         const { leave, lag } = throwAt(make, v);
-        expect(leave / v, `leaving speed / pointer speed at ${v} u/s`).to.be.within(1 - tolerance, 1 + tolerance);
-        // Trailing the pointer by about lag × speed (2ζ/ω = 0.036 s at the default stiffness), never ahead of it.
-        expect(lag / v, `trail / speed at ${v} u/s`).to.be.within(0, 0.04);
+        expect(leave / v, `leaving speed / pointer speed at ${v} u/s`).to.be.within(0.95, 1.05); // measured 0.99-1.01 (the brief asked 15%)
+        // Trailing the pointer by lag × speed (2ζ/ω = 0.0358 s at the default stiffness), never ahead of it.
+        expect(lag / v, `trail / speed at ${v} u/s`).to.be.closeTo(0.0358, 0.002);
       }
       for (const jump of [1, 5]) {
         const { overshoot, settled } = jumpTo(make, jump);

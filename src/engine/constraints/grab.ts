@@ -11,7 +11,7 @@ import { spin, turnBySpin } from '../rigid/rows.js';
  * particle (weight 1); a rigid body at a point (rx, ry) of its own frame, as a soft point joint to the pointer.
  */
 export class GrabConstraints extends Table {
-  readonly columns = ['p0', 'p1', 'p2', 'w0', 'w1', 'w2', 'tx', 'ty', 'compliance', 'lambdaX', 'lambdaY', 'slot', 'rx', 'ry', 'lag'] as const;
+  readonly columns = ['p0', 'p1', 'p2', 'w0', 'w1', 'w2', 'tx', 'ty', 'compliance', 'lambdaX', 'lambdaY', 'slot', 'rx', 'ry', 'lag', 'aimX', 'aimY', 'aimVX', 'aimVY'] as const;
   p0 = new Int32Array(16);
   p1 = new Int32Array(16);
   p2 = new Int32Array(16);
@@ -32,6 +32,31 @@ export class GrabConstraints extends Table {
    * pointer per unit of its speed. Set by grabLag().
    */
   lag = new Float64Array(16);
+  /**
+   * Where the pull aims this substep: it glides from where the last step left it to the pointer (tx, ty) in equal
+   * parts over the step's substeps, at the pointer's speed over the step (aimVX, aimVY), so the held point is pulled
+   * as by a pointer moving steadily, not one that jumps at each step's start.
+   */
+  aimX = new Float64Array(16);
+  aimY = new Float64Array(16);
+  aimVX = new Float64Array(16);
+  aimVY = new Float64Array(16);
+}
+
+/** A step of dt begins: each grab's aim is to reach the pointer by the step's end. */
+export function beginGrabStep(g: GrabConstraints, dt: number): void {
+  for (let i = 0, n = g.count; i < n; i++) {
+    g.aimVX[i] = (g.tx[i] - g.aimX[i]) / dt;
+    g.aimVY[i] = (g.ty[i] - g.aimY[i]) / dt;
+  }
+}
+
+/** A substep of h begins: each grab's aim moves on by h of its step's glide. */
+export function aimGrabs(g: GrabConstraints, h: number): void {
+  for (let i = 0, n = g.count; i < n; i++) {
+    g.aimX[i] += g.aimVX[i] * h;
+    g.aimY[i] += g.aimVY[i] * h;
+  }
 }
 
 /**
@@ -82,8 +107,8 @@ export function solveGrabs(g: GrabConstraints, p: ParticleStore, h2: number): vo
     const mc = invMass[c];
     const w = wa * wa * ma + wb * wb * mb + wc * wc * mc;
     if (w === 0) continue;
-    let cx = wa * x[a] + wb * x[b] + wc * x[c] - g.tx[i];
-    let cy = wa * y[a] + wb * y[b] + wc * y[c] - g.ty[i];
+    let cx = wa * x[a] + wb * x[b] + wc * x[c] - g.aimX[i];
+    let cy = wa * y[a] + wb * y[b] + wc * y[c] - g.aimY[i];
     const error = Math.sqrt(cx * cx + cy * cy);
     if (error > reach) {
       cx *= reach / error;
@@ -117,8 +142,8 @@ function solveRigidGrab(g: GrabConstraints, p: ParticleStore, i: number, h2: num
   const s = p.rs[a];
   const lx = c * g.rx[i] - s * g.ry[i];
   const ly = s * g.rx[i] + c * g.ry[i];
-  let ex = p.x[a] + lx - g.tx[i];
-  let ey = p.y[a] + ly - g.ty[i];
+  let ex = p.x[a] + lx - g.aimX[i];
+  let ey = p.y[a] + ly - g.aimY[i];
   const error = Math.sqrt(ex * ex + ey * ey);
   if (error > reach) {
     ex *= reach / error;

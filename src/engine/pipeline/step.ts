@@ -1,7 +1,7 @@
 // The step, as a short list of named phases over a StepContext (the layout of Box2D v3's b2World_Step):
 //
 //   prepare → detect collisions (bounding boxes, broad phase, narrow phase) → accelerate (gravity and forces, once)
-//   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → reset
+//   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → aim grabs → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
 //     velocities (linear, angular) → contact velocities (particle, rigid)
 //   → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
@@ -17,7 +17,7 @@ import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
 import { solveAreas } from '../constraints/area.js';
 import { accumulateSprings } from '../constraints/spring.js';
-import { solveGrabs } from '../constraints/grab.js';
+import { aimGrabs, beginGrabStep, solveGrabs } from '../constraints/grab.js';
 import { integrate, updateVelocities } from '../integrate.js';
 import { keepInBounds } from '../bounds.js';
 import { solveContacts, solveContactVelocities } from './contacts.js';
@@ -48,6 +48,7 @@ export function step(ctx: StepContext, dt: number): void {
   const h = dt / n;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (ctx.constraints.springs.count === 0 && !fusedAccelerations(ctx)) accelerate(ctx, h);
+  if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
   for (let s = 0; s < n; s++) substep(ctx, h);
   if (ctx.measureTimings) {
     ctx.timings.detect = t1 - t0;
@@ -85,6 +86,7 @@ export function substep(ctx: StepContext, h: number): void {
   // The rigid contacts' substep start (no correction yet, allowances shrink) is part of their prepare pass.
   if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles, settings.maxPushSpeed * h);
   placeRigidPins(ctx.constraints.pins, particles);
+  if (ctx.constraints.grabs.count > 0) aimGrabs(ctx.constraints.grabs, h);
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
   for (let k = 0; k < settings.iterations; k++) relax(ctx, h);

@@ -313,7 +313,7 @@ describe('PointerDragController', () => {
     };
     const atOnce = await throwBox(0);
     const late = await throwBox(100);
-    // Thrown to the right at about the pointer's speed (2.8 units in 80 ms, 35 u/s; the damped grab throws it at 36.9,
+    // Thrown to the right at about the pointer's speed (2.8 units in 80 ms, 35 u/s; the damped grab throws it at 36.5,
     // the undamped one, still swinging when let go, threw it at 70.6), the grab let go.
     expect(atOnce.vx).to.be.within(28, 46);
     expect(atOnce.grabs).to.equal(0);
