@@ -1,7 +1,8 @@
-// Probe (issue 16), not shipped: would the rigid contact solve win in WebAssembly SIMD lanes? The contacts of a disc
-// pile are coloured each step into batches that share no movable body, laid out two lanes a packet (f64x2), and
-// swept by src/engine/kernel/experiment-rigid.as against the JS solveRigidContacts / solveRigidContactVelocities on
-// the same contacts and the same state.
+// Probe (issue 16): does the rigid contact solve win in WebAssembly SIMD lanes? The contacts of a disc pile are
+// coloured each step into batches that share no movable body, laid out two lanes a packet (f64x2), and swept by the
+// kernel's rigidSweep / rigidVelocities (src/engine/kernel/solver.as, shipped since: wasm-kernel.ts colours and lays
+// out as this bench does) against the JS solveRigidContacts / solveRigidContactVelocities on the same contacts and
+// the same state; --f32 adds the f32x4 probe of experiment-rigid.as.
 //
 //   node bench/experiment-rigid.mjs                       S3 (2,000 circles) and the 10,000-circle pile, both parts
 //   node bench/experiment-rigid.mjs --scenes s3 --steps 60 --settle 600
@@ -21,8 +22,9 @@
 // steps. What the lanes cover is what disc piles hold: single points between two rows, restitution 0, no shock sweep
 // (checked each step; anything else throws).
 import { build } from 'esbuild';
-import { readFileSync, rmSync } from 'node:fs';
-import { loadavg } from 'node:os';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { loadavg, tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { compileKernel } from '../scripts/build-wasm.mjs';
 
@@ -60,7 +62,13 @@ const E = await import(pathToFileURL(out).href);
 rmSync(out);
 const { hooks } = E;
 
-const { bytes } = await compileKernel(new URL('../src/engine/kernel/experiment-rigid.as', import.meta.url).pathname);
+// The shipped lanes (solver.as: rigidBegin, rigidSweep, rigidVelocities) and the f32x4 probe (experiment-rigid.as) in
+// one module.
+const asDir = mkdtempSync(join(tmpdir(), 'experiment-rigid-'));
+const asFile = join(asDir, 'experiment.as');
+writeFileSync(asFile, ['solver.as', 'experiment-rigid.as'].map((f) => readFileSync(new URL(`../src/engine/kernel/${f}`, import.meta.url), 'utf8')).join('\n'));
+const { bytes } = await compileKernel(asFile);
+rmSync(asDir, { recursive: true, force: true });
 const wasmModule = new WebAssembly.Module(bytes);
 
 // ---- scenes -----------------------------------------------------------------------------------------------------
@@ -396,17 +404,17 @@ class Lanes {
   }
 
   beginSubstep(maxPush) {
-    this.exports.beginSubstep(this.packetBase, this.packets, maxPush);
+    this.exports.rigidBegin(this.packetBase, this.packets, maxPush);
   }
 
   sweep() {
     const a = this.address;
-    this.exports.sweep(a.x, a.y, a.angle, a.qangle, a.rc, a.rs, this.packetBase, this.packets);
+    this.exports.rigidSweep(a.x, a.y, a.angle, a.qangle, a.rc, a.rs, this.packetBase, this.packets);
   }
 
   velocities() {
     const a = this.address;
-    this.exports.velocities(a.vx, a.vy, a.omega, this.packetBase, this.packets);
+    this.exports.rigidVelocities(a.vx, a.vy, a.omega, this.packetBase, this.packets);
   }
 
   /** Batch sizes (points a colour), in sweep order. */

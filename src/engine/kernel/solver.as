@@ -263,3 +263,214 @@ export function updateVelocities(x: usize, y: usize, px: usize, py: usize, vx: u
     v128.store(vy + o, f64x2.mul(f64x2.sub(v128.load(y + o), v128.load(py + o)), vinv));
   }
 }
+
+// ---- Rigid contacts in lanes (issue 16) ------------------------------------------------------------------------
+// The rigid contact solver's position sweep and velocity pass for single-point contacts (rigid discs with discs and
+// static walls: disc piles), in f64x2 lanes, with the same formulas and order of operations per point as
+// solveRigidContacts / solveRigidContactVelocities in src/engine/rigid/contact-solver.ts (restitution 0, no manifold
+// pairs, no particle-edge points, no shock sweep: wasm-kernel.ts checks each step and otherwise leaves the step's
+// rigid contacts to the JS solver). wasm-kernel.ts colours the contacts each step into batches that share no movable
+// body (contacts with a static body or the world in colours of their own, swept last), two lanes a packet: within a
+// packet the two points touch different movable bodies, so solving them side by side is the same as one after the
+// other; the sweep is Gauss–Seidel in the colours' order.
+//
+// The body columns (x, y, angle, qangle, rc, rs; vx, vy, omega) are the engine's own f64 columns in this memory; a
+// lane reads a row's value by its byte offset (row × 8). A padding lane points at a spare row (inverse mass and inertia
+// 0, apart) and never acts; the world is another spare row at the origin with rotation (1, 0) and inverse mass 0, so
+// its point is (rBx, rBy) as in the JS solver; a static body may sit in both lanes of a packet: it is written back
+// unchanged.
+//
+// Packet of two points (bytes):
+//   0: i32 ia0, ia1, ib0, ib1 (row × 8)
+//  16 nx  32 ny  48 rAx  64 rAy  80 rBx  96 rBy  112 radA  128 radB  144 friction
+// 160 imA 176 iiA 192 imB 208 iiB                                   (per step, from the rows' inverse mass/inertia)
+// 224 allowance 240 lambdaN 256 impulseN 272 impulseT 288 slip 304 gap 320 touched (all-ones lanes)   (state)
+// 336 lAx 352 lAy 368 lBx 384 lBy 400 rnA 416 rnB 432 wn             (written by the sweep for the velocity pass)
+const RIGID_PACKET: usize = 448;
+
+@inline function gather2(column: usize, o0: usize, o1: usize): v128 {
+  return v128.load64_lane(column + o1, v128.load64_splat(column + o0), 1);
+}
+
+@inline function scatter2(column: usize, o0: usize, o1: usize, v: v128): void {
+  v128.store64_lane(column + o0, v, 0);
+  v128.store64_lane(column + o1, v, 1);
+}
+
+@inline function fld(pk: usize, offset: usize): v128 {
+  return v128.load(pk + offset);
+}
+
+/** The substep's start (RigidContacts.beginSubstep): λn 0, allowances shrink by maxPush. */
+export function rigidBegin(packets: usize, count: i32, maxPush: f64): void {
+  const zero = f64x2.splat(0);
+  const push = f64x2.splat(maxPush);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * RIGID_PACKET;
+    v128.store(pk, zero, 240);
+    const left = f64x2.sub(fld(pk, 224), push);
+    v128.store(pk, v128.bitselect(left, zero, f64x2.gt(left, zero)), 224);
+  }
+}
+
+/** One position sweep over `count` packets: normal correction, then friction, per point. */
+export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
+  const zero = f64x2.splat(0);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * RIGID_PACKET;
+    const oa0 = <usize>load<i32>(pk);
+    const oa1 = <usize>load<i32>(pk, 4);
+    const ob0 = <usize>load<i32>(pk, 8);
+    const ob1 = <usize>load<i32>(pk, 12);
+    const nx = fld(pk, 16);
+    const ny = fld(pk, 32);
+    const rAx = fld(pk, 48);
+    const rAy = fld(pk, 64);
+    const rBx = fld(pk, 80);
+    const rBy = fld(pk, 96);
+    const radA = fld(pk, 112);
+    const radB = fld(pk, 128);
+    let ax = gather2(x, oa0, oa1);
+    let ay = gather2(y, oa0, oa1);
+    let bx = gather2(x, ob0, ob1);
+    let by = gather2(y, ob0, ob1);
+    let angA = gather2(angle, oa0, oa1);
+    let angB = gather2(angle, ob0, ob1);
+    let dA = f64x2.sub(angA, gather2(qangle, oa0, oa1));
+    let dB = f64x2.sub(angB, gather2(qangle, ob0, ob1));
+    const cA = gather2(rc, oa0, oa1);
+    const sA = gather2(rs, oa0, oa1);
+    const cB = gather2(rc, ob0, ob1);
+    const sB = gather2(rs, ob0, ob1);
+    const mAx = f64x2.sub(f64x2.mul(cA, rAx), f64x2.mul(sA, rAy));
+    const mAy = f64x2.add(f64x2.mul(sA, rAx), f64x2.mul(cA, rAy));
+    const mBx = f64x2.sub(f64x2.mul(cB, rBx), f64x2.mul(sB, rBy));
+    const mBy = f64x2.add(f64x2.mul(sB, rBx), f64x2.mul(cB, rBy));
+    const roundA = f64x2.gt(radA, zero);
+    const roundB = f64x2.gt(radB, zero);
+    const lAx = v128.bitselect(f64x2.mul(nx, radA), mAx, roundA);
+    const lAy = v128.bitselect(f64x2.mul(ny, radA), mAy, roundA);
+    const lBx = v128.bitselect(f64x2.mul(f64x2.neg(nx), radB), mBx, roundB);
+    const lBy = v128.bitselect(f64x2.mul(f64x2.neg(ny), radB), mBy, roundB);
+    // g = (ax + lAx − dA·lAy − (bx + lBx − dB·lBy))·nx + (ay + lAy + dA·lAx − (by + lBy + dB·lBx))·ny − allowance
+    const gx = f64x2.sub(f64x2.sub(f64x2.add(ax, lAx), f64x2.mul(dA, lAy)), f64x2.sub(f64x2.add(bx, lBx), f64x2.mul(dB, lBy)));
+    const gy = f64x2.sub(f64x2.add(f64x2.add(ay, lAy), f64x2.mul(dA, lAx)), f64x2.add(f64x2.add(by, lBy), f64x2.mul(dB, lBx)));
+    const g = f64x2.sub(f64x2.add(f64x2.mul(gx, nx), f64x2.mul(gy, ny)), fld(pk, 224));
+    v128.store(pk, g, 304);
+    const acts = f64x2.gt(g, zero);
+    if (!v128.any_true(acts)) continue;
+    const imA = fld(pk, 160);
+    const iiA = fld(pk, 176);
+    const imB = fld(pk, 192);
+    const iiB = fld(pk, 208);
+    // Weights, and what the velocity pass reads.
+    const rnA = f64x2.sub(f64x2.mul(lAx, ny), f64x2.mul(lAy, nx));
+    const rnB = f64x2.sub(f64x2.mul(lBx, ny), f64x2.mul(lBy, nx));
+    const k00 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rnA), rnA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rnB), rnB)));
+    v128.store(pk, lAx, 336);
+    v128.store(pk, lAy, 352);
+    v128.store(pk, lBx, 368);
+    v128.store(pk, lBy, 384);
+    v128.store(pk, rnA, 400);
+    v128.store(pk, rnB, 416);
+    v128.store(pk, k00, 432);
+    v128.store(pk, v128.or(fld(pk, 320), acts), 320);
+    // Normal correction: l = g / k00 where the point overlaps (and k00 > 0), 0 elsewhere.
+    const l = v128.and(f64x2.div(g, k00), v128.and(acts, f64x2.gt(k00, zero)));
+    const mlA = f64x2.mul(imA, l);
+    ax = f64x2.sub(ax, f64x2.mul(mlA, nx));
+    ay = f64x2.sub(ay, f64x2.mul(mlA, ny));
+    const tA = f64x2.mul(iiA, f64x2.mul(l, rnA));
+    angA = f64x2.sub(angA, tA);
+    dA = f64x2.sub(dA, tA);
+    const mlB = f64x2.mul(imB, l);
+    bx = f64x2.add(bx, f64x2.mul(mlB, nx));
+    by = f64x2.add(by, f64x2.mul(mlB, ny));
+    const tB = f64x2.mul(iiB, f64x2.mul(l, rnB));
+    angB = f64x2.add(angB, tB);
+    dB = f64x2.add(dB, tB);
+    const lambda = f64x2.add(fld(pk, 240), l);
+    const impulseN = f64x2.add(fld(pk, 256), l);
+    v128.store(pk, lambda, 240);
+    v128.store(pk, impulseN, 256);
+    // Friction where μ > 0 and the point has acted this substep: the tangential drift of the material points, less
+    // what has slid, undone within Coulomb's limit on the step's summed normal corrections.
+    const mu = fld(pk, 144);
+    const rtA = f64x2.add(f64x2.mul(mAx, nx), f64x2.mul(mAy, ny));
+    const rtB = f64x2.add(f64x2.mul(mBx, nx), f64x2.mul(mBy, ny));
+    const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
+    const holds = v128.and(v128.and(acts, v128.and(f64x2.ne(mu, zero), f64x2.gt(lambda, zero))), f64x2.gt(w, zero));
+    if (v128.any_true(holds)) {
+      const ux = f64x2.sub(f64x2.sub(f64x2.add(ax, mAx), f64x2.mul(dA, mAy)), f64x2.sub(f64x2.add(bx, mBx), f64x2.mul(dB, mBy)));
+      const uy = f64x2.sub(f64x2.add(f64x2.add(ay, mAy), f64x2.mul(dA, mAx)), f64x2.add(f64x2.add(by, mBy), f64x2.mul(dB, mBx)));
+      const slip = fld(pk, 288);
+      const drift = f64x2.sub(f64x2.add(f64x2.mul(f64x2.neg(ux), ny), f64x2.mul(uy, nx)), slip);
+      const want = f64x2.div(drift, w);
+      const limit = f64x2.mul(mu, impulseN);
+      const before = fld(pk, 272);
+      const total = f64x2.pmax(f64x2.pmin(f64x2.add(before, want), limit), f64x2.neg(limit));
+      const dt = v128.and(f64x2.sub(total, before), holds);
+      v128.store(pk, v128.bitselect(total, before, holds), 272);
+      v128.store(pk, v128.bitselect(f64x2.add(slip, f64x2.mul(f64x2.sub(want, dt), w)), slip, holds), 288);
+      const tlA = f64x2.mul(imA, dt);
+      ax = f64x2.add(ax, f64x2.mul(tlA, ny));
+      ay = f64x2.sub(ay, f64x2.mul(tlA, nx));
+      angA = f64x2.sub(angA, f64x2.mul(f64x2.mul(iiA, rtA), dt));
+      const tlB = f64x2.mul(imB, dt);
+      bx = f64x2.sub(bx, f64x2.mul(tlB, ny));
+      by = f64x2.add(by, f64x2.mul(tlB, nx));
+      angB = f64x2.add(angB, f64x2.mul(f64x2.mul(iiB, rtB), dt));
+    }
+    scatter2(x, oa0, oa1, ax);
+    scatter2(y, oa0, oa1, ay);
+    scatter2(angle, oa0, oa1, angA);
+    scatter2(x, ob0, ob1, bx);
+    scatter2(y, ob0, ob1, by);
+    scatter2(angle, ob0, ob1, angB);
+  }
+}
+
+/** The velocity pass (restitution 0): each point that acted this substep gets normal speed 0. */
+export function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32): void {
+  const zero = f64x2.splat(0);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * RIGID_PACKET;
+    const acted = f64x2.gt(fld(pk, 240), zero);
+    if (!v128.any_true(acted)) continue;
+    const oa0 = <usize>load<i32>(pk);
+    const oa1 = <usize>load<i32>(pk, 4);
+    const ob0 = <usize>load<i32>(pk, 8);
+    const ob1 = <usize>load<i32>(pk, 12);
+    const nx = fld(pk, 16);
+    const ny = fld(pk, 32);
+    let vax = gather2(vx, oa0, oa1);
+    let vay = gather2(vy, oa0, oa1);
+    let wa = gather2(omega, oa0, oa1);
+    let vbx = gather2(vx, ob0, ob1);
+    let vby = gather2(vy, ob0, ob1);
+    let wb = gather2(omega, ob0, ob1);
+    const rvx = f64x2.sub(vbx, vax);
+    const rvy = f64x2.sub(vby, vay);
+    // v = (rvx − wb·lBy + wa·lAy)·nx + (rvy + wb·lBx − wa·lAx)·ny
+    const ux = f64x2.add(f64x2.sub(rvx, f64x2.mul(wb, fld(pk, 384))), f64x2.mul(wa, fld(pk, 352)));
+    const uy = f64x2.sub(f64x2.add(rvy, f64x2.mul(wb, fld(pk, 368))), f64x2.mul(wa, fld(pk, 336)));
+    const v = f64x2.add(f64x2.mul(ux, nx), f64x2.mul(uy, ny));
+    const k00 = fld(pk, 432);
+    const p = v128.and(f64x2.div(f64x2.sub(zero, v), k00), v128.and(acted, f64x2.gt(k00, zero)));
+    const mpA = f64x2.mul(fld(pk, 160), p);
+    const mpB = f64x2.mul(fld(pk, 192), p);
+    vax = f64x2.sub(vax, f64x2.mul(mpA, nx));
+    vay = f64x2.sub(vay, f64x2.mul(mpA, ny));
+    wa = f64x2.sub(wa, f64x2.mul(fld(pk, 176), f64x2.mul(p, fld(pk, 400))));
+    vbx = f64x2.add(vbx, f64x2.mul(mpB, nx));
+    vby = f64x2.add(vby, f64x2.mul(mpB, ny));
+    wb = f64x2.add(wb, f64x2.mul(fld(pk, 208), f64x2.mul(p, fld(pk, 416))));
+    scatter2(vx, oa0, oa1, vax);
+    scatter2(vy, oa0, oa1, vay);
+    scatter2(omega, oa0, oa1, wa);
+    scatter2(vx, ob0, ob1, vbx);
+    scatter2(vy, ob0, ob1, vby);
+    scatter2(omega, ob0, ob1, wb);
+  }
+}
+

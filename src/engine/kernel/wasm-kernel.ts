@@ -7,17 +7,35 @@
 // column no longer lives in the memory and lays everything out again. The runs and packets are found again when the
 // constraints' structure changes (the topology is rebuilt) and their limits refreshed when links break; the kernel
 // reads inverse masses from the particle column itself. Only a new layout allocates.
+//
+// Rigid contacts in lanes: a step whose rigid contacts are all single points between rows or with the world (disc
+// piles: no manifold pairs, no particle-built edge points, restitution 0, no shock sweep) has them coloured after its
+// first substep's JS prepare (beginRigid) into batches that share no movable body, laid out two a packet after the
+// distance data, and swept by solver.as's rigidBegin / rigidSweep / rigidVelocities; the step's end copies back what
+// the JS phases read (endRigid: anchors, events, sleep). Any other step leaves them to the JS solver. Only more
+// contacts than ever before allocate (larger colouring arrays, a grown memory).
 import type { ParticleStore } from '../particles.js';
 import type { DistanceConstraints } from '../constraints/distance.js';
 import type { StepContext } from '../pipeline/context.js';
+import type { RigidContacts } from '../rigid/contacts.js';
 import { colourRows } from './colour.js';
 import { findRuns, kindOf, RunKind, type RunLayout } from './runs.js';
 
 /** The columns the kernel reads or writes, in the order they are laid out. */
-const COLUMNS = ['x', 'y', 'px', 'py', 'vx', 'vy', 'ax', 'ay', 'fx', 'fy', 'invMass'] as const;
+const COLUMNS = ['x', 'y', 'px', 'py', 'vx', 'vy', 'ax', 'ay', 'fx', 'fy', 'invMass', 'angle', 'qangle', 'rc', 'rs', 'omega', 'invInertia'] as const;
 type KernelColumn = (typeof COLUMNS)[number];
-/** Rows past the columns' length: the padding lanes of runs and packets read (and write back unchanged) up to 3. */
+/**
+ * Rows past the columns' length: the padding lanes of runs and packets read (and write back unchanged) up to 3. The
+ * first is also the rigid padding lanes' row; the second is the world's for rigid contacts (all 0 but rc = 1).
+ */
 const SPARE_ROWS = 4;
+/** Bytes per packet of two rigid contact points, f64 and i32 words (see solver.as), and the f64 field indices. */
+const RIGID_PACKET = 448;
+const RIGID_F64 = RIGID_PACKET / 8;
+const RF = { nx: 1, ny: 2, rAx: 3, rAy: 4, rBx: 5, rBy: 6, radA: 7, radB: 8, friction: 9, imA: 10, iiA: 11, imB: 12, iiB: 13, allowance: 14, lambdaN: 15, impulseN: 16, impulseT: 17, slip: 18, gap: 19, touched: 20 };
+const RIGID_FIELDS = 27;
+/** Colours of the greedy colouring (two 32-bit masks a row), for contacts between movable bodies and for the rest. */
+const COLOURS = 64;
 
 /** Bytes per packet of two constraints, and where its fields are in f64 and i32 words (see solver.as). */
 const PACKET_BYTES = 80;
@@ -35,12 +53,15 @@ interface KernelExports {
   solveDistances(x: number, y: number, invMass: number, runs: number, runCount: number, packets: number, count: number, h2: number, fresh: boolean): void;
   integrateVerlet(x: number, y: number, px: number, py: number, vx: number, vy: number, ax: number, ay: number, invMass: number, n: number, h: number, damp: number, forces: boolean, gx: number, gy: number): void;
   updateVelocities(x: number, y: number, px: number, py: number, vx: number, vy: number, n: number, inv: number): void;
+  rigidBegin(packets: number, count: number, maxPush: number): void;
+  rigidSweep(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
+  rigidVelocities(vx: number, vy: number, omega: number, packets: number, count: number): void;
 }
 
 export class WasmKernel {
   readonly name = 'wasm';
-  private readonly memory = new WebAssembly.Memory({ initial: 1 });
-  private readonly exports: KernelExports;
+  private memory = new WebAssembly.Memory({ initial: 1 });
+  private exports: KernelExports;
   /** Byte address of each column in the memory (valid while the columns are views into it). */
   private readonly address = Object.fromEntries(COLUMNS.map((c) => [c, 0])) as Record<KernelColumn, number>;
   /** Rows the columns have room for (their length; the memory holds SPARE_ROWS more, zero). */
@@ -66,10 +87,47 @@ export class WasmKernel {
   private freshLambdas = true;
   /** Layouts made (diagnostics and tests: steady stepping makes none). */
   layouts = 0;
+  /** This step's rigid contacts run in the lanes (set by beginRigid, cleared by endRigid). */
+  rigidLanes = false;
+  /** Tests: one rigid contact a packet, in list order (the JS solver's order, so its doubles exactly). */
+  rigidSerial = false;
+  /** Steps whose rigid contacts ran in the lanes, and steps that had rigid contacts the lanes do not take. */
+  rigidLaneSteps = 0;
+  rigidJsSteps = 0;
+  /** Byte address of the rigid packets (after the distance data), room for how many, and how many this step. */
+  private rigidAddress = 0;
+  private rigidCapacity = 0;
+  private rigidPackets = 0;
+  /** Colouring: masks of the colours each row takes part in (movable–movable, and with a static body or the world). */
+  private lowMask = new Uint32Array(0);
+  private highMask = new Uint32Array(0);
+  private lowStatic = new Uint32Array(0);
+  private highStatic = new Uint32Array(0);
+  /** Per contact: its colour (64 + k for the static colours), then its lane (packet s >> 1, lane s & 1). */
+  private colourOf = new Int16Array(0);
+  private slotOf = new Int32Array(0);
+  private readonly batchSize = new Int32Array(2 * COLOURS);
+  private readonly batchCursor = new Int32Array(2 * COLOURS + 1);
 
-  constructor(module: WebAssembly.Module) {
-    const instance = new WebAssembly.Instance(module, { env: { memory: this.memory } });
-    this.exports = instance.exports as unknown as KernelExports;
+  constructor(private readonly module: WebAssembly.Module) {
+    this.exports = this.instantiate();
+  }
+
+  private instantiate(): KernelExports {
+    return new WebAssembly.Instance(this.module, { env: { memory: this.memory } }).exports as unknown as KernelExports;
+  }
+
+  /**
+   * Room for `bytes`: a new, larger memory (with the old one's bytes when `keep`) and the module instantiated on it.
+   * Never Memory.grow(): growing detaches the old buffer, and in V8 the first ArrayBuffer detached in a realm slows
+   * every typed-array access of the JS code after it (measured: S3 under the JS solver 2.65 → 3.35 ms a step, the
+   * narrow phase and the rigid solver alike, once any memory in the process had grown).
+   */
+  private replaceMemory(bytes: number, keep: boolean): void {
+    const old = this.memory;
+    this.memory = new WebAssembly.Memory({ initial: Math.ceil(bytes / PAGE) });
+    if (keep) new Uint8Array(this.memory.buffer).set(new Uint8Array(old.buffer));
+    this.exports = this.instantiate();
   }
 
   /** Bodies, particles or constraints were added, removed or restored. */
@@ -131,12 +189,197 @@ export class WasmKernel {
     return { runs: this.runCount, runLinks, packetLinks: this.packetRows.reduce((n, r) => n + (r >= 0 ? 1 : 0), 0) };
   }
 
+  /**
+   * After the first substep's JS prepare (orderForShock has run): takes the step's rigid contacts into the lanes when
+   * every one is a single point between two rows or with the world, restitution 0, and no shock sweep; colours them
+   * (greedy, list order, the lowest colour of 64 free at both movable bodies; contacts with a static body or the world
+   * in colours of their own, swept after the others: the wall has the last word, as in the JS sweep, whose list has
+   * them last) and lays them out. False (the JS solver keeps them): any other contact, or more than 64 colours.
+   */
+  beginRigid(ctx: StepContext): boolean {
+    const c = ctx.rigidContacts;
+    const p = ctx.particles;
+    this.rigidLanes = false;
+    if (!lanesFit(c)) {
+      this.rigidJsSteps++;
+      return false;
+    }
+    let layout = this.structureChanged;
+    for (const name of COLUMNS) if (p[name].buffer !== this.memory.buffer) layout = true;
+    if (layout) this.layOut(ctx);
+    const n = c.count;
+    const rows = this.capacity + 2;
+    if (this.lowMask.length < rows) {
+      this.lowMask = new Uint32Array(rows);
+      this.highMask = new Uint32Array(rows);
+      this.lowStatic = new Uint32Array(rows);
+      this.highStatic = new Uint32Array(rows);
+    }
+    if (this.colourOf.length < n) {
+      this.colourOf = new Int16Array(2 * n);
+      this.slotOf = new Int32Array(2 * n);
+    }
+    const { a: A, b: B } = c;
+    const { invMass, invInertia } = p;
+    const { lowMask, highMask, lowStatic, highStatic, colourOf, batchSize: size, batchCursor: cursor } = this;
+    let packets: number;
+    if (this.rigidSerial) packets = n;
+    else {
+      size.fill(0);
+      for (let i = 0; i < n; i++) {
+        lowMask[A[i]] = highMask[A[i]] = lowStatic[A[i]] = highStatic[A[i]] = 0;
+        const ib = B[i];
+        if (ib >= 0) lowMask[ib] = highMask[ib] = lowStatic[ib] = highStatic[ib] = 0;
+      }
+      for (let i = 0; i < n; i++) {
+        const ia = A[i];
+        const ib = B[i];
+        const movA = invMass[ia] !== 0 || invInertia[ia] !== 0;
+        const movB = ib >= 0 && (invMass[ib] !== 0 || invInertia[ib] !== 0);
+        const both = movA && movB;
+        const lo = both ? lowMask : lowStatic;
+        const hi = both ? highMask : highStatic;
+        const l = (movA ? lo[ia] : 0) | (movB ? lo[ib] : 0);
+        const h = (movA ? hi[ia] : 0) | (movB ? hi[ib] : 0);
+        // The lowest clear bit of l, else of h.
+        const k = ~l !== 0 ? 31 - Math.clz32(~l & (l + 1)) : ~h !== 0 ? 63 - Math.clz32(~h & (h + 1)) : -1;
+        if (k < 0) {
+          this.rigidJsSteps++;
+          return false;
+        }
+        const bit = 1 << (k & 31);
+        const masks = k < 32 ? lo : hi;
+        if (movA) masks[ia] |= bit;
+        if (movB) masks[ib] |= bit;
+        const colour = both ? k : COLOURS + k;
+        colourOf[i] = colour;
+        size[colour]++;
+      }
+      // Each colour's batch padded to whole packets.
+      cursor[0] = 0;
+      for (let k = 0; k < 2 * COLOURS; k++) cursor[k + 1] = cursor[k] + ((size[k] + 1) & ~1);
+      packets = cursor[2 * COLOURS] >> 1;
+    }
+    if (packets > this.rigidCapacity) this.growRigid(p, packets);
+    this.writeRigid(c, p.invMass, p.invInertia);
+    this.rigidPackets = packets;
+    this.rigidLanes = true;
+    this.rigidLaneSteps++;
+    return true;
+  }
+
+  /** A substep's start for the lanes (as prepareRigidContacts': no correction yet, allowances shrink by maxPush). */
+  rigidBeginSubstep(maxPush: number): void {
+    this.exports.rigidBegin(this.rigidAddress, this.rigidPackets, maxPush);
+  }
+
+  rigidSweep(): void {
+    const m = this.address;
+    this.exports.rigidSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
+  }
+
+  rigidVelocities(): void {
+    const m = this.address;
+    this.exports.rigidVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets);
+  }
+
+  /** The step's end: what the JS phases read (anchors, events, sleep) back from the lanes into the contact table. */
+  endRigid(c: RigidContacts): void {
+    this.rigidLanes = false;
+    const { f64, i32, slotOf } = this;
+    const base = this.rigidAddress / 8;
+    const { allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
+    for (let i = 0, n = c.count; i < n; i++) {
+      const s = slotOf[i];
+      const w = base + (s >> 1) * RIGID_F64 + (s & 1);
+      allowance[i] = f64[w + 2 * RF.allowance];
+      lambdaN[i] = f64[w + 2 * RF.lambdaN];
+      impulseN[i] = f64[w + 2 * RF.impulseN];
+      impulseT[i] = f64[w + 2 * RF.impulseT];
+      slip[i] = f64[w + 2 * RF.slip];
+      gap[i] = f64[w + 2 * RF.gap];
+      touched[i] = i32[2 * (w + 2 * RF.touched)] !== 0 ? 1 : 0;
+    }
+  }
+
+  /** Room for `packets` rigid packets (half as many again): the memory grows, the column views are made again. */
+  private growRigid(p: ParticleStore, packets: number): void {
+    this.rigidCapacity = Math.ceil(packets * 1.5);
+    const bytes = this.rigidAddress + this.rigidCapacity * RIGID_PACKET;
+    if (bytes > this.memory.buffer.byteLength) {
+      // A new memory with the old bytes: the column views are made again on it.
+      this.replaceMemory(Math.max(bytes, this.memory.buffer.byteLength * 1.5), true);
+      const buffer = this.memory.buffer;
+      this.f64 = new Float64Array(buffer);
+      this.i32 = new Int32Array(buffer);
+      const columns = p as unknown as Record<KernelColumn, Float64Array>;
+      for (const name of COLUMNS) columns[name] = new Float64Array(buffer, this.address[name], this.capacity);
+    }
+  }
+
+  /** Each contact's lane: the rows' byte offsets, the contact's geometry and state, the rows' inverse mass and inertia. */
+  private writeRigid(c: RigidContacts, invMass: Float64Array, invInertia: Float64Array): void {
+    const { f64, i32, slotOf, colourOf, batchSize: size, batchCursor: cursor } = this;
+    const base = this.rigidAddress / 8;
+    const world = (this.capacity + 1) * 8;
+    const n = c.count;
+    if (this.rigidSerial) for (let i = 0; i < n; i++) this.padRigid(2 * i + 1);
+    else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.padRigid(cursor[k + 1] - 1);
+    const { a: A, b: B, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
+    for (let i = 0; i < n; i++) {
+      const s = this.rigidSerial ? 2 * i : cursor[colourOf[i]]++;
+      slotOf[i] = s;
+      const q = 2 * (base + (s >> 1) * RIGID_F64) + (s & 1);
+      const w = base + (s >> 1) * RIGID_F64 + (s & 1);
+      const ia = A[i];
+      const ib = B[i];
+      const onRow = ib >= 0;
+      i32[q] = ia * 8;
+      i32[q + 2] = onRow ? ib * 8 : world;
+      f64[w + 2 * RF.nx] = nx[i];
+      f64[w + 2 * RF.ny] = ny[i];
+      f64[w + 2 * RF.rAx] = rAx[i];
+      f64[w + 2 * RF.rAy] = rAy[i];
+      f64[w + 2 * RF.rBx] = rBx[i];
+      f64[w + 2 * RF.rBy] = rBy[i];
+      f64[w + 2 * RF.radA] = radA[i];
+      // The world's point is (rBx, rBy) itself (its row turns it by (1, 0)).
+      f64[w + 2 * RF.radB] = onRow ? radB[i] : 0;
+      f64[w + 2 * RF.friction] = friction[i];
+      f64[w + 2 * RF.imA] = invMass[ia];
+      f64[w + 2 * RF.iiA] = invInertia[ia];
+      f64[w + 2 * RF.imB] = onRow ? invMass[ib] : 0;
+      f64[w + 2 * RF.iiB] = onRow ? invInertia[ib] : 0;
+      f64[w + 2 * RF.allowance] = allowance[i];
+      f64[w + 2 * RF.lambdaN] = lambdaN[i];
+      f64[w + 2 * RF.impulseN] = impulseN[i];
+      f64[w + 2 * RF.impulseT] = impulseT[i];
+      f64[w + 2 * RF.slip] = slip[i];
+      f64[w + 2 * RF.gap] = gap[i];
+      const t = touched[i] ? -1 : 0;
+      i32[2 * (w + 2 * RF.touched)] = t;
+      i32[2 * (w + 2 * RF.touched) + 1] = t;
+    }
+  }
+
+  /** A padding lane: the spare row on both sides, apart (allowance 1), no friction. */
+  private padRigid(s: number): void {
+    const { f64, i32 } = this;
+    const base = this.rigidAddress / 8;
+    const w = base + (s >> 1) * RIGID_F64 + (s & 1);
+    const q = 2 * (base + (s >> 1) * RIGID_F64) + (s & 1);
+    i32[q] = this.capacity * 8;
+    i32[q + 2] = this.capacity * 8;
+    for (let field = 1; field <= RIGID_FIELDS; field++) f64[w + 2 * field] = 0;
+    f64[w + 2 * RF.allowance] = 1;
+  }
+
   /** Places the particle columns, the runs and the coloured packets in the memory (growing it if needed). */
   private layOut(ctx: StepContext): void {
     const { particles: p, sleep } = ctx;
     const c = ctx.constraints.distances;
     const capacity = p.x.length;
-    // Save every column first: the new places may overlap the old, and growing the memory detaches the old views.
+    // Save every column first: the new places may overlap the old (or a new memory replace the old).
     const saved = COLUMNS.map((name) => p[name].slice(0, capacity));
     const runs = findRuns(c.count, c.a, c.b, c.minLength, c.maxLength, c.compliance);
     // Immovable particles may share a packet: pinned and static ones, not those that only sleep (they wake).
@@ -155,8 +398,10 @@ export class WasmKernel {
     const runAddress = COLUMNS.length * columnBytes;
     const dataAddress = runAddress + align16(runCount * RUN_BYTES);
     const packetAddress = dataAddress + dataBytes;
-    const bytes = packetAddress + packetCount * PACKET_BYTES;
-    if (bytes > this.memory.buffer.byteLength) this.memory.grow(Math.ceil((bytes * 1.5 - this.memory.buffer.byteLength) / PAGE));
+    const rigidAddress = align16(packetAddress + packetCount * PACKET_BYTES);
+    const bytes = rigidAddress + this.rigidCapacity * RIGID_PACKET;
+    // (Everything is written again below: the new memory need not keep the old bytes.)
+    if (bytes > this.memory.buffer.byteLength) this.replaceMemory(bytes * 1.5, false);
     const buffer = this.memory.buffer;
     this.f64 = new Float64Array(buffer);
     this.i32 = new Int32Array(buffer);
@@ -169,6 +414,9 @@ export class WasmKernel {
       this.address[name] = address;
     });
     this.capacity = capacity;
+    // The rigid lanes' world row: at the origin, rotation (1, 0), inverse mass and inertia 0.
+    this.f64[(this.address.rc >> 3) + capacity + 1] = 1;
+    this.rigidAddress = rigidAddress;
     // Run records.
     for (let k = 0; k < runCount; k++) {
       const r = (runAddress + k * RUN_BYTES) >> 2;
@@ -186,7 +434,7 @@ export class WasmKernel {
     this.packetAddress = packetAddress;
     this.packetCount = packetCount;
     this.laidOutRows = c.count;
-    this.f64.fill(0, dataAddress / 8, bytes / 8);
+    this.f64.fill(0, dataAddress / 8, rigidAddress / 8);
     this.writePackets(c);
     this.copyLimits(c);
     this.structureChanged = false;
@@ -250,6 +498,14 @@ export class WasmKernel {
     }
     return true;
   }
+}
+
+/** Every rigid contact is one the lanes solve: a single point between two rows or with the world, restitution 0, no shock sweep. */
+function lanesFit(c: RigidContacts): boolean {
+  if (c.shockCount > 0 || c.edgePoints > 0) return false;
+  const { pair, b2, restitution, a } = c;
+  for (let i = 0, n = c.count; i < n; i++) if (pair[i] !== 0 || b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0) return false;
+  return true;
 }
 
 function align16(bytes: number): number {

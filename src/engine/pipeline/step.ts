@@ -11,7 +11,9 @@
 //
 // With the WebAssembly kernel (World option kernel, ctx.kernel), integration (with the accelerations, unless springs
 // add to them), velocities and the distance sweep run in it, over the same columns (kernel/wasm-kernel.ts), while the
-// world has links to sweep (kernelAtWork); every other phase is the same JS function either way.
+// world has links to sweep (kernelAtWork); every other phase is the same JS function either way. Its rigid contact
+// lanes have their own gate: a step whose rigid contacts are all single points (disc piles) sweeps them there
+// (kernel.beginRigid after the first substep's prepare, endRigid after the substeps); any other step, the JS solver.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
@@ -43,6 +45,8 @@ export function step(ctx: StepContext, dt: number): void {
   recordStartPositions(ctx);
   detectCollisions(ctx, dt);
   kernelAtWork(ctx)?.beginStep(ctx);
+  // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
+  if (ctx.kernel) ctx.kernel.rigidLanes = false;
   const t1 = ctx.measureTimings ? performance.now() : 0;
   const n = substepCount(ctx.settings, ctx.particleRows);
   const h = dt / n;
@@ -50,6 +54,7 @@ export function step(ctx: StepContext, dt: number): void {
   if (ctx.constraints.springs.count === 0 && !fusedAccelerations(ctx)) accelerate(ctx, h);
   if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
   for (let s = 0; s < n; s++) substep(ctx, h);
+  if (ctx.kernel?.rigidLanes) ctx.kernel.endRigid(ctx.rigidContacts);
   if (ctx.measureTimings) {
     ctx.timings.detect = t1 - t0;
     ctx.timings.solve = performance.now() - t1;
@@ -84,7 +89,16 @@ export function substep(ctx: StepContext, h: number): void {
   if (ctx.rigidCount > 0) integrateRotation(particles, particles.torque, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.kinematicCount > 0) integrateKinematic(particles, ctx.kinematicRows, ctx.kinematicCount, sub);
   // The rigid contacts' substep start (no correction yet, allowances shrink) is part of their prepare pass.
-  if (ctx.rigidContacts.count > 0) prepareRigidContacts(ctx.rigidContacts, particles, settings.maxPushSpeed * h);
+  const rigid = ctx.rigidContacts;
+  if (rigid.count > 0) {
+    if (ctx.kernel?.rigidLanes) ctx.kernel.rigidBeginSubstep(settings.maxPushSpeed * h);
+    else {
+      // The step's first substep (the contacts are not yet ordered): the kernel may take them into its lanes.
+      const first = !rigid.shockReady;
+      prepareRigidContacts(rigid, particles, settings.maxPushSpeed * h);
+      if (first && ctx.kernel) ctx.kernel.beginRigid(ctx);
+    }
+  }
   placeRigidPins(ctx.constraints.pins, particles);
   if (ctx.constraints.grabs.count > 0) aimGrabs(ctx.constraints.grabs, h);
   resetMultipliers(ctx);
@@ -94,7 +108,10 @@ export function substep(ctx: StepContext, h: number): void {
   else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
-  if (ctx.rigidContacts.count > 0) solveRigidContactVelocities(ctx.rigidContacts, particles, h);
+  if (rigid.count > 0) {
+    if (ctx.kernel?.rigidLanes) ctx.kernel.rigidVelocities();
+    else solveRigidContactVelocities(rigid, particles, h);
+  }
 }
 
 /** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */
@@ -203,7 +220,10 @@ function relax(ctx: StepContext, h: number): void {
   if (grabs.count > 0) solveGrabs(grabs, p, h2);
   if (joints.count > 0) solveJoints(joints, p, h);
   if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p);
-  if (ctx.rigidContacts.count > 0) solveRigidContacts(ctx.rigidContacts, p);
+  if (ctx.rigidContacts.count > 0) {
+    if (ctx.kernel?.rigidLanes) ctx.kernel.rigidSweep();
+    else solveRigidContacts(ctx.rigidContacts, p);
+  }
   const bounds = ctx.settings.bounds;
   if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction);
 }

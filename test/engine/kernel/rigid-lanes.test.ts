@@ -1,0 +1,199 @@
+// The WebAssembly kernel's rigid contact lanes (wasm-kernel.ts beginRigid, solver.as rigidSweep / rigidVelocities):
+// a step whose rigid contacts are all single points (disc piles) sweeps them in coloured f64x2 packets; any other
+// step runs the JS solver. Laid out one contact a packet in list order (rigidSerial) the lanes give the JS solver's
+// doubles exactly; coloured, they solve the same contacts in another Gauss–Seidel order, so a pile compares by
+// quality (overlap, height, nothing escaped), not by position.
+import { expect } from 'chai';
+import { buildScene, catalogue, createBox, World, type KernelOptions, type WorldOptions } from '../../../src/engine/index.js';
+import type { StepContext } from '../../../src/engine/pipeline/context.js';
+import type { WasmKernel } from '../../../src/engine/kernel/wasm-kernel.js';
+import { allFinite } from '../helpers.js';
+
+function contextOf(world: World): StepContext {
+  return (world as unknown as { ctx: StepContext }).ctx;
+}
+
+function kernelOf(world: World): WasmKernel {
+  const kernel = contextOf(world).kernel;
+  if (!kernel) throw new Error('no WebAssembly kernel');
+  return kernel;
+}
+
+/** The catalogue's S3 pile (2,000 circles r 0.5 into a container), sleeping off. */
+function pile(kernel: 'js' | 'wasm'): World {
+  const d = catalogue.circles.make();
+  const world: WorldOptions & KernelOptions = { ...d.world, sleeping: false, kernel };
+  return buildScene({ ...d, world }).world;
+}
+
+/** Deepest overlap between two of the pile's discs (radius 0.5), as a fraction of the diameter. */
+function deepestOverlap(world: World): number {
+  const p = world.particles;
+  const cells = new Map<number, number[]>();
+  const key = (cx: number, cy: number) => cx * 100003 + cy;
+  const discs: number[] = [];
+  for (let i = 0; i < p.count; i++) if (p.alive[i] && p.invMass[i] > 0) discs.push(i);
+  for (const i of discs) {
+    const k = key(Math.floor(p.x[i]), Math.floor(p.y[i]));
+    if (!cells.has(k)) cells.set(k, []);
+    cells.get(k)!.push(i);
+  }
+  let deepest = 0;
+  for (const i of discs) {
+    const cx = Math.floor(p.x[i]);
+    const cy = Math.floor(p.y[i]);
+    for (let dx = -1; dx <= 1; dx++) {
+      for (let dy = -1; dy <= 1; dy++) {
+        for (const j of cells.get(key(cx + dx, cy + dy)) ?? []) {
+          if (j <= i) continue;
+          deepest = Math.max(deepest, 1 - Math.hypot(p.x[i] - p.x[j], p.y[i] - p.y[j]));
+        }
+      }
+    }
+  }
+  return deepest;
+}
+
+/** Mean height (−y, y grows downwards) of the pile's discs, and how many left the container or are not finite. */
+function heightAndEscaped(world: World): { height: number; escaped: number } {
+  const p = world.particles;
+  let sum = 0;
+  let n = 0;
+  let escaped = 0;
+  for (let i = 0; i < p.count; i++) {
+    if (!p.alive[i] || p.invMass[i] === 0) continue;
+    n++;
+    sum += -p.y[i];
+    if (!Number.isFinite(p.x[i]) || !Number.isFinite(p.y[i]) || p.y[i] > 0.01 || Math.abs(p.x[i]) > 20) escaped++;
+  }
+  return { height: sum / n, escaped };
+}
+
+describe('solver kernel: rigid contacts in lanes', () => {
+  it('one contact a packet in list order gives the JS solver\'s doubles exactly (S3 pile, 300 steps)', () => {
+    const js = pile('js');
+    const lanes = pile('wasm');
+    kernelOf(lanes).rigidSerial = true;
+    for (let k = 0; k < 300; k++) {
+      js.step();
+      lanes.step();
+    }
+    // Every step with contacts ran in the lanes (the pile has only single points between discs and walls).
+    expect(kernelOf(lanes).rigidLaneSteps).to.be.greaterThan(250);
+    expect(kernelOf(lanes).rigidJsSteps).to.equal(0);
+    expect(lanes.stateHash()).to.equal(js.stateHash());
+  });
+
+  it('coloured, the S3 pile settles as under the JS solver: deepest overlap, height, none escaped (600 steps)', () => {
+    const js = pile('js');
+    const lanes = pile('wasm');
+    for (let k = 0; k < 600; k++) {
+      js.step();
+      lanes.step();
+    }
+    expect(kernelOf(lanes).rigidJsSteps).to.equal(0);
+    expect(allFinite(lanes)).to.equal(true);
+    const [oJs, oLanes] = [deepestOverlap(js), deepestOverlap(lanes)];
+    const [hJs, hLanes] = [heightAndEscaped(js), heightAndEscaped(lanes)];
+    // Measured: deepest overlap 2.9% (JS) and 2.6% (lanes) of a diameter; mean heights within 0.1%.
+    expect(oLanes, `deepest overlap, lanes (JS ${oJs})`).to.be.lessThan(Math.max(0.05, 1.5 * oJs));
+    expect(Math.abs(hLanes.height - hJs.height) / hJs.height, `mean height ${hLanes.height} vs ${hJs.height}`).to.be.lessThan(0.02);
+    expect(hLanes.escaped).to.equal(0);
+    expect(hJs.escaped).to.equal(0);
+  });
+
+  it('contacts that grow mid-run (discs added) lay out again, still the JS doubles one contact a packet', () => {
+    const make = (kernel: 'js' | 'wasm') => {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel } as WorldOptions);
+      world.addRigidBody({ x: 0, y: 1, points: [{ x: -20, y: -0.5 }, { x: 20, y: -0.5 }, { x: 20, y: 0.5 }, { x: -20, y: 0.5 }], type: 'static' });
+      return world;
+    };
+    const js = make('js');
+    const lanes = make('wasm');
+    kernelOf(lanes).rigidSerial = true;
+    for (let wave = 0; wave < 6; wave++) {
+      for (const world of [js, lanes]) {
+        for (let k = 0; k < 40 * (wave + 1); k++) world.addRigidBody({ x: -15 + (k % 30) * 1.01 + (wave % 2) * 0.3, y: -2 - Math.floor(k / 30) * 1.05, radius: 0.5, friction: 0.4 });
+      }
+      for (let k = 0; k < 30; k++) {
+        js.step();
+        lanes.step();
+      }
+      expect(lanes.stateHash(), `wave ${wave}`).to.equal(js.stateHash());
+    }
+    expect(kernelOf(lanes).rigidLaneSteps).to.be.greaterThan(100);
+  });
+
+  it('steps with other contacts (boxes: manifold pairs; bouncy discs) run the JS solver, bit for bit', () => {
+    for (const name of ['boxes', 'pyramid'] as const) {
+      const d = catalogue[name].make();
+      const js = buildScene({ ...d, world: { ...d.world, kernel: 'js' } as WorldOptions }).world;
+      const lanes = buildScene({ ...d, world: { ...d.world, kernel: 'wasm' } as WorldOptions }).world;
+      for (let k = 0; k < 120; k++) {
+        js.step();
+        lanes.step();
+      }
+      expect(kernelOf(lanes).rigidLaneSteps, name).to.equal(0);
+      expect(kernelOf(lanes).rigidJsSteps, name).to.be.greaterThan(0);
+      expect(lanes.stateHash(), name).to.equal(js.stateHash());
+    }
+    const bouncy = (kernel: 'js' | 'wasm') => {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel } as WorldOptions);
+      world.addRigidBody({ x: 0, y: 1, points: [{ x: -5, y: -0.5 }, { x: 5, y: -0.5 }, { x: 5, y: 0.5 }, { x: -5, y: 0.5 }], type: 'static' });
+      for (let k = 0; k < 5; k++) world.addRigidBody({ x: -3 + k * 1.5, y: -3, radius: 0.5, restitution: 0.6 });
+      return world;
+    };
+    const js = bouncy('js');
+    const lanes = bouncy('wasm');
+    for (let k = 0; k < 120; k++) {
+      js.step();
+      lanes.step();
+    }
+    expect(kernelOf(lanes).rigidLaneSteps).to.equal(0);
+    expect(lanes.stateHash()).to.equal(js.stateHash());
+  });
+
+  it('a static rigid wall holds a light disc against a rigid hammer of 1-500× its mass at 100-500 units/s (the wall sweeps last)', () => {
+    // wall-squeeze.test.ts's case under the lanes: contacts with a static body are coloured after the others.
+    const r = 1.5;
+    let laneSteps = 0;
+    for (const ratio of [1, 3, 10, 30, 100, 500]) {
+      for (const speed of [100, 250, 500]) {
+        for (const gap of [0.5, 1.1, 2.5]) {
+          const world = new World({ gravity: { x: 0, y: 0 }, bounds: { minX: -50, minY: -20, maxX: 40, maxY: 20 }, sleeping: false, kernel: 'wasm' } as WorldOptions);
+          world.addRigidBody({ x: -0.5, y: 0, points: [{ x: -0.5, y: -10 }, { x: 0.5, y: -10 }, { x: 0.5, y: 10 }, { x: -0.5, y: 10 }], type: 'static' });
+          const disc = world.addRigidBody({ x: r + gap, y: 0, radius: r, mass: 0.06 });
+          // A round hammer: disc against disc and disc against wall are single points, so the lanes take every step.
+          const hammer = world.addRigidBody({ x: r + gap + r + 2.5, y: 0, radius: 0.5, mass: 0.06 * ratio });
+          world.applyBodyImpulse(hammer, -speed * 0.06 * ratio, 0);
+          let deepest = Infinity;
+          for (let k = 0; k < 60; k++) {
+            world.step();
+            deepest = Math.min(deepest, world.bodyPose(disc).x - r);
+          }
+          laneSteps += kernelOf(world).rigidLaneSteps;
+          // Heavier hammers (30-500×) start the shock sweep (a stack of levels) at the hit: that step is the JS solver's.
+          if (ratio < 30) expect(kernelOf(world).rigidJsSteps, `ratio ${ratio}, ${speed} u/s, gap ${gap}`).to.equal(0);
+          expect(world.bodyPose(disc).x, `ratio ${ratio}, ${speed} u/s, gap ${gap}: ends on the near side`).to.be.greaterThan(r - 0.01);
+          expect(deepest, `ratio ${ratio}, ${speed} u/s, gap ${gap}`).to.be.greaterThan(-0.01);
+        }
+      }
+    }
+    expect(laneSteps).to.be.greaterThan(27 * 20);
+  });
+
+  it('a box hammer (manifold pairs) leaves those steps to the JS solver and the wall still holds', () => {
+    const r = 1.5;
+    const world = new World({ gravity: { x: 0, y: 0 }, bounds: { minX: -50, minY: -20, maxX: 40, maxY: 20 }, sleeping: false, kernel: 'wasm' } as WorldOptions);
+    world.addRigidBody({ x: -0.5, y: 0, points: [{ x: -0.5, y: -10 }, { x: 0.5, y: -10 }, { x: 0.5, y: 10 }, { x: -0.5, y: 10 }], type: 'static' });
+    const disc = world.addRigidBody({ x: r + 0.5, y: 0, radius: r, mass: 0.06 });
+    const hammer = createBox(world, { x: r + 0.5 + r + 2.5, y: 0, width: 1, height: 1, model: 'rigid', mass: 30 });
+    world.applyBodyImpulse(hammer.body, -500 * 30, 0);
+    let deepest = Infinity;
+    for (let k = 0; k < 60; k++) {
+      world.step();
+      deepest = Math.min(deepest, world.bodyPose(disc).x - r);
+    }
+    expect(deepest).to.be.greaterThan(-0.01);
+  });
+});
