@@ -157,7 +157,7 @@ export class EngineClient {
     client = new EngineClient('worker', link.transport, (method, args) => link.invoke(method, args), () => link.close(), options);
     client.link = link;
     const c = client;
-    link.port.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data);
+    link.port.onmessage = (e: MessageEvent<PortMessage>) => c.receive(e.data, link.port);
     if (diedEarly !== null) c.die(diedEarly);
     return client;
   }
@@ -174,8 +174,8 @@ export class EngineClient {
       client.triple = new TripleBuffer(buffer);
     });
     const host = new EngineHost(publisher, {
-      topology: (topology) => client.receive({ type: 'topology', topology }),
-      events: (data, count) => client.receive({ type: 'events', data, count }),
+      topology: (topology) => client.receive({ type: 'topology', topology }, null),
+      events: (data, count) => client.receive({ type: 'events', data, count }, null),
     });
     track('hosts', 1);
     client = new EngineClient(
@@ -301,12 +301,12 @@ export class EngineClient {
     this.link?.kill();
   }
 
-  private receive(message: PortMessage): void {
+  private receive(message: PortMessage, port: MessagePort | null): void {
     if (this.disposed) return;
     switch (message.type) {
       case 'frame':
-        // A copy of the worker's frame buffer (it is not transferred: publishers.ts), ours to read and drop.
         this.frames.accept(new Float64Array(message.buffer));
+        port?.postMessage({ type: 'recycle', buffer: message.buffer }, [message.buffer]);
         break;
       case 'shared':
         this.triple = new TripleBuffer(message.buffer);

@@ -5,7 +5,7 @@
 // routines, the scene catalogue and so on stay out of the file (they are in physics-elements/engine).
 import './engine.worker.js';
 export { EngineHost } from './engine-host.js';
-export { TripleBufferPublisher } from './publishers.js';
+export { TripleBufferPublisher, TransferPublisher } from './publishers.js';
 export { TripleBuffer } from './triple-buffer.js';
 // The renderer draws a ragdoll's bones as the builder joins them; shape elements check `model` against the engine's list.
 export { BODY_MODELS, RAGDOLL_BONES } from '../engine/index.js';

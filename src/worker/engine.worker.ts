@@ -1,11 +1,10 @@
 // The engine worker: several worlds, one EngineHost each, addressed by a world id the page chose (the page's pool puts
 // many scenes in one worker). Commands come through comlink; each world's frames, topology and events go to its own
-// element on a MessagePort of their own (frames as a SharedArrayBuffer triple buffer or as messages). Nothing is
-// posted with a transfer list: a detached ArrayBuffer would slow every typed-array access in this worker (publishers.ts).
+// element on a MessagePort of their own (frames as a SharedArrayBuffer triple buffer or as transferred ArrayBuffers).
 import * as Comlink from 'comlink';
 import { EngineHost, runningInWorker } from './engine-host.js';
-import { MessagePublisher, TripleBufferPublisher, type Publisher } from './publishers.js';
-import type { EngineApi, PortMessage, Transport } from './protocol.js';
+import { TransferPublisher, TripleBufferPublisher, type Publisher } from './publishers.js';
+import type { EngineApi, PortMessage, ReturnMessage, Transport } from './protocol.js';
 
 /** What the worker exposes through comlink: open() makes a world on its frame port, invoke() calls it, close() ends it. */
 export function workerEndpoint() {
@@ -21,18 +20,21 @@ export function workerEndpoint() {
     /** Makes world `id` (replacing one of that id) on its frame port; 'shared' frames need a cross-origin isolated context. */
     open(id: number, port: MessagePort, wantShared: boolean): { transport: Transport; inWorker: boolean } {
       close(id);
-      // Copies, never transfers (see above).
-      const send = (message: PortMessage) => port.postMessage(message);
+      const send = (message: PortMessage, transfer: Transferable[] = []) => port.postMessage(message, transfer);
       const shared = wantShared && typeof SharedArrayBuffer === 'function' && (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
       let publisher: Publisher;
       if (shared) {
         publisher = new TripleBufferPublisher('shared', (buffer) => send({ type: 'shared', buffer: buffer as SharedArrayBuffer }));
       } else {
-        publisher = new MessagePublisher((buffer) => send({ type: 'frame', buffer }));
+        const transfer = new TransferPublisher((buffer) => send({ type: 'frame', buffer }, [buffer]));
+        port.onmessage = (e: MessageEvent<ReturnMessage>) => {
+          if (e.data?.type === 'recycle') transfer.recycle(e.data.buffer);
+        };
+        publisher = transfer;
       }
       const host = new EngineHost(publisher, {
         topology: (topology) => send({ type: 'topology', topology }),
-        events: (data, count) => send({ type: 'events', data, count }),
+        events: (data, count) => send({ type: 'events', data, count }, [data.buffer]),
       });
       worlds.set(id, { host, port });
       return { transport: publisher.transport, inWorker: runningInWorker() };

@@ -278,3 +278,5 @@ export type PortMessage =
   | { type: 'shared'; buffer: SharedArrayBuffer }
   | { type: 'topology'; topology: Topology }
   | { type: 'events'; data: Float64Array; count: number };
+/** Page → worker: a transfer buffer handed back to the pool. */
+export type ReturnMessage = { type: 'recycle'; buffer: ArrayBuffer };

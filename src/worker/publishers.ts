@@ -1,10 +1,8 @@
 // How the host hands a finished frame to the page. Three ways, one interface:
 //  - 'shared':   a triple buffer in a SharedArrayBuffer (worker, page cross-origin isolated); no message per frame.
-//  - 'transfer': each frame posted to the page as a message, a copy of the worker's one frame buffer (worker, not
-//                isolated). The name is the transport's public one (physics-ready's detail); the buffers are no longer
-//                transferred: see MessagePublisher.
+//  - 'transfer': ArrayBuffers from a small pool, transferred to the page and handed back (worker, not isolated).
 //  - 'direct':   the same triple buffer over a plain ArrayBuffer (main-thread mode).
-// None allocates per frame in the steady state in the worker: buffers are only made when the scene outgrows them.
+// None allocates per frame in the steady state: buffers are only made when the scene outgrows them.
 import type { Transport } from './protocol.js';
 import { TripleBuffer } from './triple-buffer.js';
 
@@ -51,33 +49,49 @@ export class TripleBufferPublisher implements Publisher {
   }
 }
 
-/**
- * Frames as messages: the worker keeps one buffer, writes each frame into it and posts it, which copies it (a
- * structured clone). Transferring the buffer instead would detach it, and in V8 the first ArrayBuffer detached in a
- * realm (worker) slows every typed-array access of optimised code there for good: the engine's steps ran 25–33% slower
- * (S3 3.2 -> 4.0 ms, S1 0.60 -> 0.80 ms CPU per step in Node after one detach). The copy costs a memcpy of the frame
- * (a 2,000-body frame is tens of KB); the page copies what it receives into its own frame store anyway.
- */
-export class MessagePublisher implements Publisher {
+/** Pool size: the page holds at most one buffer at a time (it copies and hands it back), so a few suffice. */
+const POOL = 4;
+
+export class TransferPublisher implements Publisher {
   readonly transport = 'transfer' as const;
   allocated = 0;
-  private frame: Float64Array | null = null;
+  private pool: ArrayBuffer[] = [];
+  private capacity = 0;
+  /** Buffers of the current capacity in existence (pooled or lent out). */
+  private live = 0;
+  private current: ArrayBuffer | null = null;
 
   constructor(private readonly post: (buffer: ArrayBuffer) => void) {}
 
-  begin(length: number): Float64Array {
-    if (!this.frame || this.frame.length < length) {
-      this.frame = new Float64Array(roomFor(length));
+  begin(length: number): Float64Array | null {
+    if (length > this.capacity) {
+      this.capacity = roomFor(length);
+      this.pool.length = 0;
+      this.live = 0;
+    }
+    let buffer = this.pool.pop();
+    if (!buffer) {
+      if (this.live >= POOL) return null;
+      buffer = new ArrayBuffer(this.capacity * 8);
+      this.live++;
       this.allocated++;
     }
-    return this.frame;
+    this.current = buffer;
+    return new Float64Array(buffer);
   }
 
   commit(): void {
-    this.post(this.frame!.buffer as ArrayBuffer);
+    const buffer = this.current!;
+    this.current = null;
+    this.post(buffer);
+  }
+
+  /** A buffer back from the page. Buffers of an outgrown size are dropped. */
+  recycle(buffer: ArrayBuffer): void {
+    if (buffer.byteLength === this.capacity * 8 && this.pool.length < POOL) this.pool.push(buffer);
   }
 
   dispose(): void {
-    this.frame = null;
+    this.pool.length = 0;
   }
 }

@@ -22,7 +22,7 @@ const cdn = await listen('localhost', (req, res) => {
 });
 const cdnUrl = `http://localhost:${cdn.address().port}/physics-elements.bundle.js`;
 
-// The "CMS page": 127.0.0.1, another port, no COOP/COEP headers (so no SharedArrayBuffer: frames as messages).
+// The "CMS page": 127.0.0.1, another port, no COOP/COEP headers (so no SharedArrayBuffer: transferred buffers).
 const page = `<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>embed</title>
 <style>body { margin: 20px; font: 14px system-ui; } .embed { width: 560px; height: 350px; margin-bottom: 16px; }</style>
@@ -56,7 +56,7 @@ try {
   console.log(JSON.stringify(info));
   check(info.cloth.mode === 'worker' && info.ragdolls.mode === 'worker', 'both engines run in a worker (blob: URL) on a page of another origin');
   check(info.fallback.mode === 'main', 'worker="none": the main-thread engine (the same engine code as the worker\'s) runs');
-  check(info.cloth.transport === 'transfer', 'no cross-origin isolation: frames come as messages (the transfer transport)');
+  check(info.cloth.transport === 'transfer', 'no cross-origin isolation: frames come as transferred ArrayBuffers');
 
   for (const id of ['cloth', 'ragdolls', 'fallback']) check(await animates(tab, id), `#${id} animates: the canvas changes between frames`);
   await tab.screenshot({ path: resolve(artifacts, 'cross-origin-1.png') });

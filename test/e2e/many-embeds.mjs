@@ -1,5 +1,5 @@
 // End-to-end measurement: a text post with 8 <cloth-sim> embeds against the same post with one, as a blogger's page
-// loads dist/physics-elements.bundle.js (no cross-origin isolation: frames as messages). Reports
+// loads dist/physics-elements.bundle.js (no cross-origin isolation: frames as transferred buffers). Reports
 //  - engine workers created (playwright's worker events) at load and once every cloth has been scrolled to: the page's
 //    pool makes at most 2 (fails otherwise);
 //  - how many cloths start at load (only those near the viewport should);

@@ -28,7 +28,7 @@ export interface PhysicsCollisionDetail {
 export interface PhysicsReadyDetail {
   /** Where the engine runs. */
   mode: 'worker' | 'main';
-  /** How states reach the page: SharedArrayBuffer ('shared'), messages carrying copies ('transfer'), or directly (main thread). */
+  /** How states reach the page: SharedArrayBuffer, transferred ArrayBuffers, or directly (main thread). */
   transport: Transport;
 }
 
