@@ -197,13 +197,18 @@ function resetMultipliers(ctx: StepContext): void {
   // The kernel keeps the distance multipliers in its own lanes (and starts them at zero itself).
   const kernel = kernelAtWork(ctx);
   if (kernel) kernel.resetLambdas();
-  else distances.lambda.fill(0, 0, distances.count);
-  angles.lambda.fill(0, 0, angles.count);
-  areas.lambda.fill(0, 0, areas.count);
-  pins.lambdaX.fill(0, 0, pins.count);
-  pins.lambdaY.fill(0, 0, pins.count);
-  grabs.lambdaX.fill(0, 0, grabs.count);
-  grabs.lambdaY.fill(0, 0, grabs.count);
+  else if (distances.count > 0) distances.lambda.fill(0, 0, distances.count);
+  // Only the tables in use: each fill is a call, and most worlds use one or two kinds (a fixed cost of every substep).
+  if (angles.count > 0) angles.lambda.fill(0, 0, angles.count);
+  if (areas.count > 0) areas.lambda.fill(0, 0, areas.count);
+  if (pins.count > 0) {
+    pins.lambdaX.fill(0, 0, pins.count);
+    pins.lambdaY.fill(0, 0, pins.count);
+  }
+  if (grabs.count > 0) {
+    grabs.lambdaX.fill(0, 0, grabs.count);
+    grabs.lambdaY.fill(0, 0, grabs.count);
+  }
 }
 
 /** One Gauss–Seidel sweep over every constraint, then the joints, the contacts and the bounds. */

@@ -607,17 +607,24 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
   const { a: A, b: B, b2: B2, pair } = c;
   const { invMass, invInertia } = r;
   const n = c.count;
-  let edges = 0;
-  for (let i = 0; i < n; i++) if (B2[i] >= 0) edges++;
-  c.edgePoints = edges;
+  // Whether some contact needs the sweep; when no two movable rows' masses differ that much (S1, S2, S3: all bodies
+  // alike), no contact can, and the pass over the contacts only counts the edge points.
+  const spread = massesSpread(invMass, r.count);
   let needed = false;
-  for (let i = 0; i < n && !needed; i++) {
+  let edges = 0;
+  for (let i = 0; i < n; i++) {
+    if (B2[i] >= 0) {
+      edges++;
+      continue;
+    }
+    if (needed || !spread) continue;
     const ib = B[i];
-    if (ib < 0 || B2[i] >= 0 || invInertia[ib] === 0) continue;
+    if (ib < 0 || invInertia[ib] === 0) continue;
     const ma = invMass[A[i]];
     const mb = invMass[ib];
     needed = ma > 0 && mb > 0 && (ma > SHOCK_MASS_RATIO * mb || mb > SHOCK_MASS_RATIO * ma);
   }
+  c.edgePoints = edges;
   if (!needed) return;
   if (c.level.length < invMass.length) c.level = grown(c.level, invMass.length);
   if (c.shockOrder.length < n) c.shockOrder = grown(c.shockOrder, n);
@@ -664,6 +671,23 @@ export function orderForShock(c: RigidContacts, r: BodyRows): void {
       c.shockCount = start[MAX_LEVEL + 1];
     }
   }
+}
+
+/**
+ * Whether two movable rows' inverse masses differ SHOCK_MASS_RATIO× or more: the largest above that many times the
+ * smallest. (If some pair has ma > R·mb, then largest ≥ ma > R·mb ≥ R·smallest: false rules every contact out.)
+ */
+function massesSpread(invMass: Float64Array, count: number): boolean {
+  let lo = Infinity;
+  let hi = 0;
+  for (let i = 0; i < count; i++) {
+    const m = invMass[i];
+    if (m > 0) {
+      if (m < lo) lo = m;
+      if (m > hi) hi = m;
+    }
+  }
+  return hi > SHOCK_MASS_RATIO * lo;
 }
 
 /**

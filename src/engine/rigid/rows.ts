@@ -9,6 +9,8 @@
 // than keeping cos and sin exact through every one of thousands of corrections.
 
 export interface BodyRows {
+  /** Rows in use. */
+  count: number;
   x: Float64Array;
   y: Float64Array;
   /** Pose at the start of the substep. */
@@ -73,20 +75,35 @@ export function turnBySpin(b: BodyRows, i: number): void {
  */
 export function syncRotation(b: BodyRows, rows: Int32Array, count: number, exact: boolean): void {
   const { angle, qangle, rc, rs } = b;
+  if (exact) {
+    for (let k = 0; k < count; k++) {
+      const i = rows[k];
+      const a = angle[i];
+      rc[i] = Math.cos(a);
+      rs[i] = Math.sin(a);
+      qangle[i] = a;
+    }
+    return;
+  }
+  // rotate()'s arithmetic written out, as in integrateRotation.
   for (let k = 0; k < count; k++) {
     const i = rows[k];
     const a = angle[i];
-    if (exact) {
+    const d = a - qangle[i];
+    if (d === 0) continue;
+    qangle[i] = a;
+    if (d < 1e-3 && d > -1e-3) {
+      const c = rc[i];
+      const s = rs[i];
+      const d2 = d * d;
+      const cd = 1 - d2 * 0.5 + d2 * d2 * (1 / 24);
+      const sd = d * (1 - d2 * (1 / 6) + d2 * d2 * (1 / 120));
+      rc[i] = c * cd - s * sd;
+      rs[i] = s * cd + c * sd;
+    } else {
       rc[i] = Math.cos(a);
       rs[i] = Math.sin(a);
-    } else {
-      const d = a - qangle[i];
-      if (d === 0) continue;
-      turnTo[0] = d;
-      turnTo[1] = a;
-      rotate(b, i);
     }
-    qangle[i] = a;
   }
 }
 
@@ -102,10 +119,11 @@ export const MAX_TURN = 0.5;
 export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32Array, count: number, step: Float64Array): void {
   const h = step[0];
   const damp = step[1];
-  const { angle, pangle, omega, invInertia, qangle } = b;
+  const { angle, pangle, omega, invInertia, qangle, rc, rs } = b;
   for (let k = 0; k < count; k++) {
     const i = rows[k];
-    pangle[i] = angle[i];
+    const a0 = angle[i];
+    pangle[i] = a0;
     const iI = invInertia[i];
     let w = iI > 0 ? (omega[i] + h * torque[i] * iI) * damp : omega[i];
     // At most half a radian a substep (Box2D caps a step's turn likewise): a body spun faster than the substeps can
@@ -113,15 +131,24 @@ export function integrateRotation(b: BodyRows, torque: Float64Array, rows: Int32
     if (w * h > MAX_TURN) w = MAX_TURN / h;
     else if (w * h < -MAX_TURN) w = -MAX_TURN / h;
     omega[i] = w;
-    const a = angle[i] + h * w;
+    const a = a0 + h * w;
     angle[i] = a;
-    // The rotation follows here, as syncRotation(b, rows, count, false) would (one pass over the rows, not two).
+    // The rotation follows here, as syncRotation(b, rows, count, false) would (one pass over the rows, not two), with
+    // rotate()'s arithmetic written out (a call per row costs more than the turn).
     const d = a - qangle[i];
-    if (d !== 0) {
-      turnTo[0] = d;
-      turnTo[1] = a;
-      rotate(b, i);
-      qangle[i] = a;
+    if (d === 0) continue;
+    qangle[i] = a;
+    if (d < 1e-3 && d > -1e-3) {
+      const c = rc[i];
+      const s = rs[i];
+      const d2 = d * d;
+      const cd = 1 - d2 * 0.5 + d2 * d2 * (1 / 24);
+      const sd = d * (1 - d2 * (1 / 6) + d2 * d2 * (1 / 120));
+      rc[i] = c * cd - s * sd;
+      rs[i] = s * cd + c * sd;
+    } else {
+      rc[i] = Math.cos(a);
+      rs[i] = Math.sin(a);
     }
   }
 }
