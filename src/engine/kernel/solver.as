@@ -474,3 +474,331 @@ export function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usi
   }
 }
 
+
+// ---- Manifolds in lanes (issue 14): a step with two-point manifolds ---------------------------------------------
+// A step whose rigid contacts include manifold pairs (boxes, polygons lying on a face) lays every contact out by
+// manifold: one manifold a lane, two lanes a packet (coloured by bodies as above, the world and static bodies last),
+// each lane holding its two points, the second inactive for a lone point (allowance +∞, so never overlapping; `two`
+// 0). The formulas and their order of operations are solveRigidContacts' inline path (the 2×2 block normal solve, or
+// one point after the other when it would pull; the manifold's friction at its points' midpoint) and
+// solveRigidContactVelocities' (the 2×2 block on speeds, with the partner joining within two substeps' approach).
+// A lane the JS solver skips (nothing overlaps, nothing to apply) writes its bodies back unchanged.
+//
+// Packet of two manifolds (bytes): 0: i32 ia0, ia1, ib0, ib1 (row × 8); then f64×2 fields at 16 + 16k:
+//   k 0 nx  1 ny  2 friction  3 imA  4 iiA  5 imB  6 iiB  7 two (all-ones lanes)  8 impulseT  9 slip (point 0)
+//    10 slip (point 1)  11 kn01 (written by the sweep)
+//   point p at k = 12 + 18p: +0 rAx +1 rAy +2 rBx +3 rBy +4 radA +5 radB +6 allowance +7 lambdaN +8 impulseN +9 gap
+//    +10 touched (all-ones lanes)  +11 lAx +12 lAy +13 lBx +14 lBy +15 rnA +16 rnB +17 wn (written by the sweep)
+const MANIFOLD_PACKET: usize = 784;
+const P0: usize = 16 + 16 * 12;
+const P1: usize = 16 + 16 * 30;
+
+@inline function mf(pk: usize, k: usize): v128 {
+  return v128.load(pk + 16 + 16 * k);
+}
+
+@inline function mput(pk: usize, k: usize, v: v128): void {
+  v128.store(pk + 16 + 16 * k, v);
+}
+
+/** The substep's start for manifold packets: λn 0, allowances shrink by maxPush (+∞ stays +∞). */
+export function manifoldBegin(packets: usize, count: i32, maxPush: f64): void {
+  const zero = f64x2.splat(0);
+  const push = f64x2.splat(maxPush);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * MANIFOLD_PACKET;
+    v128.store(pk + P0, zero, 16 * 7);
+    v128.store(pk + P1, zero, 16 * 7);
+    const left0 = f64x2.sub(v128.load(pk + P0, 16 * 6), push);
+    v128.store(pk + P0, v128.bitselect(left0, zero, f64x2.gt(left0, zero)), 16 * 6);
+    const left1 = f64x2.sub(v128.load(pk + P1, 16 * 6), push);
+    v128.store(pk + P1, v128.bitselect(left1, zero, f64x2.gt(left1, zero)), 16 * 6);
+  }
+}
+
+/** Math.max(0, v) per lane (v finite or ±∞). */
+@inline function max0(v: v128): v128 {
+  return v128.and(v, f64x2.gt(v, f64x2.splat(0)));
+}
+
+/** One position sweep over `count` manifold packets (solveRigidContacts' inline path, lane by lane). */
+export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
+  const zero = f64x2.splat(0);
+  const half = f64x2.splat(0.5);
+  const quarter = f64x2.splat(0.25);
+  const tiny = f64x2.splat(1e-9);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * MANIFOLD_PACKET;
+    const q0 = pk + P0;
+    const q1 = pk + P1;
+    const oa0 = <usize>load<i32>(pk);
+    const oa1 = <usize>load<i32>(pk, 4);
+    const ob0 = <usize>load<i32>(pk, 8);
+    const ob1 = <usize>load<i32>(pk, 12);
+    const nx = mf(pk, 0);
+    const ny = mf(pk, 1);
+    const ax0 = gather2(x, oa0, oa1);
+    const ay0 = gather2(y, oa0, oa1);
+    const bx0 = gather2(x, ob0, ob1);
+    const by0 = gather2(y, ob0, ob1);
+    const angA0 = gather2(angle, oa0, oa1);
+    const angB0 = gather2(angle, ob0, ob1);
+    let dA = f64x2.sub(angA0, gather2(qangle, oa0, oa1));
+    let dB = f64x2.sub(angB0, gather2(qangle, ob0, ob1));
+    const cA = gather2(rc, oa0, oa1);
+    const sA = gather2(rs, oa0, oa1);
+    const cB = gather2(rc, ob0, ob1);
+    const sB = gather2(rs, ob0, ob1);
+    // Material levers (m) and normal levers (l) of both points (a round side's normal lever runs along n).
+    let rx = v128.load(q0);
+    let ry = v128.load(q0, 16);
+    const mA0x = f64x2.sub(f64x2.mul(cA, rx), f64x2.mul(sA, ry));
+    const mA0y = f64x2.add(f64x2.mul(sA, rx), f64x2.mul(cA, ry));
+    rx = v128.load(q0, 32);
+    ry = v128.load(q0, 48);
+    const mB0x = f64x2.sub(f64x2.mul(cB, rx), f64x2.mul(sB, ry));
+    const mB0y = f64x2.add(f64x2.mul(sB, rx), f64x2.mul(cB, ry));
+    rx = v128.load(q1);
+    ry = v128.load(q1, 16);
+    const mA1x = f64x2.sub(f64x2.mul(cA, rx), f64x2.mul(sA, ry));
+    const mA1y = f64x2.add(f64x2.mul(sA, rx), f64x2.mul(cA, ry));
+    rx = v128.load(q1, 32);
+    ry = v128.load(q1, 48);
+    const mB1x = f64x2.sub(f64x2.mul(cB, rx), f64x2.mul(sB, ry));
+    const mB1y = f64x2.add(f64x2.mul(sB, rx), f64x2.mul(cB, ry));
+    let rad = v128.load(q0, 64);
+    let round = f64x2.gt(rad, zero);
+    const lA0x = v128.bitselect(f64x2.mul(nx, rad), mA0x, round);
+    const lA0y = v128.bitselect(f64x2.mul(ny, rad), mA0y, round);
+    rad = v128.load(q0, 80);
+    round = f64x2.gt(rad, zero);
+    const lB0x = v128.bitselect(f64x2.mul(f64x2.neg(nx), rad), mB0x, round);
+    const lB0y = v128.bitselect(f64x2.mul(f64x2.neg(ny), rad), mB0y, round);
+    rad = v128.load(q1, 64);
+    round = f64x2.gt(rad, zero);
+    const lA1x = v128.bitselect(f64x2.mul(nx, rad), mA1x, round);
+    const lA1y = v128.bitselect(f64x2.mul(ny, rad), mA1y, round);
+    rad = v128.load(q1, 80);
+    round = f64x2.gt(rad, zero);
+    const lB1x = v128.bitselect(f64x2.mul(f64x2.neg(nx), rad), mB1x, round);
+    const lB1y = v128.bitselect(f64x2.mul(f64x2.neg(ny), rad), mB1y, round);
+    // Overlaps past their allowances.
+    const g0 = f64x2.sub(f64x2.add(
+      f64x2.mul(f64x2.sub(f64x2.sub(f64x2.add(ax0, lA0x), f64x2.mul(dA, lA0y)), f64x2.sub(f64x2.add(bx0, lB0x), f64x2.mul(dB, lB0y))), nx),
+      f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay0, lA0y), f64x2.mul(dA, lA0x)), f64x2.add(f64x2.add(by0, lB0y), f64x2.mul(dB, lB0x))), ny)),
+      v128.load(q0, 96));
+    const g1 = f64x2.sub(f64x2.add(
+      f64x2.mul(f64x2.sub(f64x2.sub(f64x2.add(ax0, lA1x), f64x2.mul(dA, lA1y)), f64x2.sub(f64x2.add(bx0, lB1x), f64x2.mul(dB, lB1y))), nx),
+      f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay0, lA1y), f64x2.mul(dA, lA1x)), f64x2.add(f64x2.add(by0, lB1y), f64x2.mul(dB, lB1x))), ny)),
+      v128.load(q1, 96));
+    v128.store(q0, g0, 144);
+    v128.store(q1, g1, 144);
+    const over0 = f64x2.gt(g0, zero);
+    const over1 = f64x2.gt(g1, zero);
+    const acts = v128.or(over0, over1);
+    if (!v128.any_true(acts)) continue;
+    // The manifold acts: weights, and what the velocity pass reads, for both points.
+    const two = mf(pk, 7);
+    const imA = mf(pk, 3);
+    const iiA = mf(pk, 4);
+    const imB = mf(pk, 5);
+    const iiB = mf(pk, 6);
+    const rnA0 = f64x2.sub(f64x2.mul(lA0x, ny), f64x2.mul(lA0y, nx));
+    const rnB0 = f64x2.sub(f64x2.mul(lB0x, ny), f64x2.mul(lB0y, nx));
+    const rnA1 = f64x2.sub(f64x2.mul(lA1x, ny), f64x2.mul(lA1y, nx));
+    const rnB1 = f64x2.sub(f64x2.mul(lB1x, ny), f64x2.mul(lB1y, nx));
+    const k00 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rnA0), rnA0)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rnB0), rnB0)));
+    const k11 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rnA1), rnA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rnB1), rnB1)));
+    const k01 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rnA0), rnA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rnB0), rnB1)));
+    v128.store(q0, lA0x, 16 * 11);
+    v128.store(q0, lA0y, 16 * 12);
+    v128.store(q0, lB0x, 16 * 13);
+    v128.store(q0, lB0y, 16 * 14);
+    v128.store(q0, rnA0, 16 * 15);
+    v128.store(q0, rnB0, 16 * 16);
+    v128.store(q0, k00, 16 * 17);
+    v128.store(q1, lA1x, 16 * 11);
+    v128.store(q1, lA1y, 16 * 12);
+    v128.store(q1, lB1x, 16 * 13);
+    v128.store(q1, lB1y, 16 * 14);
+    v128.store(q1, rnA1, 16 * 15);
+    v128.store(q1, rnB1, 16 * 16);
+    v128.store(q1, k11, 16 * 17);
+    mput(pk, 11, k01);
+    // Normal corrections: the 2×2 block when both overlap and it pushes, else the deeper point first, then the other
+    // as far as it still overlaps (a lone point: its own correction, the second stays 0).
+    const det = f64x2.sub(f64x2.mul(k00, k11), f64x2.mul(k01, k01));
+    const block = v128.and(v128.and(over0, over1), f64x2.gt(det, f64x2.mul(f64x2.mul(tiny, k00), k11)));
+    let l0 = v128.and(f64x2.div(f64x2.sub(f64x2.mul(k11, g0), f64x2.mul(k01, g1)), det), block);
+    let l1 = v128.and(f64x2.div(f64x2.sub(f64x2.mul(k00, g1), f64x2.mul(k01, g0)), det), block);
+    const pushes = v128.and(f64x2.gt(l0, zero), f64x2.gt(l1, zero));
+    if (!i64x2.all_true(pushes)) {
+      const k00p = f64x2.gt(k00, zero);
+      const k11p = f64x2.gt(k11, zero);
+      const fa0 = v128.and(f64x2.div(g0, k00), k00p);
+      const fa1 = v128.and(max0(f64x2.div(f64x2.sub(g1, f64x2.mul(k01, fa0)), k11)), k11p);
+      const fb1 = v128.and(f64x2.div(g1, k11), k11p);
+      const fb0 = v128.and(max0(f64x2.div(f64x2.sub(g0, f64x2.mul(k01, fb1)), k00)), k00p);
+      const first = f64x2.ge(g0, g1);
+      l0 = v128.bitselect(l0, v128.bitselect(fa0, fb0, first), pushes);
+      l1 = v128.bitselect(l1, v128.bitselect(fa1, fb1, first), pushes);
+    }
+    l0 = v128.and(l0, acts);
+    l1 = v128.and(l1, v128.and(acts, two));
+    const t0 = v128.or(over0, f64x2.gt(l0, zero));
+    const t1 = v128.or(over1, f64x2.gt(l1, zero));
+    v128.store(q0, v128.or(v128.load(q0, 160), t0), 160);
+    v128.store(q1, v128.or(v128.load(q1, 160), t1), 160);
+    // Apply: A back along n, B forward, each turned by its levers' cross products (nothing when ln is 0).
+    const ln = f64x2.add(l0, l1);
+    const moves = f64x2.ne(ln, zero);
+    const mlA = f64x2.mul(imA, ln);
+    const ax1 = v128.bitselect(f64x2.sub(ax0, f64x2.mul(mlA, nx)), ax0, moves);
+    const ay1 = v128.bitselect(f64x2.sub(ay0, f64x2.mul(mlA, ny)), ay0, moves);
+    const tA = f64x2.mul(iiA, f64x2.add(f64x2.mul(l0, rnA0), v128.and(f64x2.mul(l1, rnA1), two)));
+    const angA1 = v128.bitselect(f64x2.sub(angA0, tA), angA0, moves);
+    dA = v128.bitselect(f64x2.sub(dA, tA), dA, moves);
+    const mlB = f64x2.mul(imB, ln);
+    const bx1 = v128.bitselect(f64x2.add(bx0, f64x2.mul(mlB, nx)), bx0, moves);
+    const by1 = v128.bitselect(f64x2.add(by0, f64x2.mul(mlB, ny)), by0, moves);
+    const tB = f64x2.mul(iiB, f64x2.add(f64x2.mul(l0, rnB0), v128.and(f64x2.mul(l1, rnB1), two)));
+    const angB1 = v128.bitselect(f64x2.add(angB0, tB), angB0, moves);
+    dB = v128.bitselect(f64x2.add(dB, tB), dB, moves);
+    const lambda0 = v128.bitselect(f64x2.add(v128.load(q0, 112), l0), v128.load(q0, 112), moves);
+    const lambda1 = v128.bitselect(f64x2.add(v128.load(q1, 112), l1), v128.load(q1, 112), moves);
+    const impulse0 = v128.bitselect(f64x2.add(v128.load(q0, 128), l0), v128.load(q0, 128), moves);
+    const impulse1 = v128.bitselect(f64x2.add(v128.load(q1, 128), l1), v128.load(q1, 128), moves);
+    v128.store(q0, lambda0, 112);
+    v128.store(q1, lambda1, 112);
+    v128.store(q0, impulse0, 128);
+    v128.store(q1, impulse1, 128);
+    let axN = ax1;
+    let ayN = ay1;
+    let angAN = angA1;
+    let bxN = bx1;
+    let byN = by1;
+    let angBN = angB1;
+    // Friction at the manifold's midpoint (a lone point: at the point), within Coulomb's limit on the step's summed
+    // normal corrections.
+    const mu = mf(pk, 2);
+    const loaded = v128.and(acts, v128.and(f64x2.ne(mu, zero), v128.or(f64x2.gt(lambda0, zero), f64x2.gt(lambda1, zero))));
+    if (v128.any_true(loaded)) {
+      const drift0 = f64x2.add(
+        f64x2.mul(f64x2.neg(f64x2.sub(f64x2.sub(f64x2.add(ax1, mA0x), f64x2.mul(dA, mA0y)), f64x2.sub(f64x2.add(bx1, mB0x), f64x2.mul(dB, mB0y)))), ny),
+        f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay1, mA0y), f64x2.mul(dA, mA0x)), f64x2.add(f64x2.add(by1, mB0y), f64x2.mul(dB, mB0x))), nx));
+      const drift1 = f64x2.add(
+        f64x2.mul(f64x2.neg(f64x2.sub(f64x2.sub(f64x2.add(ax1, mA1x), f64x2.mul(dA, mA1y)), f64x2.sub(f64x2.add(bx1, mB1x), f64x2.mul(dB, mB1y)))), ny),
+        f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay1, mA1y), f64x2.mul(dA, mA1x)), f64x2.add(f64x2.add(by1, mB1y), f64x2.mul(dB, mB1x))), nx));
+      const rtA0 = f64x2.add(f64x2.mul(mA0x, nx), f64x2.mul(mA0y, ny));
+      const rtB0 = f64x2.add(f64x2.mul(mB0x, nx), f64x2.mul(mB0y, ny));
+      const rtA1 = f64x2.add(f64x2.mul(mA1x, nx), f64x2.mul(mA1y, ny));
+      const rtB1 = f64x2.add(f64x2.mul(mB1x, nx), f64x2.mul(mB1y, ny));
+      const w0 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA0), rtA0)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB0), rtB0)));
+      const w1 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA1), rtA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB1), rtB1)));
+      const kt01 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA0), rtA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB0), rtB1)));
+      const slip = mf(pk, 9);
+      const drift = f64x2.sub(v128.bitselect(f64x2.mul(half, f64x2.add(drift0, drift1)), drift0, two), slip);
+      const la = v128.bitselect(f64x2.mul(half, f64x2.add(rtA0, rtA1)), rtA0, two);
+      const lb = v128.bitselect(f64x2.mul(half, f64x2.add(rtB0, rtB1)), rtB0, two);
+      const w = v128.bitselect(f64x2.add(f64x2.mul(quarter, f64x2.add(w0, w1)), f64x2.mul(half, kt01)), w0, two);
+      const load = v128.bitselect(f64x2.add(impulse0, impulse1), impulse0, two);
+      const holds = v128.and(loaded, f64x2.gt(w, zero));
+      const want = f64x2.div(drift, w);
+      const limit = f64x2.mul(mu, load);
+      const before = mf(pk, 8);
+      const total = f64x2.pmax(f64x2.pmin(f64x2.add(before, want), limit), f64x2.neg(limit));
+      const dt = f64x2.sub(total, before);
+      mput(pk, 8, v128.bitselect(total, before, holds));
+      const slipped = f64x2.add(slip, f64x2.mul(f64x2.sub(want, dt), w));
+      mput(pk, 9, v128.bitselect(slipped, slip, holds));
+      mput(pk, 10, v128.bitselect(slipped, mf(pk, 10), v128.and(holds, two)));
+      const tlA = f64x2.mul(imA, dt);
+      axN = v128.bitselect(f64x2.add(ax1, f64x2.mul(tlA, ny)), ax1, holds);
+      ayN = v128.bitselect(f64x2.sub(ay1, f64x2.mul(tlA, nx)), ay1, holds);
+      angAN = v128.bitselect(f64x2.sub(angA1, f64x2.mul(f64x2.mul(iiA, la), dt)), angA1, holds);
+      const tlB = f64x2.mul(imB, dt);
+      bxN = v128.bitselect(f64x2.sub(bx1, f64x2.mul(tlB, ny)), bx1, holds);
+      byN = v128.bitselect(f64x2.add(by1, f64x2.mul(tlB, nx)), by1, holds);
+      angBN = v128.bitselect(f64x2.add(angB1, f64x2.mul(f64x2.mul(iiB, lb), dt)), angB1, holds);
+    }
+    scatter2(x, oa0, oa1, axN);
+    scatter2(y, oa0, oa1, ayN);
+    scatter2(angle, oa0, oa1, angAN);
+    scatter2(x, ob0, ob1, bxN);
+    scatter2(y, ob0, ob1, byN);
+    scatter2(angle, ob0, ob1, angBN);
+  }
+}
+
+/** The velocity pass over manifold packets (restitution 0: target speed 0); h the substep's length. */
+export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32, h: f64): void {
+  const zero = f64x2.splat(0);
+  const tiny = f64x2.splat(1e-9);
+  const twice = f64x2.splat(2);
+  const vh = f64x2.splat(h);
+  for (let k = 0; k < count; k++) {
+    const pk = packets + <usize>k * MANIFOLD_PACKET;
+    const q0 = pk + P0;
+    const q1 = pk + P1;
+    const acted0 = f64x2.gt(v128.load(q0, 112), zero);
+    const acted1 = f64x2.gt(v128.load(q1, 112), zero);
+    const acted = v128.or(acted0, acted1);
+    if (!v128.any_true(acted)) continue;
+    const oa0 = <usize>load<i32>(pk);
+    const oa1 = <usize>load<i32>(pk, 4);
+    const ob0 = <usize>load<i32>(pk, 8);
+    const ob1 = <usize>load<i32>(pk, 12);
+    const nx = mf(pk, 0);
+    const ny = mf(pk, 1);
+    const two = mf(pk, 7);
+    const vax = gather2(vx, oa0, oa1);
+    const vay = gather2(vy, oa0, oa1);
+    const wa = gather2(omega, oa0, oa1);
+    const vbx = gather2(vx, ob0, ob1);
+    const vby = gather2(vy, ob0, ob1);
+    const wb = gather2(omega, ob0, ob1);
+    const rvx = f64x2.sub(vbx, vax);
+    const rvy = f64x2.sub(vby, vay);
+    // v = (rvx − wb·lBy + wa·lAy)·nx + (rvy + wb·lBx − wa·lAx)·ny, per point.
+    const v0 = f64x2.add(
+      f64x2.mul(f64x2.add(f64x2.sub(rvx, f64x2.mul(wb, v128.load(q0, 16 * 14))), f64x2.mul(wa, v128.load(q0, 16 * 12))), nx),
+      f64x2.mul(f64x2.sub(f64x2.add(rvy, f64x2.mul(wb, v128.load(q0, 16 * 13))), f64x2.mul(wa, v128.load(q0, 16 * 11))), ny));
+    const v1 = f64x2.add(
+      f64x2.mul(f64x2.add(f64x2.sub(rvx, f64x2.mul(wb, v128.load(q1, 16 * 14))), f64x2.mul(wa, v128.load(q1, 16 * 12))), nx),
+      f64x2.mul(f64x2.sub(f64x2.add(rvy, f64x2.mul(wb, v128.load(q1, 16 * 13))), f64x2.mul(wa, v128.load(q1, 16 * 11))), ny));
+    // A point joins when it acted, or when its partner acted while it was within two substeps' approach.
+    const use0 = v128.and(acted, v128.or(acted0, v128.and(f64x2.lt(v0, zero), f64x2.gt(v128.load(q0, 144), f64x2.mul(f64x2.mul(twice, v0), vh)))));
+    const use1 = v128.and(v128.and(acted, two), v128.or(acted1, v128.and(f64x2.lt(v1, zero), f64x2.gt(v128.load(q1, 144), f64x2.mul(f64x2.mul(twice, v1), vh)))));
+    const b0 = f64x2.sub(zero, v0);
+    const b1 = f64x2.sub(zero, v1);
+    const k00 = v128.load(q0, 16 * 17);
+    const k11 = v128.load(q1, 16 * 17);
+    const k01 = mf(pk, 11);
+    const both = v128.and(use0, use1);
+    // Both: the 2×2 block, or (dependent) one after the other without measuring again.
+    const det = f64x2.sub(f64x2.mul(k00, k11), f64x2.mul(k01, k01));
+    const block = f64x2.gt(det, f64x2.mul(f64x2.mul(tiny, k00), k11));
+    const pb0 = f64x2.div(f64x2.sub(f64x2.mul(k11, b0), f64x2.mul(k01, b1)), det);
+    const pb1 = f64x2.div(f64x2.sub(f64x2.mul(k00, b1), f64x2.mul(k01, b0)), det);
+    const pf0 = f64x2.div(b0, k00);
+    const pf1 = f64x2.div(f64x2.sub(b1, f64x2.mul(k01, pf0)), k11);
+    // One point: its own, where its weight is positive.
+    const po0 = v128.and(pf0, f64x2.gt(k00, zero));
+    const po1 = v128.and(f64x2.div(b1, k11), f64x2.gt(k11, zero));
+    const p0 = v128.bitselect(v128.bitselect(pb0, pf0, block), v128.and(po0, use0), both);
+    const p1 = v128.bitselect(v128.bitselect(pb1, pf1, block), v128.and(po1, use1), both);
+    const kicks = v128.and(acted, v128.not(v128.and(f64x2.eq(p0, zero), f64x2.eq(p1, zero))));
+    if (!v128.any_true(kicks)) continue;
+    const P = f64x2.add(p0, p1);
+    const mpA = f64x2.mul(mf(pk, 3), P);
+    const mpB = f64x2.mul(mf(pk, 5), P);
+    const tA = f64x2.mul(mf(pk, 4), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 15)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 15)), two)));
+    const tB = f64x2.mul(mf(pk, 6), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 16)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 16)), two)));
+    scatter2(vx, oa0, oa1, v128.bitselect(f64x2.sub(vax, f64x2.mul(mpA, nx)), vax, kicks));
+    scatter2(vy, oa0, oa1, v128.bitselect(f64x2.sub(vay, f64x2.mul(mpA, ny)), vay, kicks));
+    scatter2(omega, oa0, oa1, v128.bitselect(f64x2.sub(wa, tA), wa, kicks));
+    scatter2(vx, ob0, ob1, v128.bitselect(f64x2.add(vbx, f64x2.mul(mpB, nx)), vbx, kicks));
+    scatter2(vy, ob0, ob1, v128.bitselect(f64x2.add(vby, f64x2.mul(mpB, ny)), vby, kicks));
+    scatter2(omega, ob0, ob1, v128.bitselect(f64x2.add(wb, tB), wb, kicks));
+  }
+}

@@ -34,6 +34,13 @@ const RIGID_PACKET = 448;
 const RIGID_F64 = RIGID_PACKET / 8;
 const RF = { nx: 1, ny: 2, rAx: 3, rAy: 4, rBx: 5, rBy: 6, radA: 7, radB: 8, friction: 9, imA: 10, iiA: 11, imB: 12, iiB: 13, allowance: 14, lambdaN: 15, impulseN: 16, impulseT: 17, slip: 18, gap: 19, touched: 20 };
 const RIGID_FIELDS = 27;
+/**
+ * Bytes per packet of two manifolds (one a lane, each with its two points; see solver.as), its f64 words, and the
+ * field indices: shared fields, then point p's at MP + 18p + field.
+ */
+const MANIFOLD_PACKET = 784;
+const MANIFOLD_F64 = MANIFOLD_PACKET / 8;
+const MANIFOLD_FIELDS = 48;
 /** Colours of the greedy colouring (two 32-bit masks a row), for contacts between movable bodies and for the rest. */
 const COLOURS = 64;
 
@@ -56,6 +63,9 @@ interface KernelExports {
   rigidBegin(packets: number, count: number, maxPush: number): void;
   rigidSweep(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
   rigidVelocities(vx: number, vy: number, omega: number, packets: number, count: number): void;
+  manifoldBegin(packets: number, count: number, maxPush: number): void;
+  manifoldSweep(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
+  manifoldVelocities(vx: number, vy: number, omega: number, packets: number, count: number, h: number): void;
 }
 
 export class WasmKernel {
@@ -94,15 +104,19 @@ export class WasmKernel {
   /** Steps whose rigid contacts ran in the lanes, and steps that had rigid contacts the lanes do not take. */
   rigidLaneSteps = 0;
   rigidJsSteps = 0;
-  /** Byte address of the rigid packets (after the distance data), room for how many, and how many this step. */
+  /** Byte address of the rigid packets (after the distance data), room for how many bytes, and how many this step. */
   private rigidAddress = 0;
   private rigidCapacity = 0;
   private rigidPackets = 0;
-  /** Colouring: masks of the colours each row takes part in (movable–movable, and with a static body or the world). */
-  private lowMask = new Uint32Array(0);
-  private highMask = new Uint32Array(0);
-  private lowStatic = new Uint32Array(0);
-  private highStatic = new Uint32Array(0);
+  /** This step's contacts are laid out by manifold (some are pairs): manifold packets, else single-point packets. */
+  private manifolds = false;
+  /** The step's substep reals ([0]: the substep's length, which the manifolds' velocity pass reads). */
+  private substepReals: Float64Array = new Float64Array(1);
+  /** Steps laid out by manifold (diagnostics and tests). */
+  manifoldSteps = 0;
+  /** Colouring: per row, masks of the colours it takes part in (with movable bodies: 0-31, 32-63; with a static body
+   *  or the world: 0-31, 32-63). */
+  private masks = new Uint32Array(0);
   /** Per contact: its colour (64 + k for the static colours), then its lane (packet s >> 1, lane s & 1). */
   private colourOf = new Int16Array(0);
   private slotOf = new Int32Array(0);
@@ -200,47 +214,54 @@ export class WasmKernel {
     const c = ctx.rigidContacts;
     const p = ctx.particles;
     this.rigidLanes = false;
-    if (!lanesFit(c)) {
+    const fit = lanesFit(c);
+    if (fit === 0) {
       this.rigidJsSteps++;
       return false;
     }
+    const manifolds = fit === 2;
     let layout = this.structureChanged;
     for (const name of COLUMNS) if (p[name].buffer !== this.memory.buffer) layout = true;
     if (layout) this.layOut(ctx);
     const n = c.count;
     const rows = this.capacity + 2;
-    if (this.lowMask.length < rows) {
-      this.lowMask = new Uint32Array(rows);
-      this.highMask = new Uint32Array(rows);
-      this.lowStatic = new Uint32Array(rows);
-      this.highStatic = new Uint32Array(rows);
-    }
+    if (this.masks.length < 4 * rows) this.masks = new Uint32Array(4 * rows);
     if (this.colourOf.length < n) {
       this.colourOf = new Int16Array(2 * n);
       this.slotOf = new Int32Array(2 * n);
     }
-    const { a: A, b: B } = c;
+    const { a: A, b: B, pair } = c;
     const { invMass, invInertia } = p;
-    const { lowMask, highMask, lowStatic, highStatic, colourOf, batchSize: size, batchCursor: cursor } = this;
+    const { masks, colourOf, batchSize: size, batchCursor: cursor } = this;
     let packets: number;
-    if (this.rigidSerial) packets = n;
-    else {
+    if (this.rigidSerial) {
+      // One contact (one manifold) a packet, in list order.
+      packets = 0;
+      for (let i = 0; i < n; i++, packets++) if (manifolds && pair[i] === 1) i++;
+    } else {
       size.fill(0);
-      for (let i = 0; i < n; i++) {
-        lowMask[A[i]] = highMask[A[i]] = lowStatic[A[i]] = highStatic[A[i]] = 0;
-        const ib = B[i];
-        if (ib >= 0) lowMask[ib] = highMask[ib] = lowStatic[ib] = highStatic[ib] = 0;
+      // The masks of the rows in contact cleared: all at once when the contacts are many, else row by row.
+      if (2 * n > rows) masks.fill(0, 0, 4 * rows);
+      else {
+        for (let i = 0; i < n; i++) {
+          const ra = 4 * A[i];
+          masks[ra] = masks[ra + 1] = masks[ra + 2] = masks[ra + 3] = 0;
+          const ib = B[i];
+          if (ib >= 0) masks[4 * ib] = masks[4 * ib + 1] = masks[4 * ib + 2] = masks[4 * ib + 3] = 0;
+        }
       }
+      // Greedy in list order, a manifold (its first point) at a time when laid out by manifold. Per row four masks:
+      // colours taken with movable bodies (0-31, 32-63), then with static bodies or the world.
       for (let i = 0; i < n; i++) {
         const ia = A[i];
         const ib = B[i];
         const movA = invMass[ia] !== 0 || invInertia[ia] !== 0;
         const movB = ib >= 0 && (invMass[ib] !== 0 || invInertia[ib] !== 0);
         const both = movA && movB;
-        const lo = both ? lowMask : lowStatic;
-        const hi = both ? highMask : highStatic;
-        const l = (movA ? lo[ia] : 0) | (movB ? lo[ib] : 0);
-        const h = (movA ? hi[ia] : 0) | (movB ? hi[ib] : 0);
+        const ma = 4 * ia + (both ? 0 : 2);
+        const mb = 4 * ib + (both ? 0 : 2);
+        const l = (movA ? masks[ma] : 0) | (movB ? masks[mb] : 0);
+        const h = (movA ? masks[ma + 1] : 0) | (movB ? masks[mb + 1] : 0);
         // The lowest clear bit of l, else of h.
         const k = ~l !== 0 ? 31 - Math.clz32(~l & (l + 1)) : ~h !== 0 ? 63 - Math.clz32(~h & (h + 1)) : -1;
         if (k < 0) {
@@ -248,20 +269,27 @@ export class WasmKernel {
           return false;
         }
         const bit = 1 << (k & 31);
-        const masks = k < 32 ? lo : hi;
-        if (movA) masks[ia] |= bit;
-        if (movB) masks[ib] |= bit;
+        const word = k < 32 ? 0 : 1;
+        if (movA) masks[ma + word] |= bit;
+        if (movB) masks[mb + word] |= bit;
         const colour = both ? k : COLOURS + k;
         colourOf[i] = colour;
         size[colour]++;
+        if (manifolds && pair[i] === 1) i++;
       }
       // Each colour's batch padded to whole packets.
       cursor[0] = 0;
       for (let k = 0; k < 2 * COLOURS; k++) cursor[k + 1] = cursor[k] + ((size[k] + 1) & ~1);
       packets = cursor[2 * COLOURS] >> 1;
     }
-    if (packets > this.rigidCapacity) this.growRigid(p, packets);
-    this.writeRigid(c, p.invMass, p.invInertia);
+    this.manifolds = manifolds;
+    this.substepReals = ctx.substepReals;
+    const bytes = packets * (manifolds ? MANIFOLD_PACKET : RIGID_PACKET);
+    if (bytes > this.rigidCapacity) this.growRigid(p, bytes);
+    if (manifolds) {
+      this.writeManifolds(c, p.invMass, p.invInertia);
+      this.manifoldSteps++;
+    } else this.writeRigid(c, p.invMass, p.invInertia);
     this.rigidPackets = packets;
     this.rigidLanes = true;
     this.rigidLaneSteps++;
@@ -270,22 +298,29 @@ export class WasmKernel {
 
   /** A substep's start for the lanes (as prepareRigidContacts': no correction yet, allowances shrink by maxPush). */
   rigidBeginSubstep(maxPush: number): void {
-    this.exports.rigidBegin(this.rigidAddress, this.rigidPackets, maxPush);
+    if (this.manifolds) this.exports.manifoldBegin(this.rigidAddress, this.rigidPackets, maxPush);
+    else this.exports.rigidBegin(this.rigidAddress, this.rigidPackets, maxPush);
   }
 
   rigidSweep(): void {
     const m = this.address;
-    this.exports.rigidSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
+    if (this.manifolds) this.exports.manifoldSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
+    else this.exports.rigidSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
   }
 
   rigidVelocities(): void {
     const m = this.address;
-    this.exports.rigidVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets);
+    if (this.manifolds) this.exports.manifoldVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets, this.substepReals[0]);
+    else this.exports.rigidVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets);
   }
 
   /** The step's end: what the JS phases read (anchors, events, sleep) back from the lanes into the contact table. */
   endRigid(c: RigidContacts): void {
     this.rigidLanes = false;
+    if (this.manifolds) {
+      this.endManifolds(c);
+      return;
+    }
     const { f64, i32, slotOf } = this;
     const base = this.rigidAddress / 8;
     const { allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
@@ -302,10 +337,39 @@ export class WasmKernel {
     }
   }
 
-  /** Room for `packets` rigid packets (half as many again): the memory grows, the column views are made again. */
-  private growRigid(p: ParticleStore, packets: number): void {
-    this.rigidCapacity = Math.ceil(packets * 1.5);
-    const bytes = this.rigidAddress + this.rigidCapacity * RIGID_PACKET;
+  /** endRigid for manifold packets: point 0 of a lane to its first contact, point 1 to its partner. */
+  private endManifolds(c: RigidContacts): void {
+    const { f64, i32, slotOf } = this;
+    const base = this.rigidAddress >> 3;
+    const { allowance, lambdaN, impulseN, impulseT, slip, gap, touched, pair } = c;
+    // Literal offsets as in writeManifolds.
+    for (let i = 0, n = c.count; i < n; i++) {
+      const s = slotOf[i];
+      const w = base + (s >> 1) * MANIFOLD_F64 + 2 + (s & 1);
+      impulseT[i] = f64[w + 16];
+      slip[i] = f64[w + 18];
+      allowance[i] = f64[w + 36];
+      lambdaN[i] = f64[w + 38];
+      impulseN[i] = f64[w + 40];
+      gap[i] = f64[w + 42];
+      touched[i] = i32[2 * w + 88] !== 0 ? 1 : 0;
+      if (pair[i] === 1) {
+        // The partner: its own point; its slip follows the manifold's once friction has acted (impulseT stays).
+        const j = ++i;
+        slip[j] = f64[w + 20];
+        allowance[j] = f64[w + 72];
+        lambdaN[j] = f64[w + 74];
+        impulseN[j] = f64[w + 76];
+        gap[j] = f64[w + 78];
+        touched[j] = i32[2 * w + 160] !== 0 ? 1 : 0;
+      }
+    }
+  }
+
+  /** Room for `needed` bytes of rigid packets (half as much again): the memory grows, the column views are made again. */
+  private growRigid(p: ParticleStore, needed: number): void {
+    this.rigidCapacity = Math.ceil(needed * 1.5);
+    const bytes = this.rigidAddress + this.rigidCapacity;
     if (bytes > this.memory.buffer.byteLength) {
       // A new memory with the old bytes: the column views are made again on it.
       this.replaceMemory(Math.max(bytes, this.memory.buffer.byteLength * 1.5), true);
@@ -362,6 +426,115 @@ export class WasmKernel {
     }
   }
 
+  /**
+   * Each manifold's lane (a lone point: its second point inactive, allowance +∞): the rows' byte offsets, the shared
+   * fields, each point's geometry and state.
+   */
+  private writeManifolds(c: RigidContacts, invMass: Float64Array, invInertia: Float64Array): void {
+    const { f64, i32, slotOf, colourOf, batchSize: size, batchCursor: cursor } = this;
+    const base = this.rigidAddress >> 3;
+    const world = (this.capacity + 1) * 8;
+    const n = c.count;
+    const serial = this.rigidSerial;
+    const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
+    if (serial) {
+      for (let i = 0, s = 1; i < n; i++, s += 2) {
+        this.padManifold(s);
+        if (pair[i] === 1) i++;
+      }
+    } else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.padManifold(cursor[k + 1] - 1);
+    // Field k of a lane at f64 word w + 2k (w: its packet's first field, plus the lane); point p's fields from
+    // k = 12 + 18p (see solver.as). Literal offsets: this loop runs once a step over every manifold.
+    for (let i = 0, m = 0; i < n; i++, m++) {
+      const s = serial ? 2 * m : cursor[colourOf[i]]++;
+      const two = pair[i] === 1;
+      const j = two ? i + 1 : i;
+      slotOf[i] = s;
+      slotOf[j] = s;
+      const lane = s & 1;
+      const packet = base + (s >> 1) * MANIFOLD_F64;
+      const w = packet + 2 + lane;
+      const q = 2 * packet + lane;
+      const ia = A[i];
+      const ib = B[i];
+      const onRow = ib >= 0;
+      i32[q] = ia * 8;
+      i32[q + 2] = onRow ? ib * 8 : world;
+      f64[w] = nx[i];
+      f64[w + 2] = ny[i];
+      f64[w + 4] = friction[i];
+      f64[w + 6] = invMass[ia];
+      f64[w + 8] = invInertia[ia];
+      f64[w + 10] = onRow ? invMass[ib] : 0;
+      f64[w + 12] = onRow ? invInertia[ib] : 0;
+      const t = two ? -1 : 0;
+      i32[2 * w + 28] = t;
+      i32[2 * w + 29] = t;
+      f64[w + 16] = impulseT[i];
+      f64[w + 18] = slip[i];
+      f64[w + 20] = two ? slip[j] : 0;
+      // Point 0 (k 12..): rAx, rAy, rBx, rBy (the world's point is (rBx, rBy) itself: its row turns it by (1, 0)),
+      // radA, radB, allowance, lambdaN, impulseN, gap, touched.
+      f64[w + 24] = rAx[i];
+      f64[w + 26] = rAy[i];
+      f64[w + 28] = rBx[i];
+      f64[w + 30] = rBy[i];
+      f64[w + 32] = radA[i];
+      f64[w + 34] = onRow ? radB[i] : 0;
+      f64[w + 36] = allowance[i];
+      f64[w + 38] = lambdaN[i];
+      f64[w + 40] = impulseN[i];
+      f64[w + 42] = gap[i];
+      const t0 = touched[i] ? -1 : 0;
+      i32[2 * w + 88] = t0;
+      i32[2 * w + 89] = t0;
+      // Point 1 (k 30..): the partner, or nowhere and never overlapping (allowance +∞) for a lone point.
+      if (two) {
+        f64[w + 60] = rAx[j];
+        f64[w + 62] = rAy[j];
+        f64[w + 64] = rBx[j];
+        f64[w + 66] = rBy[j];
+        f64[w + 68] = radA[j];
+        f64[w + 70] = onRow ? radB[j] : 0;
+        f64[w + 72] = allowance[j];
+        f64[w + 74] = lambdaN[j];
+        f64[w + 76] = impulseN[j];
+        f64[w + 78] = gap[j];
+        const t1 = touched[j] ? -1 : 0;
+        i32[2 * w + 160] = t1;
+        i32[2 * w + 161] = t1;
+        i++;
+      } else {
+        f64[w + 60] = 0;
+        f64[w + 62] = 0;
+        f64[w + 64] = 0;
+        f64[w + 66] = 0;
+        f64[w + 68] = 0;
+        f64[w + 70] = 0;
+        f64[w + 72] = Infinity;
+        f64[w + 74] = 0;
+        f64[w + 76] = 0;
+        f64[w + 78] = 0;
+        i32[2 * w + 160] = 0;
+        i32[2 * w + 161] = 0;
+      }
+    }
+  }
+
+  /** A padding manifold lane: the spare row on both sides, apart (allowances 1 and +∞), no friction. */
+  private padManifold(s: number): void {
+    const { f64, i32 } = this;
+    const base = this.rigidAddress / 8;
+    const w = base + (s >> 1) * MANIFOLD_F64 + 2 + (s & 1);
+    const q = 2 * (base + (s >> 1) * MANIFOLD_F64) + (s & 1);
+    i32[q] = this.capacity * 8;
+    i32[q + 2] = this.capacity * 8;
+    for (let field = 0; field < MANIFOLD_FIELDS; field++) f64[w + 2 * field] = 0;
+    // Allowances of points 0 and 1 (fields 18 and 36).
+    f64[w + 36] = 1;
+    f64[w + 72] = Infinity;
+  }
+
   /** A padding lane: the spare row on both sides, apart (allowance 1), no friction. */
   private padRigid(s: number): void {
     const { f64, i32 } = this;
@@ -399,7 +572,7 @@ export class WasmKernel {
     const dataAddress = runAddress + align16(runCount * RUN_BYTES);
     const packetAddress = dataAddress + dataBytes;
     const rigidAddress = align16(packetAddress + packetCount * PACKET_BYTES);
-    const bytes = rigidAddress + this.rigidCapacity * RIGID_PACKET;
+    const bytes = rigidAddress + this.rigidCapacity;
     // (Everything is written again below: the new memory need not keep the old bytes.)
     if (bytes > this.memory.buffer.byteLength) this.replaceMemory(bytes * 1.5, false);
     const buffer = this.memory.buffer;
@@ -500,12 +673,25 @@ export class WasmKernel {
   }
 }
 
-/** Every rigid contact is one the lanes solve: a single point between two rows or with the world, restitution 0, no shock sweep. */
-function lanesFit(c: RigidContacts): boolean {
-  if (c.shockCount > 0 || c.edgePoints > 0) return false;
-  const { pair, b2, restitution, a } = c;
-  for (let i = 0, n = c.count; i < n; i++) if (pair[i] !== 0 || b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0) return false;
-  return true;
+/**
+ * Whether the lanes take the step's rigid contacts: 0 no, 1 as single points (all lone), 2 by manifold (some pairs).
+ * Each point between two rows or with the world (no particle-built edge point), restitution 0, no shock sweep; a
+ * pair's partner follows it (the same bodies).
+ */
+function lanesFit(c: RigidContacts): 0 | 1 | 2 {
+  if (c.shockCount > 0 || c.edgePoints > 0) return 0;
+  const { pair, b2, restitution, a, b } = c;
+  let fit: 0 | 1 | 2 = 1;
+  for (let i = 0, n = c.count; i < n; i++) {
+    if (b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0) return 0;
+    if (pair[i] === 1) {
+      const j = i + 1;
+      if (j >= n || b2[j] >= 0 || restitution[j] !== 0 || a[j] !== a[i] || b[j] !== b[i] || pair[j] !== 0) return 0;
+      fit = 2;
+      i++;
+    } else if (pair[i] !== 0) return 0;
+  }
+  return fit;
 }
 
 function align16(bytes: number): number {
