@@ -175,6 +175,8 @@ function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, out: Conta
   const rex = v2x - v1x;
   const rey = v2y - v1y;
   const rlen2 = rex * rex + rey * rey;
+  // (The fractions are clamped inline: clamp01 was not always inlined here, and a double passed to and returned from
+  // a call that is not inlined is boxed: S2 allocated 14 KB a step in clip.)
   for (let k = 0; k < 2; k++) {
     const wx = k === 0 ? w1x : w2x;
     const wy = k === 0 ? w1y : w2y;
@@ -193,14 +195,16 @@ function clip(R: PolygonRef, e: number, I: PolygonRef, flip: boolean, out: Conta
       out.pBx[j] = qx;
       out.pBy[j] = qy;
       out.edgeB[j] = e;
-      out.alphaB[j] = clamp01(((qx - v1x) * rex + (qy - v1y) * rey) / rlen2);
+      const along = ((qx - v1x) * rex + (qy - v1y) * rey) / rlen2;
+      out.alphaB[j] = along < 0 ? 0 : along > 1 ? 1 : along;
     } else {
       out.pAx[j] = qx;
       out.pAy[j] = qy;
       out.pBx[j] = wx;
       out.pBy[j] = wy;
       out.edgeB[j] = inc;
-      out.alphaB[j] = clamp01(((wx - I.x[i0]) * ex + (wy - I.y[i0]) * ey) / elen2);
+      const along = ((wx - I.x[i0]) * ex + (wy - I.y[i0]) * ey) / elen2;
+      out.alphaB[j] = along < 0 ? 0 : along > 1 ? 1 : along;
     }
   }
   return out.count > 0;
