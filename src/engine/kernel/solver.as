@@ -566,22 +566,26 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
     ry = v128.load(q1, 48);
     const mB1x = f64x2.sub(f64x2.mul(cB, rx), f64x2.mul(sB, ry));
     const mB1y = f64x2.add(f64x2.mul(sB, rx), f64x2.mul(cB, ry));
-    let rad = v128.load(q0, 64);
-    let round = f64x2.gt(rad, zero);
-    const lA0x = v128.bitselect(f64x2.mul(nx, rad), mA0x, round);
-    const lA0y = v128.bitselect(f64x2.mul(ny, rad), mA0y, round);
-    rad = v128.load(q0, 80);
-    round = f64x2.gt(rad, zero);
-    const lB0x = v128.bitselect(f64x2.mul(f64x2.neg(nx), rad), mB0x, round);
-    const lB0y = v128.bitselect(f64x2.mul(f64x2.neg(ny), rad), mB0y, round);
-    rad = v128.load(q1, 64);
-    round = f64x2.gt(rad, zero);
-    const lA1x = v128.bitselect(f64x2.mul(nx, rad), mA1x, round);
-    const lA1y = v128.bitselect(f64x2.mul(ny, rad), mA1y, round);
-    rad = v128.load(q1, 80);
-    round = f64x2.gt(rad, zero);
-    const lB1x = v128.bitselect(f64x2.mul(f64x2.neg(nx), rad), mB1x, round);
-    const lB1y = v128.bitselect(f64x2.mul(f64x2.neg(ny), rad), mB1y, round);
+    // Normal levers: the material ones, unless a side is round (its normal lever runs from its centre along n).
+    let lA0x = mA0x, lA0y = mA0y, lB0x = mB0x, lB0y = mB0y, lA1x = mA1x, lA1y = mA1y, lB1x = mB1x, lB1y = mB1y;
+    const radA0 = v128.load(q0, 64);
+    const radB0 = v128.load(q0, 80);
+    const radA1 = v128.load(q1, 64);
+    const radB1 = v128.load(q1, 80);
+    if (v128.any_true(v128.or(v128.or(f64x2.gt(radA0, zero), f64x2.gt(radB0, zero)), v128.or(f64x2.gt(radA1, zero), f64x2.gt(radB1, zero))))) {
+      let round = f64x2.gt(radA0, zero);
+      lA0x = v128.bitselect(f64x2.mul(nx, radA0), mA0x, round);
+      lA0y = v128.bitselect(f64x2.mul(ny, radA0), mA0y, round);
+      round = f64x2.gt(radB0, zero);
+      lB0x = v128.bitselect(f64x2.mul(f64x2.neg(nx), radB0), mB0x, round);
+      lB0y = v128.bitselect(f64x2.mul(f64x2.neg(ny), radB0), mB0y, round);
+      round = f64x2.gt(radA1, zero);
+      lA1x = v128.bitselect(f64x2.mul(nx, radA1), mA1x, round);
+      lA1y = v128.bitselect(f64x2.mul(ny, radA1), mA1y, round);
+      round = f64x2.gt(radB1, zero);
+      lB1x = v128.bitselect(f64x2.mul(f64x2.neg(nx), radB1), mB1x, round);
+      lB1y = v128.bitselect(f64x2.mul(f64x2.neg(ny), radB1), mB1y, round);
+    }
     // Overlaps past their allowances.
     const g0 = f64x2.sub(f64x2.add(
       f64x2.mul(f64x2.sub(f64x2.sub(f64x2.add(ax0, lA0x), f64x2.mul(dA, lA0y)), f64x2.sub(f64x2.add(bx0, lB0x), f64x2.mul(dB, lB0y))), nx),
@@ -778,15 +782,19 @@ export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: 
     // Both: the 2×2 block, or (dependent) one after the other without measuring again.
     const det = f64x2.sub(f64x2.mul(k00, k11), f64x2.mul(k01, k01));
     const block = f64x2.gt(det, f64x2.mul(f64x2.mul(tiny, k00), k11));
-    const pb0 = f64x2.div(f64x2.sub(f64x2.mul(k11, b0), f64x2.mul(k01, b1)), det);
-    const pb1 = f64x2.div(f64x2.sub(f64x2.mul(k00, b1), f64x2.mul(k01, b0)), det);
-    const pf0 = f64x2.div(b0, k00);
-    const pf1 = f64x2.div(f64x2.sub(b1, f64x2.mul(k01, pf0)), k11);
-    // One point: its own, where its weight is positive.
-    const po0 = v128.and(pf0, f64x2.gt(k00, zero));
-    const po1 = v128.and(f64x2.div(b1, k11), f64x2.gt(k11, zero));
-    const p0 = v128.bitselect(v128.bitselect(pb0, pf0, block), v128.and(po0, use0), both);
-    const p1 = v128.bitselect(v128.bitselect(pb1, pf1, block), v128.and(po1, use1), both);
+    // The block's answer; the other cases only when some lane does not take it.
+    let p0 = f64x2.div(f64x2.sub(f64x2.mul(k11, b0), f64x2.mul(k01, b1)), det);
+    let p1 = f64x2.div(f64x2.sub(f64x2.mul(k00, b1), f64x2.mul(k01, b0)), det);
+    const blocked = v128.and(both, block);
+    if (!i64x2.all_true(blocked)) {
+      const pf0 = f64x2.div(b0, k00);
+      const pf1 = f64x2.div(f64x2.sub(b1, f64x2.mul(k01, pf0)), k11);
+      // One point: its own, where its weight is positive.
+      const po0 = v128.and(pf0, f64x2.gt(k00, zero));
+      const po1 = v128.and(f64x2.div(b1, k11), f64x2.gt(k11, zero));
+      p0 = v128.bitselect(v128.bitselect(p0, pf0, block), v128.and(po0, use0), both);
+      p1 = v128.bitselect(v128.bitselect(p1, pf1, block), v128.and(po1, use1), both);
+    }
     const kicks = v128.and(acted, v128.not(v128.and(f64x2.eq(p0, zero), f64x2.eq(p1, zero))));
     if (!v128.any_true(kicks)) continue;
     const P = f64x2.add(p0, p1);
