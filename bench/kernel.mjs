@@ -6,6 +6,7 @@
 //
 //   node bench/kernel.mjs                       every scene, 5 runs
 //   node bench/kernel.mjs --runs 3 --scenes cloth200,circles10k
+//   node bench/kernel.mjs --runs 3 --scenes pyramid,boxes,circles   the rigid contact lanes (S1, S2, S3)
 //   node bench/kernel.mjs --warm 100            warm-up steps for every scene (default: each scene's own, below)
 //   node bench/kernel.mjs --sweep               also time the distance sweep alone (JS loop vs kernel, same arrays)
 //   node bench/kernel.mjs --runs 3 --out bench/results/kernel.json   also write the table as JSON (the experiments
@@ -23,6 +24,10 @@ const { World, buildScene, catalogue, createCloth } = engine;
 /** Scenes: how to build them and how many steps to warm up and to time. */
 const SCENES = {
   cloth30: { title: 'S5 cloth 30×30 (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('cloth', kernel) },
+  // Rigid piles: the kernel's rigid contact lanes (single points for the circles, by manifold for the boxes).
+  pyramid: { title: 'S1 pyramid, base 20 (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('pyramid', kernel) },
+  boxes: { title: 'S2 1000 boxes (catalogue)', warm: 300, timed: 100, make: (kernel) => sceneWorld('boxes', kernel) },
+  circles: { title: 'S3 2000 circles (catalogue)', warm: 300, timed: 100, make: (kernel) => sceneWorld('circles', kernel) },
   chain: { title: 'S4 chain, 100 links (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('chain', kernel) },
   cloth200: {
     title: '200×200 pinned cloth (bench/cloth.mjs layout)',
