@@ -48,6 +48,14 @@ export function overlaps(c: Colliders, a: number, b: number): boolean {
   return c.minX[a] <= c.maxX[b] && c.minX[b] <= c.maxX[a] && c.minY[a] <= c.maxY[b] && c.minY[b] <= c.maxY[a];
 }
 
+/** Per collider slot: the grid cell (column, row from the lowest in use) of its AABB's lower-left corner (scratch of findPairs). */
+let cornerX = new Uint32Array(64);
+let cornerY = new Uint32Array(64);
+/** One count per cell key: the broad phase's counting sort, when the keys in use span few cells (scratch). */
+let cellCounts = new Uint32Array(1024);
+/** Per collider slot: its AABB as minX, minY, maxX, maxY side by side (one cache line for the pair loop's test). */
+let boxes = new Float64Array(256);
+
 /** O(n²): every pair tested. The oracle for tests and the seed's comparison. */
 export class BruteForceBroadPhase implements BroadPhase {
   readonly name = 'brute';
@@ -123,6 +131,14 @@ export class GridBroadPhase implements BroadPhase {
     let m = 0;
     let largeCount = 0;
     this.large = grown(this.large, n);
+    if (cornerX.length < c.minX.length) {
+      cornerX = new Uint32Array(c.minX.length);
+      cornerY = new Uint32Array(c.minX.length);
+      boxes = new Float64Array(4 * c.minX.length);
+    }
+    const cx0 = cornerX;
+    const cy0 = cornerY;
+    const box = boxes;
     for (let i = 0; i < n; i++) {
       const s = c.active[i];
       const x0 = Math.floor(c.minX[s] * inv) - loX;
@@ -134,6 +150,12 @@ export class GridBroadPhase implements BroadPhase {
         this.large[largeCount++] = s;
         continue;
       }
+      cx0[s] = x0;
+      cy0[s] = y0;
+      box[4 * s] = c.minX[s];
+      box[4 * s + 1] = c.minY[s];
+      box[4 * s + 2] = c.maxX[s];
+      box[4 * s + 3] = c.maxY[s];
       this.reserve(m + cells);
       for (let x = x0; x <= x1; x++) {
         for (let y = y0; y <= y1; y++) {
@@ -147,22 +169,29 @@ export class GridBroadPhase implements BroadPhase {
     const keys = this.keys;
     const values = this.values;
     for (let start = 0; start < m; ) {
+      const key = keys[start];
       let end = start + 1;
-      while (end < m && keys[end] === keys[start]) end++;
+      while (end < m && keys[end] === key) end++;
       if (end - start > 1) {
-        const key = keys[start];
         const cx = Math.floor(key / rows);
         const cy = key - cx * rows;
-        for (let i = start; i < end; i++) {
+        for (let i = start; i < end - 1; i++) {
           const a = values[i];
+          // The pair is reported only from the cell that holds the lower-left corner of the two boxes' overlap,
+          // floor(max(minX_a, minX_b) / cell) = max of the two bodies' corner cells (floor and a rounded product are
+          // monotonic): with both bodies in this cell, that is this cell when either body's corner is in it. Tested
+          // first, on integers, before the overlap.
+          const aInX = cx0[a] === cx;
+          const aInY = cy0[a] === cy;
+          const aMinX = box[4 * a];
+          const aMinY = box[4 * a + 1];
+          const aMaxX = box[4 * a + 2];
+          const aMaxY = box[4 * a + 3];
           for (let j = i + 1; j < end; j++) {
             const b = values[j];
-            if (!overlaps(c, a, b)) continue;
-            // Report the pair only from the cell that holds the lower-left corner of the overlap.
-            const ox = Math.floor(Math.max(c.minX[a], c.minX[b]) * inv) - loX;
-            const oy = Math.floor(Math.max(c.minY[a], c.minY[b]) * inv) - loY;
-            if (ox !== cx || oy !== cy) continue;
-            if (accept(a, b)) out.push(a, b);
+            if ((!aInX && cx0[b] !== cx) || (!aInY && cy0[b] !== cy)) continue;
+            const q = 4 * b;
+            if (aMinX <= box[q + 2] && box[q] <= aMaxX && aMinY <= box[q + 3] && box[q + 1] <= aMaxY && accept(a, b)) out.push(a, b);
           }
         }
       }
@@ -235,6 +264,30 @@ export class GridBroadPhase implements BroadPhase {
     const counts = this.counts;
     let maxKey = 0;
     for (let i = 0; i < n; i++) if (keys[i] > maxKey) maxKey = keys[i];
+    if (maxKey < 4 * n + 1024) {
+      // Few cells in use for the entries (a pile in a container): one counting pass over every key instead of one per
+      // byte; the same stable order.
+      if (cellCounts.length <= maxKey) cellCounts = new Uint32Array(Math.max(maxKey + 1, 2 * cellCounts.length));
+      const counts = cellCounts;
+      counts.fill(0, 0, maxKey + 1);
+      for (let i = 0; i < n; i++) counts[keys[i]]++;
+      let sum = 0;
+      for (let b = 0; b <= maxKey; b++) {
+        const c = counts[b];
+        counts[b] = sum;
+        sum += c;
+      }
+      for (let i = 0; i < n; i++) {
+        const d = counts[keys[i]]++;
+        keysTmp[d] = keys[i];
+        valuesTmp[d] = values[i];
+      }
+      this.keys = keysTmp;
+      this.values = valuesTmp;
+      this.keysTmp = keys;
+      this.valuesTmp = values;
+      return;
+    }
     for (let shift = 0; shift < 32; shift += 8) {
       if (maxKey >>> shift === 0) break;
       counts.fill(0);
