@@ -30,10 +30,17 @@ export class RigidNarrowPhase {
     // the last word in a Gauss–Seidel sweep goes to the wall, and a light body pressed into it by a heavier one is
     // put back out each substep (a disc hit by a box 10× its mass at 500 units/s went through a wall 1 thick; a
     // particle-built hammer 100× heavier drove it through at 100 units/s). Box2D v3 solves static contacts last too.
-    for (let pass = 0; pass < 2; pass++) for (let k = 0; k < pairs.count; k++) {
+    // The first pass lists the pairs with a static side (staticPairs) for the second, which then reads only them.
+    if (staticPairs.length < pairs.count) staticPairs = new Int32Array(pairs.a.length);
+    let staticCount = 0;
+    for (let pass = 0; pass < 2; pass++) for (let q = 0, end = pass === 0 ? pairs.count : staticCount; q < end; q++) {
+      const k = pass === 0 ? q : staticPairs[q];
       let a = pairs.a[k];
       let b = pairs.b[k];
-      if ((c.isStatic[a] | c.isStatic[b]) !== pass) continue;
+      if (pass === 0 && (c.isStatic[a] | c.isStatic[b]) !== 0) {
+        staticPairs[staticCount++] = k;
+        continue;
+      }
       const aRigid = c.kind[a] === ColliderKind.Rigid;
       if (!aRigid && c.kind[b] !== ColliderKind.Rigid) continue;
       // Side A is rigid.
@@ -204,21 +211,63 @@ export class RigidNarrowPhase {
     }
   }
 
-  /** Writes the manifold's points between rows ia and ib (a rigid body or a particle), round sides per pair[2, 3]. */
+  /**
+   * Writes the manifold's points between rows ia and ib (a rigid body or a particle), round sides per pair[2, 3],
+   * straight into the columns (the values RigidContacts.add writes from `next` after point(), without that round trip).
+   * B's anchor is in B's frame (a particle's frame is the world's: cos 1, sin 0).
+   */
   private emit(p: ParticleStore, ia: number, ib: number, a: number, b: number, out: RigidContacts): void {
     const m = this.manifold;
-    for (let k = 0; k < m.count; k++) {
-      this.point(p, k, ia, a, b, out);
-      // B's anchor in B's frame (a particle's frame is the world's: cos 1, sin 0).
-      const f = out.next;
-      const dx = m.pBx[k] - p.x[ib];
-      const dy = m.pBy[k] - p.y[ib];
-      const cb = p.rc[ib];
-      const sb = p.rs[ib];
-      f[4] = cb * dx + sb * dy;
-      f[5] = -sb * dx + cb * dy;
-      f[7] = this.pair[3];
-      out.add(ia, ib, -1, a, b, m.count === 2 && k === 0 ? 1 : 0);
+    const pr = this.pair;
+    const n = m.count;
+    if (out.count + n > out.a.length) out.reserve(n);
+    out.shockReady = false;
+    const nx = m.nx;
+    const ny = m.ny;
+    const xa = p.x[ia];
+    const ya = p.y[ia];
+    const xb = p.x[ib];
+    const yb = p.y[ib];
+    const ca = p.rc[ia];
+    const sa = p.rs[ia];
+    const cb = p.rc[ib];
+    const sb = p.rs[ib];
+    for (let k = 0; k < n; k++) {
+      const i = out.count++;
+      const dax = m.pAx[k] - xa;
+      const day = m.pAy[k] - ya;
+      const dbx = m.pBx[k] - xb;
+      const dby = m.pBy[k] - yb;
+      const depth = m.depth[k];
+      out.a[i] = ia;
+      out.b[i] = ib;
+      out.b2[i] = -1;
+      out.nx[i] = nx;
+      out.ny[i] = ny;
+      out.rAx[i] = ca * dax + sa * day;
+      out.rAy[i] = -sa * dax + ca * day;
+      out.rBx[i] = cb * dbx + sb * dby;
+      out.rBy[i] = -sb * dbx + cb * dby;
+      out.radA[i] = pr[2];
+      out.radB[i] = pr[3];
+      out.alpha[i] = 0;
+      out.friction[i] = pr[0];
+      out.restitution[i] = pr[1];
+      out.depth[i] = depth;
+      out.allowance[i] = depth > 0 ? depth : 0;
+      out.lambdaN[i] = 0;
+      out.impulseN[i] = 0;
+      out.impulseT[i] = 0;
+      out.slip[i] = 0;
+      out.approach[i] = NaN;
+      out.touched[i] = 0;
+      out.pair[i] = n === 2 && k === 0 ? 1 : 0;
+      out.bodyA[i] = a;
+      out.bodyB[i] = b;
+      out.gap[i] = depth;
+      // writeAnchorKey(…, a, b, feature): b is a body slot here.
+      const key = (a * 4194304 + b) * 65536 + m.feature[k];
+      out.feature[i] = key < 9007199254740991 ? key : key % 9007199254740991;
     }
   }
 
@@ -282,22 +331,45 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   const sa = p.rs[ia];
   const cb = p.rc[ib];
   const sb = p.rs[ib];
-  const f = out.next;
-  f[0] = nx;
-  f[1] = ny;
-  f[2] = ca * aX + sa * aY;
-  f[3] = -sa * aX + ca * aY;
-  f[4] = cb * bX + sb * bY;
-  f[5] = -sb * bX + cb * bY;
-  f[6] = ra;
-  f[7] = rb;
-  f[8] = 0;
-  f[9] = Math.sqrt(c.friction[a] * c.friction[b]);
-  f[10] = Math.max(c.restitution[a], c.restitution[b]);
-  f[11] = ra + rb - d;
-  writeAnchorKey(f, a, b, 0);
-  out.add(ia, ib, -1, a, b, 0);
+  // The row, written straight into the columns (as RigidContacts.add writes it from `next`; no round trip through
+  // that array: 4,700 disc pairs a step in S3).
+  if (out.count === out.a.length) out.reserve(1);
+  const i = out.count++;
+  out.shockReady = false;
+  const depth = ra + rb - d;
+  out.a[i] = ia;
+  out.b[i] = ib;
+  out.b2[i] = -1;
+  out.nx[i] = nx;
+  out.ny[i] = ny;
+  out.rAx[i] = ca * aX + sa * aY;
+  out.rAy[i] = -sa * aX + ca * aY;
+  out.rBx[i] = cb * bX + sb * bY;
+  out.rBy[i] = -sb * bX + cb * bY;
+  out.radA[i] = ra;
+  out.radB[i] = rb;
+  out.alpha[i] = 0;
+  out.friction[i] = Math.sqrt(c.friction[a] * c.friction[b]);
+  out.restitution[i] = Math.max(c.restitution[a], c.restitution[b]);
+  out.depth[i] = depth;
+  out.allowance[i] = depth > 0 ? depth : 0;
+  out.lambdaN[i] = 0;
+  out.impulseN[i] = 0;
+  out.impulseT[i] = 0;
+  out.slip[i] = 0;
+  out.approach[i] = NaN;
+  out.touched[i] = 0;
+  out.pair[i] = 0;
+  out.bodyA[i] = a;
+  out.bodyB[i] = b;
+  out.gap[i] = depth;
+  // writeAnchorKey(…, a, b, 0): b ≥ 0 here.
+  const key = (a * 4194304 + b) * 65536;
+  out.feature[i] = key < 9007199254740991 ? key : key % 9007199254740991;
 }
+
+/** Indices into the pair list of the pairs with a static side, in order (scratch of RigidNarrowPhase.run). */
+let staticPairs = new Int32Array(256);
 
 function emptyRef(): PolygonRef {
   return { x: new Float64Array(8), y: new Float64Array(8), nx: new Float64Array(8), ny: new Float64Array(8), start: 0, count: 0 };
