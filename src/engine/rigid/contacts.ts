@@ -1,5 +1,4 @@
 import { Table } from '../table.js';
-import { KeyTable } from '../pipeline/key-table.js';
 import type { BodyRows } from './rows.js';
 
 /**
@@ -170,6 +169,14 @@ export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, fe
 }
 
 /**
+ * The chain of an anchor key in RigidAnchorCache's index: the key's bits above body B and the feature (body A's slot
+ * while that is below 32768; past it, the key wrapped at 2⁵³ and this is just a number below 2¹⁵ that equal keys share).
+ */
+function chainOf(key: number): number {
+  return (key / 274877906944) | 0;
+}
+
+/**
  * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
  * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
  * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
@@ -177,12 +184,20 @@ export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, fe
  *
  * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
  * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
- * expects the next one; only a point the cursor misses builds the hash table by key (once a step, and only then).
+ * expects the next one; only a point the cursor misses builds the index by key (once a step, and only then). The
+ * index chains the held entries by the key's high bits, body A's slot (chainOf): building it is one pass of two
+ * stores an entry, where a hash table was a clear of twice the list's size plus a hashed insert per entry (S2 and S3
+ * build it every step: a new contact or a pair met in another order misses the cursor), and a lookup walks the few
+ * points of one body. Equal keys share a chain, so it finds what a hash table by key finds: the first held entry.
  */
 export class RigidAnchorCache {
-  private readonly table = new KeyTable();
-  /** The table holds this list (false: not built since the last store). */
+  /** The chains hold this list (false: not built since the last store). */
   private tableBuilt = false;
+  /** Per chain (chainOf): its first held entry, valid when chainStamp matches `stamp`; per entry: the next one or −1. */
+  private chainHead = new Int32Array(64);
+  private chainStamp = new Int32Array(64);
+  private chainNext = new Int32Array(32);
+  private stamp = 0;
   private count = 0;
   private keys = new Float64Array(32);
   /** 1: the entry holds anchors (its point acted); 0: a point that stayed apart, listed only to keep the order. */
@@ -240,12 +255,38 @@ export class RigidAnchorCache {
     this.count = n;
   }
 
-  /** The hash table of the stored list (first entry of a key wins). */
+  /** The chains of the stored list's held entries, each in list order (so a lookup finds a key's first entry). */
   private build(): void {
-    const table = this.table;
-    table.reset(this.count);
-    for (let k = 0; k < this.count; k++) if (this.held[k] === 1) table.insert(this.keys[k], k);
+    const { keys, held } = this;
+    const n = this.count;
+    if (this.chainNext.length < n) this.chainNext = new Int32Array(this.keys.length);
+    // A new stamp invalidates every chain head at once (no clearing pass); it wraps long before it could repeat.
+    this.stamp = this.stamp === 0x7fffffff ? 1 : this.stamp + 1;
+    const stamp = this.stamp;
+    const next = this.chainNext;
+    for (let k = n - 1; k >= 0; k--) {
+      if (held[k] === 0) continue;
+      const h = chainOf(keys[k]);
+      if (h >= this.chainHead.length) this.growChains(h + 1);
+      const head = this.chainHead;
+      if (this.chainStamp[h] === stamp) next[k] = head[h];
+      else {
+        next[k] = -1;
+        this.chainStamp[h] = stamp;
+      }
+      head[h] = k;
+    }
     this.tableBuilt = true;
+  }
+
+  private growChains(size: number): void {
+    const n = Math.max(size, 2 * this.chainHead.length);
+    const head = new Int32Array(n);
+    const stamp = new Int32Array(n);
+    head.set(this.chainHead);
+    stamp.set(this.chainStamp);
+    this.chainHead = head;
+    this.chainStamp = stamp;
   }
 
   /**
@@ -255,8 +296,12 @@ export class RigidAnchorCache {
   private lookup(key: number, cursor: number): number {
     if (cursor < this.count && this.keys[cursor] === key) return cursor;
     if (!this.tableBuilt) this.build();
-    const slot = this.table.find(key);
-    return slot < 0 ? -1 : this.table.values[slot];
+    const h = chainOf(key);
+    if (h >= this.chainHead.length || this.chainStamp[h] !== this.stamp) return -1;
+    const keys = this.keys;
+    const next = this.chainNext;
+    for (let k = this.chainHead[h]; k >= 0; k = next[k]) if (keys[k] === key) return k;
+    return -1;
   }
 
   /**

@@ -1,0 +1,148 @@
+// The rigid contacts' friction anchors carried from one step to the next (RigidAnchorCache), against its definition
+// with a plain Map by feature key: a new point gets the anchors its key's point left last step, if they are within
+// reach, and no more overlap allowance than that point had left. Lists in the same order, reordered, with points
+// dropped and new ones added, duplicate keys, and body slots past 32768 (whose keys wrap at 2^53).
+import { expect } from 'chai';
+import { RigidAnchorCache, RigidContacts, writeAnchorKey } from '../../../src/engine/rigid/contacts.js';
+import type { BodyRows } from '../../../src/engine/rigid/rows.js';
+import { random } from '../pipeline/scene-helpers.js';
+
+interface Point {
+  a: number; b: number; b2: number; feature: number; touched: number; slip: number; allowance: number;
+  nx: number; ny: number; rAx: number; rAy: number; rBx: number; rBy: number;
+}
+
+function fill(table: RigidContacts, points: Point[]): void {
+  table.count = 0;
+  for (const q of points) {
+    const f = table.next;
+    f.fill(0);
+    f[0] = q.nx;
+    f[1] = q.ny;
+    f[2] = q.rAx;
+    f[3] = q.rAy;
+    f[4] = q.rBx;
+    f[5] = q.rBy;
+    writeAnchorKey(f, q.a, q.b, q.feature);
+    table.add(q.a, q.b, q.b2, q.a, q.b, 0);
+    const i = table.count - 1;
+    table.touched[i] = q.touched;
+    table.slip[i] = q.slip;
+    table.allowance[i] = q.allowance;
+  }
+}
+
+/**
+ * What the cache should restore, from its definition: last step's points (not on particle edges) as a list in their
+ * order, each with its anchors if it acted; a fresh point takes the entry at the cursor when that has its key (the
+ * cursor then moves past it), else the first entry of its key that holds anchors (a Map here).
+ */
+function oracle(old: RigidContacts, rows: BodyRows, fresh: RigidContacts, reach: number): { rA: number[][]; rB: number[][]; allowance: number[] } {
+  const list: { key: number; held: boolean; rA: number[]; rB: number[]; allow: number }[] = [];
+  const firstHeld = new Map<number, number>();
+  for (let i = 0; i < old.count; i++) {
+    if (old.b2[i] >= 0) continue;
+    const key = old.feature[i];
+    if (!old.touched[i]) {
+      list.push({ key, held: false, rA: [], rB: [], allow: 0 });
+      continue;
+    }
+    const tx = -old.ny[i] * old.slip[i];
+    const ty = old.nx[i] * old.slip[i];
+    let bx = old.rBx[i];
+    let by = old.rBy[i];
+    const ib = old.b[i];
+    if (ib < 0) {
+      bx += tx;
+      by += ty;
+    } else if (old.slip[i] !== 0) {
+      bx += rows.rc[ib] * tx + rows.rs[ib] * ty;
+      by += -rows.rs[ib] * tx + rows.rc[ib] * ty;
+    }
+    if (!firstHeld.has(key)) firstHeld.set(key, list.length);
+    list.push({ key, held: true, rA: [old.rAx[i], old.rAy[i]], rB: [bx, by], allow: old.allowance[i] });
+  }
+  const rA: number[][] = [];
+  const rB: number[][] = [];
+  const allowance: number[] = [];
+  let cursor = 0;
+  for (let i = 0; i < fresh.count; i++) {
+    let a = [fresh.rAx[i], fresh.rAy[i]];
+    let b = [fresh.rBx[i], fresh.rBy[i]];
+    let allow = fresh.allowance[i];
+    const key = fresh.feature[i];
+    const k = fresh.b2[i] >= 0 ? -1 : cursor < list.length && list[cursor].key === key ? cursor : (firstHeld.get(key) ?? -1);
+    if (k >= 0) {
+      cursor = k + 1;
+      const h = list[k];
+      if (h.held) {
+        allow = Math.min(allow, h.allow);
+        const da = (h.rA[0] - a[0]) ** 2 + (h.rA[1] - a[1]) ** 2;
+        const db = (h.rB[0] - b[0]) ** 2 + (h.rB[1] - b[1]) ** 2;
+        if (da <= reach * reach && db <= reach * reach) {
+          a = h.rA;
+          b = h.rB;
+        }
+      }
+    }
+    rA.push(a);
+    rB.push(b);
+    allowance.push(allow);
+  }
+  return { rA, rB, allowance };
+}
+
+describe('rigid bodies: friction anchors from step to step', () => {
+  it('restores what a map by feature key gives, for lists kept, reordered, thinned and grown (200 cases)', () => {
+    const rnd = random(5);
+    const rows = { rc: new Float64Array(64), rs: new Float64Array(64) } as unknown as BodyRows;
+    for (let r = 0; r < 64; r++) {
+      const t = rnd() * 6.3;
+      rows.rc[r] = Math.cos(t);
+      rows.rs[r] = Math.sin(t);
+    }
+    const cache = new RigidAnchorCache();
+    const old = new RigidContacts();
+    const fresh = new RigidContacts();
+    let restored = 0;
+    let kept = 0;
+    for (let trial = 0; trial < 200; trial++) {
+      const far = trial % 5 === 4; // body slots past 32768: keys past 2^53 wrap
+      const bodies = 3 + Math.floor(rnd() * 40);
+      const slot = () => (far ? 40000 + Math.floor(rnd() * bodies) * 977 : Math.floor(rnd() * bodies));
+      const n = Math.floor(rnd() * 300);
+      const before: Point[] = [];
+      for (let k = 0; k < n; k++) {
+        const t = rnd() * 6.3;
+        before.push({
+          a: slot(), b: rnd() < 0.2 ? -1 : Math.floor(rnd() * 64), b2: rnd() < 0.05 ? 3 : -1, feature: Math.floor(rnd() * 6),
+          touched: rnd() < 0.8 ? 1 : 0, slip: rnd() < 0.5 ? 0 : rnd() * 0.02 - 0.01, allowance: rnd() * 0.01,
+          nx: Math.cos(t), ny: Math.sin(t), rAx: rnd() - 0.5, rAy: rnd() - 0.5, rBx: rnd() - 0.5, rBy: rnd() - 0.5,
+        });
+      }
+      fill(old, before);
+      cache.store(old, rows);
+      // Next step: mostly the same points nudged, some dropped, some new, sometimes in another order.
+      const after: Point[] = [];
+      for (const q of before) {
+        if (rnd() < 0.15) continue;
+        after.push({ ...q, rAx: q.rAx + (rnd() - 0.5) * 0.04, rBy: q.rBy + (rnd() - 0.5) * 0.04, allowance: rnd() * 0.01 });
+        if (rnd() < 0.1) after.push({ ...q, a: slot(), feature: Math.floor(rnd() * 6) });
+      }
+      if (trial % 3 === 1) after.sort(() => rnd() - 0.5);
+      if (trial % 3 === 2) for (let k = 0; k + 1 < after.length; k += 7) [after[k], after[k + 1]] = [after[k + 1], after[k]];
+      fill(fresh, after);
+      const reach = 0.02;
+      const want = oracle(old, rows, fresh, reach);
+      cache.restore(fresh, reach);
+      for (let i = 0; i < fresh.count; i++) {
+        expect([fresh.rAx[i], fresh.rAy[i], fresh.rBx[i], fresh.rBy[i]], `trial ${trial}, point ${i}`).to.deep.equal([...want.rA[i], ...want.rB[i]]);
+        expect(fresh.allowance[i], `trial ${trial}, point ${i}`).to.equal(want.allowance[i]);
+        if (want.rA[i][0] !== after[i].rAx) restored++;
+        else kept++;
+      }
+    }
+    expect(restored).to.be.above(5000);
+    expect(kept).to.be.above(1000);
+  });
+});
