@@ -20,8 +20,10 @@ npm run analyze --silent >/dev/null
 cmp -s /tmp/custom-elements.committed.json custom-elements.json || { echo "custom-elements.json was out of date (regenerated now): commit it"; exit 1; }
 echo "== docs/elements.md up to date with custom-elements.json"
 node scripts/docs-elements.mjs --check
-echo "== engine tests in Node"
+echo "== engine tests in Node (default kernel 'js', the JS solver)"
 npx mocha
+echo "== engine tests in Node again, default kernel 'wasm' (the WebAssembly SIMD kernel; the setup fails the run if it does not run)"
+npx mocha --require test/engine/kernel/wasm-default.setup.ts
 echo "== engine in Node: allocation per step, soak"
 node scripts/engine-in-node.mjs
 node --expose-gc scripts/soak.mjs --steps 30000 --samples 5

@@ -1,4 +1,4 @@
-import { World, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
+import { World, type KernelOptions, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
 
 /**
  * Kinetic + gravitational potential energy of every movable particle. The velocity of a position-based step is the
@@ -30,9 +30,10 @@ export function distance(world: World, a: Handle, b: Handle): number {
   return Math.sqrt((pa.x - pb.x) ** 2 + (pa.y - pb.y) ** 2);
 }
 
-/** A world with one of everything (cloth, rope, ragdoll, two soft bodies, a box) in bounds, sleeping off. */
-export function busyWorld(): World {
-  const world = new World({ gravity: { x: 0.5, y: 10 }, sleeping: false, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 } });
+/** A world with one of everything (cloth, rope, ragdoll, two soft bodies, a box) in bounds, sleeping off; the
+ *  default kernel unless `options` names one. */
+export function busyWorld(options: KernelOptions = {}): World {
+  const world = new World({ gravity: { x: 0.5, y: 10 }, sleeping: false, bounds: { minX: -20, minY: -20, maxX: 20, maxY: 10 }, ...options });
   createCloth(world, { origin: { x: -5, y: -10 }, columns: 12, rows: 10, spacing: 0.4, pins: 'corners', shear: 1e-4, bend: 1e-3 });
   createRope(world, { from: { x: 8, y: -10 }, to: { x: 15, y: -10 }, segments: 20 });
   createRagdoll(world, { x: -12, y: 0 });

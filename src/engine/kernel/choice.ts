@@ -13,8 +13,29 @@ let warned = false;
 export type KernelChoice = (typeof KERNELS)[number];
 
 export interface KernelOptions {
-  /** The solver kernel. Default 'js' (see KernelChoice). */
+  /** The solver kernel. Default: the realm's default kernel, 'js' unless setDefaultKernel() changed it (see KernelChoice). */
   kernel?: KernelChoice;
+}
+
+/** The kernel of a World whose options name none (this page, worker or Node process). */
+let defaultChoice: KernelChoice = 'js';
+
+/**
+ * Sets the kernel a World runs when its options name none (`new World()`, `buildScene()` without `kernel`), in this
+ * realm (page, worker or Node process), from the next World made on; Worlds already made keep theirs. The engine's
+ * own default is 'js'. Returns the previous default. Throws a RangeError naming `kernel` and the value for anything
+ * but 'js', 'wasm' or 'auto'.
+ */
+export function setDefaultKernel(kernel: KernelChoice): KernelChoice {
+  const next = oneOf('kernel', kernel, KERNELS);
+  const previous = defaultChoice;
+  defaultChoice = next;
+  return previous;
+}
+
+/** The kernel a World runs when its options name none: 'js' unless setDefaultKernel() changed it. */
+export function defaultKernel(): KernelChoice {
+  return defaultChoice;
 }
 
 /** What a World says about its kernel (World.diagnostics()). */
@@ -44,8 +65,9 @@ function kernelModule(): WebAssembly.Module | string {
   return compiled;
 }
 
-/** The kernel for `choice` (null: the JS loops) and what to say about it. Throws a RangeError for a bad choice. */
-export function chooseKernel(choice: unknown = 'js'): { kernel: WasmKernel | null; diagnostics: KernelDiagnostics } {
+/** The kernel for `choice` (undefined: the default kernel; null kernel: the JS loops) and what to say about it.
+ *  Throws a RangeError for a bad choice. */
+export function chooseKernel(choice: unknown = defaultChoice): { kernel: WasmKernel | null; diagnostics: KernelDiagnostics } {
   const requested = oneOf('kernel', choice, KERNELS);
   if (requested === 'js') return { kernel: null, diagnostics: { kernel: 'js', requested, reason: '' } };
   const module = kernelModule();
@@ -60,7 +82,7 @@ export function chooseKernel(choice: unknown = 'js'): { kernel: WasmKernel | nul
   return { kernel: new WasmKernel(module), diagnostics: { kernel: 'wasm', requested, reason: '' } };
 }
 
-/** For tests: forget the compiled module (so a test can simulate a platform without it). */
+/** For tests: forget the compiled module (so a test can simulate a platform without it). The default kernel stays. */
 export function resetKernelModule(value?: string): void {
   compiled = value;
   warned = false;

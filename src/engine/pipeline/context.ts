@@ -104,7 +104,7 @@ export class StepContext {
   constructor(
     readonly settings: StepSettings,
     public broadPhase: BroadPhase,
-    kernel: unknown = 'js',
+    kernel?: unknown,
   ) {
     const chosen = chooseKernel(kernel);
     // Not enumerable: how the step computes, chosen once, not simulation state (snapshot.ts lists the state fields).

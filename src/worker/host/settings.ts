@@ -1,6 +1,6 @@
 // The run-time parameters (HostParams) and the scene's world options: what a fresh world is made with (load, reset)
 // and what a live setParams() changes in the current one.
-import { KERNELS, type KernelOptions, type World, type WorldOptions } from '../../engine/index.js';
+import { KERNELS, defaultKernel, type KernelOptions, type World, type WorldOptions } from '../../engine/index.js';
 import { oneOf } from '../../engine/validate.js';
 import type { HostError, HostParams } from '../protocol.js';
 
@@ -22,7 +22,8 @@ export function copyParams(p: HostParams): HostParams {
 }
 
 export class HostSettings {
-  params = copyParams(DEFAULT_PARAMS);
+  /** The defaults; the kernel is the engine's default kernel in this realm when the host is made (setDefaultKernel). */
+  params = copyParams({ ...DEFAULT_PARAMS, kernel: defaultKernel() });
   /** The scene's world options (HostScene.world), under the params. */
   worldOptions: WorldOptions = {};
 

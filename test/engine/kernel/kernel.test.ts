@@ -1,5 +1,5 @@
 import { expect } from 'chai';
-import { buildScene, catalogue, createCloth, createRope, SCENE_NAMES, World, type KernelChoice, type KernelOptions, type SceneName, type WorldOptions } from '../../../src/engine/index.js';
+import { buildScene, catalogue, createCloth, createRope, SCENE_NAMES, setDefaultKernel, World, type KernelChoice, type KernelOptions, type SceneName, type WorldOptions } from '../../../src/engine/index.js';
 import { resetKernelModule } from '../../../src/engine/kernel/choice.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
 import { allFinite } from '../helpers.js';
@@ -43,7 +43,12 @@ describe('solver kernel: choice and diagnostics', () => {
   afterEach(() => resetKernelModule());
 
   it("runs the JS solver by default and the WebAssembly kernel when asked ('wasm' or 'auto') in Node", () => {
-    expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '' });
+    const previous = setDefaultKernel('js'); // the engine's own default (the suite's second run sets 'wasm')
+    try {
+      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '' });
+    } finally {
+      setDefaultKernel(previous);
+    }
     expect(new World({ kernel: 'wasm' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'wasm', reason: '' });
     expect(new World({ kernel: 'auto' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'auto', reason: '' });
   });

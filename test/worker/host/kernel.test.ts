@@ -1,7 +1,8 @@
-// The host and the solver kernel: the `kernel` parameter makes the world with it, diagnostics() says which runs, a
+// The host and the solver kernel: the `kernel` parameter (default: the engine's default kernel) makes the world with it, diagnostics() says which runs, a
 // live change remakes the world in the same state, a bad value is a HostError naming the field, and a refused
 // WebAssembly kernel ('auto', the pages' default) warns once and runs JS.
 import { expect } from 'chai';
+import { setDefaultKernel } from '../../../src/engine/index.js';
 import { resetKernelModule } from '../../../src/engine/kernel/choice.js';
 import type { KeyedBody } from '../../../src/worker/protocol.js';
 import { decode, makeHost } from './harness.js';
@@ -27,8 +28,23 @@ function largestGap(a: [number, number][], b: [number, number][]): number {
 describe('EngineHost: the solver kernel', () => {
   afterEach(() => resetKernelModule());
 
-  it("runs the JS solver unless asked; with 'wasm' or 'auto' the WebAssembly kernel (in Node), near the JS one", () => {
-    const js = hostWith();
+  it("runs the engine's default kernel unless asked (JS, or what setDefaultKernel says when the host is made)", () => {
+    const previous = setDefaultKernel('js'); // the engine's own default (the suite's second run sets 'wasm')
+    try {
+      const js = hostWith();
+      expect(js.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'js', kernelReason: '' });
+      setDefaultKernel('wasm');
+      expect(hostWith().host.diagnostics()).to.include({ kernel: 'wasm', kernelRequested: 'wasm', kernelReason: '' });
+      // A host keeps the kernel it was made with: a reset makes its world with the same one.
+      js.host.reset();
+      expect(js.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'js' });
+    } finally {
+      setDefaultKernel(previous);
+    }
+  });
+
+  it("with 'wasm' or 'auto' runs the WebAssembly kernel (in Node), near the JS one", () => {
+    const js = hostWith('js');
     expect(js.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'js', kernelReason: '' });
     const wasm = hostWith('wasm');
     expect(wasm.host.diagnostics()).to.include({ kernel: 'wasm', kernelRequested: 'wasm', kernelReason: '' });
@@ -79,6 +95,9 @@ describe('EngineHost: the solver kernel', () => {
     const warnings: string[] = [];
     const warn = console.warn;
     console.warn = (message: string) => warnings.push(message);
+    // The realm's default kernel as in a page's worker, 'js' (the suite's second run sets 'wasm', and a refused
+    // 'wasm' default warns once more, from the engine, when the host makes its first, empty world).
+    const previous = setDefaultKernel('js');
     try {
       resetKernelModule(refusal);
       const a = hostWith('auto');
@@ -90,6 +109,7 @@ describe('EngineHost: the solver kernel', () => {
       expect(warnings[0]).to.contain("'wasm-unsafe-eval'");
     } finally {
       console.warn = warn;
+      setDefaultKernel(previous);
     }
   });
 });
