@@ -39,6 +39,12 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
 let statics = new Int32Array(16);
 
 /**
+ * Found by updateBoundingBoxes for growPushedBodies: [0] the largest motion of any collider this step, [1] the smallest
+ * size (AABB's shorter side less twice its motion) of a collider that is not static.
+ */
+const reach = new Float64Array(2);
+
+/**
  * A slow body that a fast one will hit this step is driven as far as the hitter moves, but its AABB was grown by its
  * own motion only: it had no pair with the wall behind it, and the hitter pushed it into the wall, or through it,
  * before the next step's detection (a disc between a wall and a box 3× its mass at 500 units/s went through a wall
@@ -51,18 +57,9 @@ function growPushedBodies(ctx: StepContext): void {
   const c = ctx.colliders;
   const pairs = ctx.pairs;
   const motion = ctx.motion;
-  // Nothing to grow unless the fastest body moves more than a quarter of the smallest one's size (most steps).
-  let fastest = 0;
-  let smallest = Infinity;
-  for (let k = 0; k < c.activeCount; k++) {
-    const s = c.active[k];
-    const m = motion[s];
-    if (m > fastest) fastest = m;
-    if (c.isStatic[s]) continue;
-    const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
-    if (size < smallest) smallest = size;
-  }
-  if (fastest <= 0.25 * smallest) return;
+  // Nothing to grow unless the fastest body moves more than a quarter of the smallest one's size (most steps; both
+  // found by updateBoundingBoxes).
+  if (reach[0] <= 0.25 * reach[1]) return;
   const pushed = partnerMotions(c, pairs, motion);
   let staticCount = -1;
   for (let k = 0; k < c.activeCount; k++) {
@@ -113,11 +110,44 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   // The step's reals for rigidBoundingBox (a typed array: no boxed doubles per call).
   ctx.substepReals[0] = dt;
   ctx.substepReals[1] = g;
+  const shapes = ctx.rigidShapes;
+  let fastest = 0;
+  let smallest = Infinity;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
     const idx = c.particles[s];
     if (c.kind[s] === ColliderKind.Rigid) {
-      rigidBoundingBox(ctx, s, idx[0], x, y, vx, vy, omega, radius, invMass, flags);
+      const i = idx[0];
+      if (shapes.kind[s] === RigidShapeKind.Circle) {
+        // A dynamic disc (most bodies of a pile), inline: what rigidBoundingBox does for it.
+        const r = shapes.radius[s];
+        const w = omega[i] < 0 ? -omega[i] : omega[i];
+        const dynamic = invMass[i] !== 0;
+        const speed = Math.sqrt(vx[i] * vx[i] + vy[i] * vy[i]) + w * radius[i];
+        if (dynamic) {
+          const m = speed * dt + g;
+          motion[s] = m;
+          c.isStatic[s] = 0;
+          const minX = x[i] - r - m;
+          const minY = y[i] - r - m;
+          const maxX = x[i] + r + m;
+          const maxY = y[i] + r + m;
+          c.minX[s] = minX;
+          c.minY[s] = minY;
+          c.maxX[s] = maxX;
+          c.maxY[s] = maxY;
+          if (m > fastest) fastest = m;
+          const size = Math.min(maxX - minX, maxY - minY) - 2 * m;
+          if (size < smallest) smallest = size;
+          continue;
+        }
+      }
+      rigidBoundingBox(ctx, s, i, x, y, vx, vy, omega, radius, invMass, flags);
+      const m = motion[s];
+      if (m > fastest) fastest = m;
+      if (c.isStatic[s]) continue;
+      const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
+      if (size < smallest) smallest = size;
       continue;
     }
     let minX = Infinity;
@@ -144,7 +174,13 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
     c.minY[s] = minY - m;
     c.maxX[s] = maxX + m;
     c.maxY[s] = maxY + m;
+    if (m > fastest) fastest = m;
+    if (!movable) continue;
+    const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
+    if (size < smallest) smallest = size;
   }
+  reach[0] = fastest;
+  reach[1] = smallest;
 }
 
 /**
