@@ -197,15 +197,30 @@ export class GridBroadPhase implements BroadPhase {
       }
       start = end;
     }
-    // Large bodies against everything (large–large pairs once).
+    // Large bodies against everything (large–large pairs once). The overlap is tested first, on the packed boxes
+    // (each wall of a pile meets most bodies only there), and only a body that overlaps is looked up in the list of
+    // large ones: the same tests, in an order that leaves the same pairs in the same order.
+    for (let k = 0; k < largeCount; k++) {
+      const s = this.large[k];
+      box[4 * s] = c.minX[s];
+      box[4 * s + 1] = c.minY[s];
+      box[4 * s + 2] = c.maxX[s];
+      box[4 * s + 3] = c.maxY[s];
+    }
+    const active = c.active;
     for (let k = 0; k < largeCount; k++) {
       const a = this.large[k];
+      const aMinX = box[4 * a];
+      const aMinY = box[4 * a + 1];
+      const aMaxX = box[4 * a + 2];
+      const aMaxY = box[4 * a + 3];
       for (let i = 0; i < n; i++) {
-        const b = c.active[i];
+        const b = active[i];
+        const q = 4 * b;
+        if (!(aMinX <= box[q + 2] && box[q] <= aMaxX && aMinY <= box[q + 3] && box[q + 1] <= aMaxY)) continue;
         if (b === a) continue;
-        const bIsLarge = this.isLarge(b, largeCount);
-        if (bIsLarge && b < a) continue;
-        if (overlaps(c, a, b) && accept(a, b)) out.push(a, b);
+        if (b < a && this.isLarge(b, largeCount)) continue;
+        if (accept(a, b)) out.push(a, b);
       }
     }
   }

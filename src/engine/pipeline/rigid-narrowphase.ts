@@ -349,7 +349,17 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   out.radA[i] = ra;
   out.radB[i] = rb;
   out.alpha[i] = 0;
-  out.friction[i] = Math.sqrt(c.friction[a] * c.friction[b]);
+  // The pair's friction, sqrt(μa·μb): a pile's discs mostly share one material, so the last pair's root is reused
+  // for the same two values (a non-zero root only: the same double either way, signs of zero included).
+  const fa = c.friction[a];
+  const fb = c.friction[b];
+  const memo = frictionMemo;
+  if (fa !== memo[0] || fb !== memo[1] || memo[2] === 0) {
+    memo[0] = fa;
+    memo[1] = fb;
+    memo[2] = Math.sqrt(fa * fb);
+  }
+  out.friction[i] = memo[2];
   out.restitution[i] = Math.max(c.restitution[a], c.restitution[b]);
   out.depth[i] = depth;
   out.allowance[i] = depth > 0 ? depth : 0;
@@ -367,6 +377,9 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   const key = (a * 4194304 + b) * 65536;
   out.feature[i] = key < 9007199254740991 ? key : key % 9007199254740991;
 }
+
+/** The disc pairs' last friction values μa, μb and their root (circles()). */
+const frictionMemo = new Float64Array([NaN, NaN, 0]);
 
 /** Indices into the pair list of the pairs with a static side, in order (scratch of RigidNarrowPhase.run). */
 let staticPairs = new Int32Array(256);
