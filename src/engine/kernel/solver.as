@@ -657,21 +657,39 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
     const ln = f64x2.add(l0, l1);
     const moves = f64x2.ne(ln, zero);
     const mlA = f64x2.mul(imA, ln);
-    const ax1 = v128.bitselect(f64x2.sub(ax0, f64x2.mul(mlA, nx)), ax0, moves);
-    const ay1 = v128.bitselect(f64x2.sub(ay0, f64x2.mul(mlA, ny)), ay0, moves);
+    let ax1 = f64x2.sub(ax0, f64x2.mul(mlA, nx));
+    let ay1 = f64x2.sub(ay0, f64x2.mul(mlA, ny));
     const tA = f64x2.mul(iiA, f64x2.add(f64x2.mul(l0, rnA0), v128.and(f64x2.mul(l1, rnA1), two)));
-    const angA1 = v128.bitselect(f64x2.sub(angA0, tA), angA0, moves);
-    dA = v128.bitselect(f64x2.sub(dA, tA), dA, moves);
+    let angA1 = f64x2.sub(angA0, tA);
     const mlB = f64x2.mul(imB, ln);
-    const bx1 = v128.bitselect(f64x2.add(bx0, f64x2.mul(mlB, nx)), bx0, moves);
-    const by1 = v128.bitselect(f64x2.add(by0, f64x2.mul(mlB, ny)), by0, moves);
+    let bx1 = f64x2.add(bx0, f64x2.mul(mlB, nx));
+    let by1 = f64x2.add(by0, f64x2.mul(mlB, ny));
     const tB = f64x2.mul(iiB, f64x2.add(f64x2.mul(l0, rnB0), v128.and(f64x2.mul(l1, rnB1), two)));
-    const angB1 = v128.bitselect(f64x2.add(angB0, tB), angB0, moves);
-    dB = v128.bitselect(f64x2.add(dB, tB), dB, moves);
-    const lambda0 = v128.bitselect(f64x2.add(v128.load(q0, 112), l0), v128.load(q0, 112), moves);
-    const lambda1 = v128.bitselect(f64x2.add(v128.load(q1, 112), l1), v128.load(q1, 112), moves);
-    const impulse0 = v128.bitselect(f64x2.add(v128.load(q0, 128), l0), v128.load(q0, 128), moves);
-    const impulse1 = v128.bitselect(f64x2.add(v128.load(q1, 128), l1), v128.load(q1, 128), moves);
+    let angB1 = f64x2.add(angB0, tB);
+    let lambda0 = f64x2.add(v128.load(q0, 112), l0);
+    let lambda1 = f64x2.add(v128.load(q1, 112), l1);
+    let impulse0 = f64x2.add(v128.load(q0, 128), l0);
+    let impulse1 = f64x2.add(v128.load(q1, 128), l1);
+    const dA1 = f64x2.sub(dA, tA);
+    const dB1 = f64x2.add(dB, tB);
+    if (i64x2.all_true(moves)) {
+      dA = dA1;
+      dB = dB1;
+    } else {
+      // A lane with nothing to apply keeps its bodies and multipliers exactly (the JS skips it).
+      ax1 = v128.bitselect(ax1, ax0, moves);
+      ay1 = v128.bitselect(ay1, ay0, moves);
+      angA1 = v128.bitselect(angA1, angA0, moves);
+      dA = v128.bitselect(dA1, dA, moves);
+      bx1 = v128.bitselect(bx1, bx0, moves);
+      by1 = v128.bitselect(by1, by0, moves);
+      angB1 = v128.bitselect(angB1, angB0, moves);
+      dB = v128.bitselect(dB1, dB, moves);
+      lambda0 = v128.bitselect(lambda0, v128.load(q0, 112), moves);
+      lambda1 = v128.bitselect(lambda1, v128.load(q1, 112), moves);
+      impulse0 = v128.bitselect(impulse0, v128.load(q0, 128), moves);
+      impulse1 = v128.bitselect(impulse1, v128.load(q1, 128), moves);
+    }
     v128.store(q0, lambda0, 112);
     v128.store(q1, lambda1, 112);
     v128.store(q0, impulse0, 128);
@@ -712,18 +730,31 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
       const before = mf(pk, 8);
       const total = f64x2.pmax(f64x2.pmin(f64x2.add(before, want), limit), f64x2.neg(limit));
       const dt = f64x2.sub(total, before);
-      mput(pk, 8, v128.bitselect(total, before, holds));
       const slipped = f64x2.add(slip, f64x2.mul(f64x2.sub(want, dt), w));
-      mput(pk, 9, v128.bitselect(slipped, slip, holds));
-      mput(pk, 10, v128.bitselect(slipped, mf(pk, 10), v128.and(holds, two)));
       const tlA = f64x2.mul(imA, dt);
-      axN = v128.bitselect(f64x2.add(ax1, f64x2.mul(tlA, ny)), ax1, holds);
-      ayN = v128.bitselect(f64x2.sub(ay1, f64x2.mul(tlA, nx)), ay1, holds);
-      angAN = v128.bitselect(f64x2.sub(angA1, f64x2.mul(f64x2.mul(iiA, la), dt)), angA1, holds);
+      axN = f64x2.add(ax1, f64x2.mul(tlA, ny));
+      ayN = f64x2.sub(ay1, f64x2.mul(tlA, nx));
+      angAN = f64x2.sub(angA1, f64x2.mul(f64x2.mul(iiA, la), dt));
       const tlB = f64x2.mul(imB, dt);
-      bxN = v128.bitselect(f64x2.sub(bx1, f64x2.mul(tlB, ny)), bx1, holds);
-      byN = v128.bitselect(f64x2.add(by1, f64x2.mul(tlB, nx)), by1, holds);
-      angBN = v128.bitselect(f64x2.add(angB1, f64x2.mul(f64x2.mul(iiB, lb), dt)), angB1, holds);
+      bxN = f64x2.sub(bx1, f64x2.mul(tlB, ny));
+      byN = f64x2.add(by1, f64x2.mul(tlB, nx));
+      angBN = f64x2.add(angB1, f64x2.mul(f64x2.mul(iiB, lb), dt));
+      if (i64x2.all_true(v128.and(holds, two))) {
+        mput(pk, 8, total);
+        mput(pk, 9, slipped);
+        mput(pk, 10, slipped);
+      } else {
+        // A lane where friction does not act keeps its bodies and state exactly.
+        mput(pk, 8, v128.bitselect(total, before, holds));
+        mput(pk, 9, v128.bitselect(slipped, slip, holds));
+        mput(pk, 10, v128.bitselect(slipped, mf(pk, 10), v128.and(holds, two)));
+        axN = v128.bitselect(axN, ax1, holds);
+        ayN = v128.bitselect(ayN, ay1, holds);
+        angAN = v128.bitselect(angAN, angA1, holds);
+        bxN = v128.bitselect(bxN, bx1, holds);
+        byN = v128.bitselect(byN, by1, holds);
+        angBN = v128.bitselect(angBN, angB1, holds);
+      }
     }
     scatter2(x, oa0, oa1, axN);
     scatter2(y, oa0, oa1, ayN);
@@ -802,11 +833,26 @@ export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: 
     const mpB = f64x2.mul(mf(pk, 5), P);
     const tA = f64x2.mul(mf(pk, 4), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 15)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 15)), two)));
     const tB = f64x2.mul(mf(pk, 6), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 16)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 16)), two)));
-    scatter2(vx, oa0, oa1, v128.bitselect(f64x2.sub(vax, f64x2.mul(mpA, nx)), vax, kicks));
-    scatter2(vy, oa0, oa1, v128.bitselect(f64x2.sub(vay, f64x2.mul(mpA, ny)), vay, kicks));
-    scatter2(omega, oa0, oa1, v128.bitselect(f64x2.sub(wa, tA), wa, kicks));
-    scatter2(vx, ob0, ob1, v128.bitselect(f64x2.add(vbx, f64x2.mul(mpB, nx)), vbx, kicks));
-    scatter2(vy, ob0, ob1, v128.bitselect(f64x2.add(vby, f64x2.mul(mpB, ny)), vby, kicks));
-    scatter2(omega, ob0, ob1, v128.bitselect(f64x2.add(wb, tB), wb, kicks));
+    let nvax = f64x2.sub(vax, f64x2.mul(mpA, nx));
+    let nvay = f64x2.sub(vay, f64x2.mul(mpA, ny));
+    let nwa = f64x2.sub(wa, tA);
+    let nvbx = f64x2.add(vbx, f64x2.mul(mpB, nx));
+    let nvby = f64x2.add(vby, f64x2.mul(mpB, ny));
+    let nwb = f64x2.add(wb, tB);
+    if (!i64x2.all_true(kicks)) {
+      // A lane with no impulse keeps its bodies' velocities exactly (the JS skips it).
+      nvax = v128.bitselect(nvax, vax, kicks);
+      nvay = v128.bitselect(nvay, vay, kicks);
+      nwa = v128.bitselect(nwa, wa, kicks);
+      nvbx = v128.bitselect(nvbx, vbx, kicks);
+      nvby = v128.bitselect(nvby, vby, kicks);
+      nwb = v128.bitselect(nwb, wb, kicks);
+    }
+    scatter2(vx, oa0, oa1, nvax);
+    scatter2(vy, oa0, oa1, nvay);
+    scatter2(omega, oa0, oa1, nwa);
+    scatter2(vx, ob0, ob1, nvbx);
+    scatter2(vy, ob0, ob1, nvby);
+    scatter2(omega, ob0, ob1, nwb);
   }
 }
