@@ -157,7 +157,7 @@ describe('solver kernel: rigid contacts in lanes', () => {
     }
   });
 
-  it('boxes and discs together (lone points beside manifolds), added in waves: still the JS doubles one manifold a packet', () => {
+  it('discs, then boxes and discs together (lone points beside manifolds), added in waves: still the JS doubles one manifold a packet', () => {
     const make = (kernel: 'js' | 'wasm') => {
       const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel } as WorldOptions);
       world.addRigidBody({ x: 0, y: 1, points: [{ x: -12, y: -0.5 }, { x: 12, y: -0.5 }, { x: 12, y: 0.5 }, { x: -12, y: 0.5 }], type: 'static' });
@@ -175,7 +175,8 @@ describe('solver kernel: rigid contacts in lanes', () => {
         for (let k = 0; k < 24; k++) {
           const x = -10 + (k % 12) * 1.7 + (wave % 2) * 0.4;
           const y = -3 - Math.floor(k / 12) * 1.3;
-          if ((k + wave) % 3 === 0) world.addRigidBody({ x, y, radius: 0.45, friction: 0.5 });
+          // The first wave discs only (single-point packets), then boxes too (laid out by manifold: the packets grow).
+          if (wave === 0 || (k + wave) % 3 === 0) world.addRigidBody({ x, y, radius: 0.45, friction: 0.5 });
           else world.addRigidBody({ x, y, points: square, angle: 0.05 * k, friction: 0.6 });
         }
       }
@@ -186,6 +187,7 @@ describe('solver kernel: rigid contacts in lanes', () => {
       expect(lanes.stateHash(), `wave ${wave}`).to.equal(js.stateHash());
     }
     expect(kernelOf(lanes).manifoldSteps).to.be.greaterThan(100);
+    expect(kernelOf(lanes).rigidLaneSteps - kernelOf(lanes).manifoldSteps, 'single-point steps').to.be.greaterThan(10);
     expect(kernelOf(lanes).rigidJsSteps).to.equal(0);
   });
 
