@@ -33,7 +33,7 @@ export type BodyType = BodyDescription['type'];
 export const BODY_TYPES: readonly BodyType[] = ['box', 'circle', 'polygon', 'rope', 'cloth', 'softbody', 'ragdoll'];
 
 export interface SceneDescription {
-  /** The world's options, the solver kernel among them (`kernel`, default 'js'). */
+  /** The world's options, the solver kernel among them (`kernel`: when left out, the default set by setDefaultKernel(), 'js' unless changed). */
   world?: WorldOptions & KernelOptions;
   bodies: BodyDescription[];
 }
