@@ -66,6 +66,52 @@ function maxSeparation(P: PolygonRef, Q: PolygonRef, query: Float64Array): void 
   const { x: qx, y: qy } = Q;
   const qs = Q.start;
   const qe = qs + Q.count;
+  if (Q.count === 4) {
+    // A quadrilateral (boxes, most of a pile): its vertices in locals, the same distances in the same order.
+    const q0x = qx[qs];
+    const q0y = qy[qs];
+    const q1x = qx[qs + 1];
+    const q1y = qy[qs + 1];
+    const q2x = qx[qs + 2];
+    const q2y = qy[qs + 2];
+    const q3x = qx[qs + 3];
+    const q3y = qy[qs + 3];
+    for (let i = 0; i < P.count; i++) {
+      const k = P.start + i;
+      const nx = pnx[k];
+      const ny = pny[k];
+      const vx = px[k];
+      const vy = py[k];
+      let min = Infinity;
+      edge: {
+        let d = (q0x - vx) * nx + (q0y - vy) * ny;
+        if (d < min) {
+          min = d;
+          if (min <= best) break edge;
+        }
+        d = (q1x - vx) * nx + (q1y - vy) * ny;
+        if (d < min) {
+          min = d;
+          if (min <= best) break edge;
+        }
+        d = (q2x - vx) * nx + (q2y - vy) * ny;
+        if (d < min) {
+          min = d;
+          if (min <= best) break edge;
+        }
+        d = (q3x - vx) * nx + (q3y - vy) * ny;
+        if (d < min) min = d;
+      }
+      if (min > best) {
+        best = min;
+        bestEdge = i;
+        if (best > margin) break;
+      }
+    }
+    found[0] = best;
+    found[1] = bestEdge;
+    return;
+  }
   for (let i = 0; i < P.count; i++) {
     const k = P.start + i;
     const nx = pnx[k];

@@ -122,6 +122,61 @@ describe('rigid manifolds', () => {
     expect(hits).to.be.greaterThan(1000);
   });
 
+  it('the reference face is the edge of largest separation, the first of equal ones (quads and other polygons, exact ties of grid-aligned boxes)', () => {
+    // From the definition: for each side the smallest signed distance of the other's vertices to each edge, the first
+    // edge where that is largest, and B's edge only when it beats A's by the tolerance; read back from the feature
+    // bits (reference edge, which side). Quadrilaterals take their own path in maxSeparation: boxes on a grid (ties
+    // everywhere), rotated boxes, any quads, and polygons of 3-8 vertices for the general loop.
+    const r = rng(77);
+    const out = new ContactManifold();
+    const box = (cx: number, cy: number, w: number, h: number, turn: number): PolygonRef => {
+      const c = Math.cos(turn);
+      const s = Math.sin(turn);
+      const xs = [-w, w, w, -w].map((x, k) => cx + c * x - s * [-h, -h, h, h][k]);
+      const ys = [-w, w, w, -w].map((x, k) => cy + s * x + c * [-h, -h, h, h][k]);
+      return polygonRef(xs, ys);
+    };
+    const separation = (P: PolygonRef, Q: PolygonRef): [number, number] => {
+      let best = -Infinity;
+      let edge = 0;
+      for (let i = 0; i < P.count; i++) {
+        let min = Infinity;
+        for (let j = 0; j < Q.count; j++) min = Math.min(min, (Q.x[j] - P.x[i]) * P.nx[i] + (Q.y[j] - P.y[i]) * P.ny[i]);
+        if (min > best) {
+          best = min;
+          edge = i;
+        }
+      }
+      return [best, edge];
+    };
+    let checked = 0;
+    for (let t = 0; t < 6000; t++) {
+      const kind = t % 4;
+      let A: PolygonRef;
+      let B: PolygonRef;
+      if (kind === 0) {
+        // Unit boxes on a half-shifted grid, touching exactly or one step apart (a pyramid's neighbours).
+        A = box(Math.floor(r() * 5) * 0.5, Math.floor(r() * 5), 0.5, 0.5, 0);
+        B = box(A.x[0] + 0.5 + Math.floor(r() * 3) * 0.5, A.y[0] + 0.5 + Math.floor(r() * 3) - 1, 0.5, 0.5, 0);
+      } else if (kind === 1) {
+        A = box(0, 0, 0.5, 0.5, r() * 7);
+        B = box((r() - 0.5) * 2, (r() - 0.5) * 2, 0.2 + r(), 0.2 + r(), r() * 7);
+      } else {
+        A = randomConvex(r, 0, 0, 1);
+        B = randomConvex(r, (r() - 0.5) * 3, (r() - 0.5) * 3, 0.3 + r());
+      }
+      out.query[0] = 0.05;
+      if (!collidePolygons(A, B, out)) continue;
+      const [sepA, edgeA] = separation(A, B);
+      const [sepB, edgeB] = separation(B, A);
+      const flip = sepB > sepA + 5e-4;
+      expect((out.feature[0] & 32768) !== 0, `pair ${t}: reference side`).to.equal(flip);
+      expect((out.feature[0] >> 8) & 127, `pair ${t}: reference edge`).to.equal(flip ? edgeB : edgeA);
+      checked++;
+    }
+    expect(checked).to.be.above(2500);
+  });
+
   it('a box resting on a wider box: two points at the bottom corners, normal straight down', () => {
     const ground = polygonRef([-5, 5, 5, -5], [0, 0, 1, 1]);
     // y down: a unit box sitting on the ground's top face (y = 0) from above, sunk by 0.01.
