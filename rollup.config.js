@@ -127,12 +127,12 @@ const ENGINE_INDEX = resolve(root, 'src/engine/index.ts');
  * physics-elements/engine. A page module that imports an engine name the function does not return fails the build
  * ("... is not exported by \0engine-factory"): add that name to engine-bundle.ts.
  */
-function sharedEngine() {
+function sharedEngine(extra = []) {
   let factory = null;
   return {
     name: 'shared-engine',
     async buildStart() {
-      const bundle = await rollup({ input: resolve(root, 'src/worker/engine-bundle.ts'), plugins: [...basePlugins(), minify()] });
+      const bundle = await rollup({ input: resolve(root, 'src/worker/engine-bundle.ts'), plugins: [...extra, ...basePlugins(), minify()] });
       const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
       for (const f of bundle.watchFiles ?? []) this.addWatchFile(f);
       await bundle.close();
@@ -220,6 +220,12 @@ const external = [/^lit/, /^@lit/, 'comlink', 'p5'];
 const PAGE_SIDE = ['worker/triple-buffer', 'worker/publishers', 'worker/protocol', 'worker/resources', 'engine/builders/common', 'engine/builders/ragdoll', 'engine/options', 'engine/validate'].map((f) => resolve(root, `src/${f}.ts`));
 const pageSideChunk = (id) => (PAGE_SIDE.includes(id) ? 'shared' : undefined);
 
+/** The single-file build's input and plugins; `extra` plugins go first in both of its builds (the engine function's and
+ *  the page's). scripts/sizes.mjs builds it with a plugin that swaps the WebAssembly kernel for a stub. */
+export function singleFile(extra = []) {
+  return { input: 'src/index.ts', plugins: [...extra, sharedEngine(extra), ...basePlugins(), worker({ inline: true }), minify()] };
+}
+
 export default [
   {
     input: { index: 'src/engine/index.ts' },
@@ -233,13 +239,12 @@ export default [
     plugins: [...basePlugins({ external: true }), worker(), minify()],
   },
   {
-    input: 'src/index.ts',
+    ...singleFile(),
     // One build, two files: the same code as an ES module and as a classic script (its exports on window.PhysicsElements).
     output: [
       { file: 'dist/physics-elements.bundle.js', format: 'es', inlineDynamicImports: true },
       { file: 'dist/physics-elements.iife.js', format: 'iife', name: 'PhysicsElements', inlineDynamicImports: true },
     ],
-    plugins: [sharedEngine(), ...basePlugins(), worker({ inline: true }), minify()],
   },
   {
     input: 'src/index.ts',

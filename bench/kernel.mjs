@@ -83,7 +83,7 @@ function measure(scene, kernel) {
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const names = arg('--scenes', Object.keys(SCENES).join(',')).split(',');
-const wasmBytes = Buffer.from((await importTs('src/engine/kernel/wasm-bytes.ts')).KERNEL_WASM_BASE64, 'base64');
+const wasmBytes = (await import('../scripts/build-wasm.mjs')).readKernelBytes();
 const load = [loadavg()[0]];
 console.log(`solver kernels: ${runs} runs alternating, sleeping off, substeps ${new World().substeps} × iterations ${new World().iterations}, Node ${process.version}`);
 console.log('| scene | particles | links | js CPU ms/step | wasm CPU ms/step | wasm/js | wall js | wall wasm | max strain js | wasm |');

@@ -13,6 +13,10 @@
 //   src/render/p5/bundle.mjs, which leaves out the WebGL and image code of p5's core with scripts/build/p5-trim.mjs:
 //   the same module the builds inline) and the whole library, for comparison.
 // - p5's share of the single file: the file with p5 minus the same file without it.
+// - The WebAssembly kernel's share of the single file (issue 16: at most 10 KB gzip): the single-file build (with p5)
+//   minus the same build with src/engine/kernel/choice.ts replaced by a stub that always answers 'js' (same API, so
+//   the kernel's modules, wasm-kernel.ts, runs.ts, colour.ts and wasm-bytes.ts, drop out), both built here in memory
+//   from rollup.config.js's singleFile(); and the module's own bytes (wasm-bytes.ts decoded), raw and gzip.
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
@@ -21,6 +25,8 @@ import { rollup } from 'rollup';
 import nodeResolve from '@rollup/plugin-node-resolve';
 import terser from '@rollup/plugin-terser';
 import { bundleP5 } from '../src/render/p5/bundle.mjs';
+import { singleFile } from '../rollup.config.js';
+import { readKernelBytes } from './build-wasm.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = resolve(root, 'dist');
@@ -101,8 +107,53 @@ if (existsSync(p5)) add('all of p5 (for comparison)', [fileSize(p5)]);
 const [withP5, withoutP5] = rows;
 const share = { raw: withP5.raw - withoutP5.raw, gzip: withP5.gzip - withoutP5.gzip };
 
+/** src/engine/kernel/choice.ts's API with no kernel: every World runs the JS solver. */
+function kernelStub() {
+  const choice = resolve(root, 'src/engine/kernel/choice.ts');
+  const STUB = '\0kernel-stub';
+  return {
+    name: 'kernel-stub',
+    resolveId(source, importer) {
+      if (!importer || !source.startsWith('.') || !source.endsWith('.js')) return null;
+      return resolve(dirname(importer), source.slice(0, -3) + '.ts') === choice ? STUB : null;
+    },
+    load(id) {
+      if (id !== STUB) return null;
+      return `import { oneOf } from ${JSON.stringify(resolve(root, 'src/engine/validate.ts'))};
+export const KERNELS = ['js', 'wasm', 'auto'];
+let fallback = 'js';
+export function setDefaultKernel(kernel) { const next = oneOf('kernel', kernel, KERNELS), previous = fallback; fallback = next; return previous; }
+export function defaultKernel() { return fallback; }
+export function chooseKernel(choice = fallback) {
+  const requested = oneOf('kernel', choice, KERNELS);
+  return { kernel: null, diagnostics: { kernel: 'js', requested, reason: requested === 'js' ? '' : 'this build has no WebAssembly kernel' } };
+}
+export function resetKernelModule() {}`;
+    },
+  };
+}
+
+/** The single file (ES module, with p5) built in memory, with `extra` plugins. */
+async function singleFileBytes(extra) {
+  const config = singleFile(extra);
+  const bundle = await rollup({ ...config, onwarn: () => {} });
+  const { output } = await bundle.generate({ format: 'es', inlineDynamicImports: true });
+  await bundle.close();
+  return Buffer.from(output[0].code);
+}
+const withKernel = await singleFileBytes([]);
+const withoutKernel = await singleFileBytes([kernelStub()]);
+if (withKernel.length === withoutKernel.length) throw new Error('kernel stub: the single file did not change (was choice.ts resolved elsewhere?)');
+const moduleBytes = readKernelBytes();
+const kernel = {
+  raw: withKernel.length - withoutKernel.length,
+  gzip: gzip(withKernel) - gzip(withoutKernel),
+  singleFile: { raw: withKernel.length, gzip: gzip(withKernel) },
+  module: { raw: moduleBytes.length, gzip: gzip(moduleBytes) },
+};
+
 if (process.argv.includes('--json')) {
-  console.log(JSON.stringify({ rows, p5Share: share }, null, 2));
+  console.log(JSON.stringify({ rows, p5Share: share, kernelShare: kernel }, null, 2));
 } else {
   const kb = (n) => (n / 1024).toFixed(1);
   const many = (r, key) => (r.files.length > 1 ? ` (${r.files.map((p) => kb(p[key])).join(' + ')})` : '');
@@ -112,4 +163,9 @@ if (process.argv.includes('--json')) {
     console.log(`| ${r.name} | ${files} | ${kb(r.raw)} KB${many(r, 'raw')} | **${kb(r.gzip)} KB**${many(r, 'gzip')} |`);
   }
   console.log(`\np5's share of the single file: ${kb(share.gzip)} KB of ${kb(withP5.gzip)} KB gzip (${((100 * share.gzip) / withP5.gzip).toFixed(0)}%), ${kb(share.raw)} KB raw.`);
+  console.log(
+    `The WebAssembly kernel's share of the single file: ${kb(kernel.gzip)} KB gzip (${kernel.gzip} bytes), ${kb(kernel.raw)} KB raw ` +
+      `(the file built with it minus without it, ${kb(kernel.singleFile.gzip)} KB gzip with it); the module itself ` +
+      `${kernel.module.raw} bytes, ${kernel.module.gzip} gzip.`,
+  );
 }

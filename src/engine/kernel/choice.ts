@@ -2,7 +2,7 @@
 // kernel (wasm-kernel.ts) where the platform has WebAssembly with 128-bit SIMD and the page's Content-Security-Policy
 // allows compiling it (script-src 'wasm-unsafe-eval'). The choice is made once, when the World is made.
 import { oneOf } from '../validate.js';
-import { KERNEL_WASM_BASE64 } from './wasm-bytes.js';
+import { KERNEL_WASM_OFFSET, KERNEL_WASM_TEXT } from './wasm-bytes.js';
 import { WasmKernel } from './wasm-kernel.js';
 
 export const KERNELS = ['js', 'wasm', 'auto'] as const;
@@ -54,7 +54,7 @@ let compiled: WebAssembly.Module | string | undefined;
 function kernelModule(): WebAssembly.Module | string {
   if (compiled !== undefined) return compiled;
   if (typeof WebAssembly !== 'object') return (compiled = 'this platform has no WebAssembly');
-  const bytes = Uint8Array.from(atob(KERNEL_WASM_BASE64), (ch) => ch.charCodeAt(0));
+  const bytes = kernelBytes(KERNEL_WASM_TEXT, KERNEL_WASM_OFFSET);
   if (!WebAssembly.validate(bytes)) return (compiled = 'this platform has WebAssembly without 128-bit SIMD');
   try {
     compiled = new WebAssembly.Module(bytes);
@@ -63,6 +63,25 @@ function kernelModule(): WebAssembly.Module | string {
     compiled = `WebAssembly was refused (${(error as Error).message}); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'`;
   }
   return compiled;
+}
+
+/**
+ * The module's bytes from wasm-bytes.ts's text (scripts/build-wasm.mjs, encodeKernel): the alphabet is printable ASCII
+ * but for ' " \\ and < (91 characters); its character 2 + v is v, its characters 0 and 1 start a pair: 89 + 91 k + the
+ * next character's index; the byte is v less the offset, modulo 256.
+ */
+export function kernelBytes(text: string, offset: number): Uint8Array<ArrayBuffer> {
+  const index = new Uint8Array(128);
+  let size = 0;
+  for (let c = 32; c < 127; c++) if (!`'"\\<`.includes(String.fromCharCode(c))) index[c] = size++;
+  const bytes = new Uint8Array(text.length);
+  let n = 0;
+  for (let i = 0; i < text.length; i++) {
+    const k = index[text.charCodeAt(i)];
+    // A Uint8Array stores the value modulo 256.
+    bytes[n++] = (k < 2 ? size - 2 + k * size + index[text.charCodeAt(++i)] : k - 2) - offset;
+  }
+  return bytes.subarray(0, n);
 }
 
 /** The kernel for `choice` (undefined: the default kernel; null kernel: the JS loops) and what to say about it.
