@@ -3,6 +3,7 @@
 import { expect } from 'chai';
 import { World, buildScene, createCloth, defaultKernel, setDefaultKernel, type KernelChoice } from '../../src/engine/index.js';
 import { resetKernelModule } from '../../src/engine/kernel/choice.js';
+import { CSP_REFUSAL, withWasmRefused } from './helpers.js';
 
 describe('setDefaultKernel: the kernel of a World that names none', () => {
   let found: KernelChoice;
@@ -58,18 +59,11 @@ describe('setDefaultKernel: the kernel of a World that names none', () => {
   });
 
   it("where WebAssembly is refused, a 'wasm' default runs JS with the reason and warns once", () => {
-    const refusal = "WebAssembly was refused (CompileError); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'";
-    const warnings: string[] = [];
-    const warn = console.warn;
-    console.warn = (message: string) => warnings.push(message);
-    try {
-      resetKernelModule(refusal);
+    withWasmRefused((warnings) => {
       setDefaultKernel('wasm');
-      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: refusal });
+      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL });
       expect(new World().diagnostics().kernel).to.equal('js');
       expect(warnings).to.have.length(1);
-    } finally {
-      console.warn = warn;
-    }
+    });
   });
 });

@@ -1,4 +1,5 @@
 import { World, type KernelOptions, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
+import { resetKernelModule } from '../../src/engine/kernel/choice.js';
 
 /**
  * Kinetic + gravitational potential energy of every movable particle. The velocity of a position-based step is the
@@ -41,4 +42,23 @@ export function busyWorld(options: KernelOptions = {}): World {
   createSoftBody(world, { center: { x: 5, y: 5 }, radius: 1, model: 'springs' });
   createBox(world, { x: 12, y: 5, width: 2, height: 1, angle: 0.4 });
   return world;
+}
+
+/** What chooseKernel reports when a page's Content-Security-Policy refuses to compile WebAssembly. */
+export const CSP_REFUSAL = "WebAssembly was refused (CompileError); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'";
+
+/**
+ * Runs `body` as in a page whose policy refuses WebAssembly (resetKernelModule(CSP_REFUSAL): the caller's afterEach
+ * resets the module) with console.warn recording into the array `body` gets; console.warn is restored after.
+ */
+export function withWasmRefused(body: (warnings: string[]) => void): void {
+  const warnings: string[] = [];
+  const warn = console.warn;
+  console.warn = (message: string) => warnings.push(message);
+  try {
+    resetKernelModule(CSP_REFUSAL);
+    body(warnings);
+  } finally {
+    console.warn = warn;
+  }
 }

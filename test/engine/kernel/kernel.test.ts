@@ -2,7 +2,7 @@ import { expect } from 'chai';
 import { buildScene, catalogue, createCloth, createRope, SCENE_NAMES, setDefaultKernel, World, type KernelChoice, type KernelOptions, type SceneName, type WorldOptions } from '../../../src/engine/index.js';
 import { resetKernelModule } from '../../../src/engine/kernel/choice.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
-import { allFinite } from '../helpers.js';
+import { allFinite, CSP_REFUSAL, withWasmRefused } from '../helpers.js';
 
 type Kernel = 'js' | 'wasm';
 
@@ -61,17 +61,12 @@ describe('solver kernel: choice and diagnostics', () => {
   });
 
   it('falls back to JS where WebAssembly is refused: silently for auto, with one warning for wasm (once); it still steps', () => {
-    const refusal = "WebAssembly was refused (CompileError); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'";
-    const warnings: string[] = [];
-    const warn = console.warn;
-    console.warn = (message: string) => warnings.push(message);
-    try {
-      resetKernelModule(refusal);
+    withWasmRefused((warnings) => {
       const auto = clothAndRope('auto' as Kernel);
-      expect(auto.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'auto', reason: refusal });
+      expect(auto.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'auto', reason: CSP_REFUSAL });
       expect(warnings).to.have.length(0);
       const wasm = clothAndRope('wasm');
-      expect(wasm.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: refusal });
+      expect(wasm.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL });
       expect(warnings).to.have.length(1);
       expect(warnings[0]).to.contain('wasm-unsafe-eval');
       // Once per page or worker: another world asking for 'wasm' (a scene's reset rebuilds it) says nothing more.
@@ -81,9 +76,7 @@ describe('solver kernel: choice and diagnostics', () => {
       for (let k = 0; k < 60; k++) [auto, wasm, js].forEach((w) => w.step());
       expect(wasm.stateHash()).to.equal(js.stateHash());
       expect(auto.stateHash()).to.equal(js.stateHash());
-    } finally {
-      console.warn = warn;
-    }
+    });
   });
 });
 

@@ -5,6 +5,7 @@ import { expect } from 'chai';
 import { setDefaultKernel } from '../../../src/engine/index.js';
 import { resetKernelModule } from '../../../src/engine/kernel/choice.js';
 import type { KeyedBody } from '../../../src/worker/protocol.js';
+import { CSP_REFUSAL, withWasmRefused } from '../../engine/helpers.js';
 import { decode, makeHost } from './harness.js';
 
 /** A pinned cloth and a slack rope: distance constraints, which the kernel solves. */
@@ -91,24 +92,20 @@ describe('EngineHost: the solver kernel', () => {
   });
 
   it("where the page's policy refuses WebAssembly, 'auto' runs JS and warns once (per page or worker)", () => {
-    const refusal = "WebAssembly was refused (CompileError); the page's Content-Security-Policy needs script-src 'wasm-unsafe-eval'";
-    const warnings: string[] = [];
-    const warn = console.warn;
-    console.warn = (message: string) => warnings.push(message);
     // The realm's default kernel as in a page's worker, 'js' (the suite's second run sets 'wasm', and a refused
     // 'wasm' default warns once more, from the engine, when the host makes its first, empty world).
     const previous = setDefaultKernel('js');
     try {
-      resetKernelModule(refusal);
-      const a = hostWith('auto');
-      const b = hostWith('auto');
-      expect(a.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'auto', kernelReason: refusal });
-      b.host.step(30);
-      expect(decode(b.frame).positions.flat().every(Number.isFinite)).to.equal(true);
-      expect(warnings).to.have.length(1);
-      expect(warnings[0]).to.contain("'wasm-unsafe-eval'");
+      withWasmRefused((warnings) => {
+        const a = hostWith('auto');
+        const b = hostWith('auto');
+        expect(a.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'auto', kernelReason: CSP_REFUSAL });
+        b.host.step(30);
+        expect(decode(b.frame).positions.flat().every(Number.isFinite)).to.equal(true);
+        expect(warnings).to.have.length(1);
+        expect(warnings[0]).to.contain("'wasm-unsafe-eval'");
+      });
     } finally {
-      console.warn = warn;
       setDefaultKernel(previous);
     }
   });
