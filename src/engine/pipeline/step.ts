@@ -12,7 +12,8 @@
 // With the WebAssembly kernel (World option kernel, ctx.kernel), integration (with the accelerations, unless springs
 // add to them), velocities and the distance sweep run in it, over the same columns (kernel/wasm-kernel.ts), while the
 // world has links to sweep (kernelAtWork); every other phase is the same JS function either way. Its rigid contact
-// lanes have their own gate: a step whose rigid contacts are all single points (disc piles) sweeps them there
+// lanes have their own gate: a step whose rigid contacts are single points or two-point manifolds between rigid
+// bodies or with the world, restitution 0 and no shock sweep (disc piles, box piles, pyramids) sweeps them there
 // (kernel.beginRigid after the first substep's prepare, endRigid after the substeps); any other step, the JS solver.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
