@@ -48,9 +48,8 @@ export function overlaps(c: Colliders, a: number, b: number): boolean {
   return c.minX[a] <= c.maxX[b] && c.minX[b] <= c.maxX[a] && c.minY[a] <= c.maxY[b] && c.minY[b] <= c.maxY[a];
 }
 
-/** Per collider slot: the grid cell (column, row from the lowest in use) of its AABB's lower-left corner (scratch of findPairs). */
-let cornerX = new Uint32Array(64);
-let cornerY = new Uint32Array(64);
+/** Per active index: the cells its AABB spans, floor(minX / cell), floor(minY / cell), floor(maxX / cell), floor(maxY / cell) (scratch of findPairs). */
+let cellSpans = new Float64Array(256);
 /** One count per cell key: the broad phase's counting sort, when the keys in use span few cells (scratch). */
 let cellCounts = new Uint32Array(1024);
 /** Per collider slot: its AABB as minX, minY, maxX, maxY side by side (one cache line for the pair loop's test). */
@@ -103,20 +102,31 @@ export class GridBroadPhase implements BroadPhase {
     if (n < 2) return;
     const cell = this.chooseCellSize(c);
     const inv = 1 / cell;
-    // Cell range in use.
+    if (cellSpans.length < 4 * n) cellSpans = new Float64Array(4 * c.active.length);
+    const span = cellSpans;
+    // Each body's cell span (floors kept for the emission below), and the cell range in use.
     let loX = Infinity;
     let loY = Infinity;
     let hiX = -Infinity;
     let hiY = -Infinity;
     for (let i = 0; i < n; i++) {
       const s = c.active[i];
-      loX = Math.min(loX, Math.floor(c.minX[s] * inv));
-      loY = Math.min(loY, Math.floor(c.minY[s] * inv));
-      hiX = Math.max(hiX, Math.floor(c.maxX[s] * inv));
-      hiY = Math.max(hiY, Math.floor(c.maxY[s] * inv));
+      const x0 = Math.floor(c.minX[s] * inv);
+      const y0 = Math.floor(c.minY[s] * inv);
+      const x1 = Math.floor(c.maxX[s] * inv);
+      const y1 = Math.floor(c.maxY[s] * inv);
+      span[4 * i] = x0;
+      span[4 * i + 1] = y0;
+      span[4 * i + 2] = x1;
+      span[4 * i + 3] = y1;
+      if (x0 < loX) loX = x0;
+      if (y0 < loY) loY = y0;
+      if (x1 > hiX) hiX = x1;
+      if (y1 > hiY) hiY = y1;
     }
     const rows = hiY - loY + 1;
-    if ((hiX - loX + 1) * rows > 0xffffffff) {
+    const cellsInUse = (hiX - loX + 1) * rows;
+    if (cellsInUse > 0xffffffff) {
       // Sparse scene over a huge extent: coarser cells keep keys unique in 32 bits.
       const saved = this.cellSize;
       this.cellSize = cell * 2;
@@ -128,74 +138,82 @@ export class GridBroadPhase implements BroadPhase {
     this.lastOriginX = loX * cell;
     this.lastOriginY = loY * cell;
 
+    // Few cells for the bodies (a pile in a container): the entries are counted per cell as they are made and placed
+    // in one pass (a counting sort); otherwise sorted by LSD radix. Both are stable: the same order.
+    const counting = cellsInUse < 4 * n + 1024;
+    if (counting) {
+      if (cellCounts.length <= cellsInUse) cellCounts = new Uint32Array(Math.max(cellsInUse + 1, 2 * cellCounts.length));
+      cellCounts.fill(0, 0, cellsInUse);
+    }
+    const counts = cellCounts;
     let m = 0;
     let largeCount = 0;
     this.large = grown(this.large, n);
-    if (cornerX.length < c.minX.length) {
-      cornerX = new Uint32Array(c.minX.length);
-      cornerY = new Uint32Array(c.minX.length);
-      boxes = new Float64Array(4 * c.minX.length);
-    }
-    const cx0 = cornerX;
-    const cy0 = cornerY;
+    if (boxes.length < 4 * c.minX.length) boxes = new Float64Array(4 * c.minX.length);
     const box = boxes;
     for (let i = 0; i < n; i++) {
       const s = c.active[i];
-      const x0 = Math.floor(c.minX[s] * inv) - loX;
-      const x1 = Math.floor(c.maxX[s] * inv) - loX;
-      const y0 = Math.floor(c.minY[s] * inv) - loY;
-      const y1 = Math.floor(c.maxY[s] * inv) - loY;
+      const x0 = span[4 * i] - loX;
+      const y0 = span[4 * i + 1] - loY;
+      const x1 = span[4 * i + 2] - loX;
+      const y1 = span[4 * i + 3] - loY;
       const cells = (x1 - x0 + 1) * (y1 - y0 + 1);
       if (cells > this.maxCellsPerBody) {
         this.large[largeCount++] = s;
         continue;
       }
-      cx0[s] = x0;
-      cy0[s] = y0;
       box[4 * s] = c.minX[s];
       box[4 * s + 1] = c.minY[s];
       box[4 * s + 2] = c.maxX[s];
       box[4 * s + 3] = c.maxY[s];
       this.reserve(m + cells);
+      const keys = this.keys;
+      const values = this.values;
+      // Each entry carries the body's slot and two bits: whether the body's lower-left corner cell is this cell's
+      // column (1) and row (2). A pair is reported only from the cell holding the lower-left corner of the two boxes'
+      // overlap: floor(max(minX_a, minX_b) / cell) is the larger of the two corner cells (floor and a rounded product
+      // are monotonic), so with both bodies in this cell, the pair belongs to it when one of them has the column bit
+      // and one the row bit.
       for (let x = x0; x <= x1; x++) {
+        const inX = x === x0 ? 1 : 0;
         for (let y = y0; y <= y1; y++) {
-          this.keys[m] = x * rows + y;
-          this.values[m] = s;
+          const key = x * rows + y;
+          keys[m] = key;
+          values[m] = s * 4 + inX + (y === y0 ? 2 : 0);
           m++;
+          if (counting) counts[key]++;
         }
       }
     }
-    this.radixSort(m);
-    const keys = this.keys;
-    const values = this.values;
-    for (let start = 0; start < m; ) {
-      const key = keys[start];
-      let end = start + 1;
-      while (end < m && keys[end] === key) end++;
-      if (end - start > 1) {
-        const cx = Math.floor(key / rows);
-        const cy = key - cx * rows;
-        for (let i = start; i < end - 1; i++) {
-          const a = values[i];
-          // The pair is reported only from the cell that holds the lower-left corner of the two boxes' overlap,
-          // floor(max(minX_a, minX_b) / cell) = max of the two bodies' corner cells (floor and a rounded product are
-          // monotonic): with both bodies in this cell, that is this cell when either body's corner is in it. Tested
-          // first, on integers, before the overlap.
-          const aInX = cx0[a] === cx;
-          const aInY = cy0[a] === cy;
-          const aMinX = box[4 * a];
-          const aMinY = box[4 * a + 1];
-          const aMaxX = box[4 * a + 2];
-          const aMaxY = box[4 * a + 3];
-          for (let j = i + 1; j < end; j++) {
-            const b = values[j];
-            if ((!aInX && cx0[b] !== cx) || (!aInY && cy0[b] !== cy)) continue;
-            const q = 4 * b;
-            if (aMinX <= box[q + 2] && box[q] <= aMaxX && aMinY <= box[q + 3] && box[q + 1] <= aMaxY && accept(a, b)) out.push(a, b);
-          }
-        }
+    let values: Uint32Array;
+    if (counting) {
+      let sum = 0;
+      for (let k = 0; k < cellsInUse; k++) {
+        const count = counts[k];
+        counts[k] = sum;
+        sum += count;
       }
-      start = end;
+      const keys = this.keys;
+      const from = this.values;
+      values = this.valuesTmp;
+      for (let i = 0; i < m; i++) values[counts[keys[i]]++] = from[i];
+      // counts[k] is now the end of cell k's entries.
+      for (let k = 0, start = 0; k < cellsInUse; k++) {
+        const end = counts[k];
+        if (end - start > 1) cellPairs(values, start, end, box, accept, out);
+        start = end;
+      }
+    } else {
+      this.radixSort(m);
+      const keys = this.keys;
+      values = this.values;
+      for (let start = 0; start < m; ) {
+        const key = keys[start];
+        let end = start + 1;
+        while (end < m && keys[end] === key) end++;
+        if (end - start > 1) cellPairs(values, start, end, box, accept, out);
+        start = end;
+      }
     }
     // Large bodies against everything (large–large pairs once). The overlap is tested first, on the packed boxes
     // (each wall of a pile meets most bodies only there), and only a body that overlaps is looked up in the list of
@@ -270,7 +288,7 @@ export class GridBroadPhase implements BroadPhase {
     this.valuesTmp = grown(this.valuesTmp, n);
   }
 
-  /** LSD radix sort of (key, value) by key, 8 bits a pass; passes whose byte is the same for all keys are skipped. */
+  /** LSD radix sort of (key, value) by key, 8 bits a pass; passes whose byte is zero for all keys are skipped. */
   private radixSort(n: number): void {
     let keys = this.keys;
     let values = this.values;
@@ -279,30 +297,6 @@ export class GridBroadPhase implements BroadPhase {
     const counts = this.counts;
     let maxKey = 0;
     for (let i = 0; i < n; i++) if (keys[i] > maxKey) maxKey = keys[i];
-    if (maxKey < 4 * n + 1024) {
-      // Few cells in use for the entries (a pile in a container): one counting pass over every key instead of one per
-      // byte; the same stable order.
-      if (cellCounts.length <= maxKey) cellCounts = new Uint32Array(Math.max(maxKey + 1, 2 * cellCounts.length));
-      const counts = cellCounts;
-      counts.fill(0, 0, maxKey + 1);
-      for (let i = 0; i < n; i++) counts[keys[i]]++;
-      let sum = 0;
-      for (let b = 0; b <= maxKey; b++) {
-        const c = counts[b];
-        counts[b] = sum;
-        sum += c;
-      }
-      for (let i = 0; i < n; i++) {
-        const d = counts[keys[i]]++;
-        keysTmp[d] = keys[i];
-        valuesTmp[d] = values[i];
-      }
-      this.keys = keysTmp;
-      this.values = valuesTmp;
-      this.keysTmp = keys;
-      this.valuesTmp = values;
-      return;
-    }
     for (let shift = 0; shift < 32; shift += 8) {
       if (maxKey >>> shift === 0) break;
       counts.fill(0);
@@ -325,6 +319,28 @@ export class GridBroadPhase implements BroadPhase {
     this.values = values;
     this.keysTmp = keysTmp;
     this.valuesTmp = valuesTmp;
+  }
+}
+
+/**
+ * The pairs of one cell's entries [start, end) (slot · 4 + corner bits, in active order) whose boxes overlap and that
+ * belong to this cell (one entry with the column bit, one with the row bit), in entry order.
+ */
+function cellPairs(values: Uint32Array, start: number, end: number, box: Float64Array, accept: (a: number, b: number) => boolean, out: PairList): void {
+  for (let i = start; i < end - 1; i++) {
+    const va = values[i];
+    const a = va >>> 2;
+    const aBits = va & 3;
+    const aMinX = box[4 * a];
+    const aMinY = box[4 * a + 1];
+    const aMaxX = box[4 * a + 2];
+    const aMaxY = box[4 * a + 3];
+    for (let j = i + 1; j < end; j++) {
+      const vb = values[j];
+      if (((aBits | vb) & 3) !== 3) continue;
+      const q = 4 * (vb >>> 2);
+      if (aMinX <= box[q + 2] && box[q] <= aMaxX && aMinY <= box[q + 3] && box[q + 1] <= aMaxY && accept(a, vb >>> 2)) out.push(a, vb >>> 2);
+    }
   }
 }
 
