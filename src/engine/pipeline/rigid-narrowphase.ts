@@ -32,6 +32,7 @@ export class RigidNarrowPhase {
     // particle-built hammer 100× heavier drove it through at 100 units/s). Box2D v3 solves static contacts last too.
     // The first pass lists the pairs with a static side (staticPairs) for the second, which then reads only them.
     if (staticPairs.length < pairs.count) staticPairs = new Int32Array(pairs.a.length);
+    prefillDiscRows(out, pairs.count);
     let staticCount = 0;
     for (let pass = 0; pass < 2; pass++) for (let q = 0, end = pass === 0 ? pairs.count : staticCount; q < end; q++) {
       const k = pass === 0 ? q : staticPairs[q];
@@ -339,7 +340,6 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   const depth = ra + rb - d;
   out.a[i] = ia;
   out.b[i] = ib;
-  out.b2[i] = -1;
   out.nx[i] = nx;
   out.ny[i] = ny;
   out.rAx[i] = ca * aX + sa * aY;
@@ -348,7 +348,6 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   out.rBy[i] = -sb * bX + cb * bY;
   out.radA[i] = ra;
   out.radB[i] = rb;
-  out.alpha[i] = 0;
   // The pair's friction, sqrt(μa·μb): a pile's discs mostly share one material, so the last pair's root is reused
   // for the same two values (a non-zero root only: the same double either way, signs of zero included).
   const fa = c.friction[a];
@@ -363,6 +362,42 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   out.restitution[i] = Math.max(c.restitution[a], c.restitution[b]);
   out.depth[i] = depth;
   out.allowance[i] = depth > 0 ? depth : 0;
+  if (i >= prefilled) writeDiscConstants(out, i);
+  out.bodyA[i] = a;
+  out.bodyB[i] = b;
+  out.gap[i] = depth;
+  // writeAnchorKey(…, a, b, 0): b ≥ 0 here.
+  const key = (a * 4194304 + b) * 65536;
+  out.feature[i] = key < 9007199254740991 ? key : key % 9007199254740991;
+}
+
+/**
+ * Rows [0, prefilled) of the contact columns hold a disc row's constant columns (b2 −1, no alpha, no impulses, no
+ * slip, approach NaN, untouched, single point), filled for the whole range at the start of the narrow phase (a
+ * memset each) instead of nine stores per disc pair in circles(). Every other writer of a row writes these columns
+ * itself, so the prefill never shows in its rows.
+ */
+let prefilled = 0;
+
+/** Fills the disc rows' constant columns for the first min(rows, capacity) rows (see `prefilled`). */
+function prefillDiscRows(out: RigidContacts, rows: number): void {
+  const n = rows < out.a.length ? rows : out.a.length;
+  out.b2.fill(-1, 0, n);
+  out.alpha.fill(0, 0, n);
+  out.lambdaN.fill(0, 0, n);
+  out.impulseN.fill(0, 0, n);
+  out.impulseT.fill(0, 0, n);
+  out.slip.fill(0, 0, n);
+  out.approach.fill(NaN, 0, n);
+  out.touched.fill(0, 0, n);
+  out.pair.fill(0, 0, n);
+  prefilled = n;
+}
+
+/** A disc row's constant columns for row i (past the prefilled rows). */
+function writeDiscConstants(out: RigidContacts, i: number): void {
+  out.b2[i] = -1;
+  out.alpha[i] = 0;
   out.lambdaN[i] = 0;
   out.impulseN[i] = 0;
   out.impulseT[i] = 0;
@@ -370,12 +405,6 @@ function circles(c: Colliders, shapes: RigidShapes, p: ParticleStore, motion: Fl
   out.approach[i] = NaN;
   out.touched[i] = 0;
   out.pair[i] = 0;
-  out.bodyA[i] = a;
-  out.bodyB[i] = b;
-  out.gap[i] = depth;
-  // writeAnchorKey(…, a, b, 0): b ≥ 0 here.
-  const key = (a * 4194304 + b) * 65536;
-  out.feature[i] = key < 9007199254740991 ? key : key % 9007199254740991;
 }
 
 /** The disc pairs' last friction values μa, μb and their root (circles()). */
