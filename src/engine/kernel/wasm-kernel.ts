@@ -314,55 +314,43 @@ export class WasmKernel {
     else this.exports.rigidVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets);
   }
 
-  /** The step's end: what the JS phases read (anchors, events, sleep) back from the lanes into the contact table. */
+  /**
+   * The step's end: what the JS phases read back from the lanes into the contact table: touched (events, sleep,
+   * anchors), and a touched point's slip and allowance (the anchors). Nothing reads λn, the impulses or gap after
+   * the solver, and the next step's narrow phase writes every field again; an untouched point keeps the narrow
+   * phase's touched 0.
+   */
   endRigid(c: RigidContacts): void {
     this.rigidLanes = false;
-    if (this.manifolds) {
-      this.endManifolds(c);
-      return;
-    }
     const { f64, i32, slotOf } = this;
-    const base = this.rigidAddress / 8;
-    const { allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
-    for (let i = 0, n = c.count; i < n; i++) {
-      const s = slotOf[i];
-      const w = base + (s >> 1) * RIGID_F64 + (s & 1);
-      allowance[i] = f64[w + 2 * RF.allowance];
-      lambdaN[i] = f64[w + 2 * RF.lambdaN];
-      impulseN[i] = f64[w + 2 * RF.impulseN];
-      impulseT[i] = f64[w + 2 * RF.impulseT];
-      slip[i] = f64[w + 2 * RF.slip];
-      gap[i] = f64[w + 2 * RF.gap];
-      touched[i] = i32[2 * (w + 2 * RF.touched)] !== 0 ? 1 : 0;
-    }
-  }
-
-  /** endRigid for manifold packets: point 0 of a lane to its first contact, point 1 to its partner. */
-  private endManifolds(c: RigidContacts): void {
-    const { f64, i32, slotOf } = this;
+    const { allowance, slip, touched, pair } = c;
+    const manifolds = this.manifolds;
     const base = this.rigidAddress >> 3;
-    const { allowance, lambdaN, impulseN, impulseT, slip, gap, touched, pair } = c;
-    // Literal offsets as in writeManifolds.
     for (let i = 0, n = c.count; i < n; i++) {
       const s = slotOf[i];
-      const w = base + (s >> 1) * MANIFOLD_F64 + 2 + (s & 1);
-      impulseT[i] = f64[w + 16];
-      slip[i] = f64[w + 18];
-      allowance[i] = f64[w + 36];
-      lambdaN[i] = f64[w + 38];
-      impulseN[i] = f64[w + 40];
-      gap[i] = f64[w + 42];
-      touched[i] = i32[2 * w + 88] !== 0 ? 1 : 0;
-      if (pair[i] === 1) {
-        // The partner: its own point; its slip follows the manifold's once friction has acted (impulseT stays).
-        const j = ++i;
-        slip[j] = f64[w + 20];
-        allowance[j] = f64[w + 72];
-        lambdaN[j] = f64[w + 74];
-        impulseN[j] = f64[w + 76];
-        gap[j] = f64[w + 78];
-        touched[j] = i32[2 * w + 160] !== 0 ? 1 : 0;
+      if (!manifolds) {
+        const w = base + (s >> 1) * RIGID_F64 + (s & 1);
+        if (i32[2 * (w + 2 * RF.touched)] === 0) continue;
+        touched[i] = 1;
+        allowance[i] = f64[w + 2 * RF.allowance];
+        slip[i] = f64[w + 2 * RF.slip];
+        continue;
       }
+      // Point 0 of a lane to its first contact, point 1 to its partner (literal offsets as in writeManifolds); the
+      // partner's slip follows the manifold's once friction has acted.
+      const w = base + (s >> 1) * MANIFOLD_F64 + 2 + (s & 1);
+      if (i32[2 * w + 88] !== 0) {
+        touched[i] = 1;
+        slip[i] = f64[w + 18];
+        allowance[i] = f64[w + 36];
+      }
+      if (pair[i] !== 1) continue;
+      if (i32[2 * w + 160] !== 0) {
+        touched[i + 1] = 1;
+        slip[i + 1] = f64[w + 20];
+        allowance[i + 1] = f64[w + 72];
+      }
+      i++;
     }
   }
 
@@ -389,7 +377,7 @@ export class WasmKernel {
     const n = c.count;
     if (this.rigidSerial) for (let i = 0; i < n; i++) this.padRigid(2 * i + 1);
     else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.padRigid(cursor[k + 1] - 1);
-    const { a: A, b: B, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
+    const { a: A, b: B, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
     for (let i = 0; i < n; i++) {
       const s = this.rigidSerial ? 2 * i : cursor[colourOf[i]]++;
       slotOf[i] = s;
@@ -415,14 +403,13 @@ export class WasmKernel {
       f64[w + 2 * RF.imB] = onRow ? invMass[ib] : 0;
       f64[w + 2 * RF.iiB] = onRow ? invInertia[ib] : 0;
       f64[w + 2 * RF.allowance] = allowance[i];
-      f64[w + 2 * RF.lambdaN] = lambdaN[i];
-      f64[w + 2 * RF.impulseN] = impulseN[i];
-      f64[w + 2 * RF.impulseT] = impulseT[i];
-      f64[w + 2 * RF.slip] = slip[i];
-      f64[w + 2 * RF.gap] = gap[i];
-      const t = touched[i] ? -1 : 0;
-      i32[2 * (w + 2 * RF.touched)] = t;
-      i32[2 * (w + 2 * RF.touched) + 1] = t;
+      // λn, the impulses, slip and touched start at 0: stored, not copied (the narrow phase starts every point at 0,
+      // and the prepare has only zeroed λn again). Gap is not laid out: every sweep writes it before it is read.
+      f64[w + 2 * RF.lambdaN] = 0;
+      f64[w + 2 * RF.impulseN] = 0;
+      f64[w + 2 * RF.impulseT] = 0;
+      f64[w + 2 * RF.slip] = 0;
+      f64[w + 2 * RF.touched] = 0;
     }
   }
 
@@ -436,7 +423,7 @@ export class WasmKernel {
     const world = (this.capacity + 1) * 8;
     const n = c.count;
     const serial = this.rigidSerial;
-    const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance, lambdaN, impulseN, impulseT, slip, gap, touched } = c;
+    const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
     if (serial) {
       for (let i = 0, s = 1; i < n; i++, s += 2) {
         this.padManifold(s);
@@ -470,11 +457,12 @@ export class WasmKernel {
       const t = two ? -1 : 0;
       i32[2 * w + 28] = t;
       i32[2 * w + 29] = t;
-      f64[w + 16] = impulseT[i];
-      f64[w + 18] = slip[i];
-      f64[w + 20] = two ? slip[j] : 0;
+      // impulseT and both points' slip start at 0 (as λn, impulseN and touched below: see writeRigid).
+      f64[w + 16] = 0;
+      f64[w + 18] = 0;
+      f64[w + 20] = 0;
       // Point 0 (k 12..): rAx, rAy, rBx, rBy (the world's point is (rBx, rBy) itself: its row turns it by (1, 0)),
-      // radA, radB, allowance, lambdaN, impulseN, gap, touched.
+      // radA, radB, allowance, λn, impulseN, (gap: not laid out), touched.
       f64[w + 24] = rAx[i];
       f64[w + 26] = rAy[i];
       f64[w + 28] = rBx[i];
@@ -482,12 +470,9 @@ export class WasmKernel {
       f64[w + 32] = radA[i];
       f64[w + 34] = onRow ? radB[i] : 0;
       f64[w + 36] = allowance[i];
-      f64[w + 38] = lambdaN[i];
-      f64[w + 40] = impulseN[i];
-      f64[w + 42] = gap[i];
-      const t0 = touched[i] ? -1 : 0;
-      i32[2 * w + 88] = t0;
-      i32[2 * w + 89] = t0;
+      f64[w + 38] = 0;
+      f64[w + 40] = 0;
+      f64[w + 44] = 0;
       // Point 1 (k 30..): the partner, or nowhere and never overlapping (allowance +∞) for a lone point.
       if (two) {
         f64[w + 60] = rAx[j];
@@ -497,12 +482,9 @@ export class WasmKernel {
         f64[w + 68] = radA[j];
         f64[w + 70] = onRow ? radB[j] : 0;
         f64[w + 72] = allowance[j];
-        f64[w + 74] = lambdaN[j];
-        f64[w + 76] = impulseN[j];
-        f64[w + 78] = gap[j];
-        const t1 = touched[j] ? -1 : 0;
-        i32[2 * w + 160] = t1;
-        i32[2 * w + 161] = t1;
+        f64[w + 74] = 0;
+        f64[w + 76] = 0;
+        f64[w + 80] = 0;
         i++;
       } else {
         f64[w + 60] = 0;
@@ -514,9 +496,7 @@ export class WasmKernel {
         f64[w + 72] = Infinity;
         f64[w + 74] = 0;
         f64[w + 76] = 0;
-        f64[w + 78] = 0;
-        i32[2 * w + 160] = 0;
-        i32[2 * w + 161] = 0;
+        f64[w + 80] = 0;
       }
     }
   }

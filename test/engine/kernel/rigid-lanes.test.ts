@@ -191,6 +191,37 @@ describe('solver kernel: rigid contacts in lanes', () => {
     expect(kernelOf(lanes).rigidJsSteps).to.equal(0);
   });
 
+  it('the step\'s end hands the JS phases what they read: touched, and a touched point\'s slip and allowance, as the JS solver leaves them (S3 pile, boxes)', () => {
+    // endRigid copies back only these (the anchors, events and sleep read them; nothing reads λn, the impulses or gap
+    // after the solver). One contact (manifold) a packet in list order, so the values are the JS solver's doubles.
+    for (const name of ['circles', 'boxes'] as const) {
+      const js = scene(name, 'js', false);
+      const lanes = scene(name, 'wasm', false);
+      kernelOf(lanes).rigidSerial = true;
+      let touchedPoints = 0;
+      let slipping = 0;
+      for (let k = 0; k < 200; k++) {
+        js.step();
+        lanes.step();
+        if (k % 20 !== 19) continue;
+        const [a, b] = [contextOf(js).rigidContacts, contextOf(lanes).rigidContacts];
+        expect(b.count, `${name} step ${k + 1}`).to.equal(a.count);
+        for (let i = 0; i < a.count; i++) {
+          expect(b.touched[i], `${name} step ${k + 1} point ${i}: touched`).to.equal(a.touched[i]);
+          if (!a.touched[i]) continue;
+          touchedPoints++;
+          if (a.slip[i] !== 0) slipping++;
+          expect(b.slip[i], `${name} step ${k + 1} point ${i}: slip`).to.equal(a.slip[i]);
+          expect(b.allowance[i], `${name} step ${k + 1} point ${i}: allowance`).to.equal(a.allowance[i]);
+        }
+      }
+      expect(kernelOf(lanes).rigidJsSteps, name).to.equal(0);
+      // Enough of each to compare: thousands of touched points, some of them sliding.
+      expect(touchedPoints, name).to.be.greaterThan(2000);
+      expect(slipping, name).to.be.greaterThan(10);
+    }
+  });
+
   it('coloured, the base-20 pyramid stands for 10 s (top drift < 0.05 box) and a 20-box stack stays up', () => {
     const make = (kernel: 'js' | 'wasm') => {
       const world = new World({ sleeping: false, gravity: { x: 0, y: 10 }, kernel } as WorldOptions);
