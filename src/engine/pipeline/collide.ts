@@ -5,7 +5,7 @@ import { recordApproachSpeeds } from './contacts.js';
 import { pairKey, rebuildColliders } from './topology.js';
 import { ColliderKind } from './colliders.js';
 import { RigidShapeKind } from '../rigid/shapes.js';
-import { boundsContacts } from './rigid-narrowphase.js';
+import { boundsContacts, discRecords } from './rigid-narrowphase.js';
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
 import { overlaps, partnerMotions } from './broadphase.js';
@@ -81,6 +81,7 @@ function growPushedBodies(ctx: StepContext): void {
       if (reaches && !overlaps(c, s, w) && ctx.acceptPair(s, w)) pairs.push(s, w);
     }
     motion[s] = m + extra;
+    discRecords.data[8 * s + 3] = m + extra;
     c.minX[s] = minX;
     c.minY[s] = minY;
     c.maxX[s] = maxX;
@@ -111,6 +112,9 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   ctx.substepReals[0] = dt;
   ctx.substepReals[1] = g;
   const shapes = ctx.rigidShapes;
+  // Room for every slot's record (bodies were added: not within a step's usual work).
+  if (discRecords.data.length < 8 * c.minX.length) discRecords.data = new Float64Array(8 * c.minX.length);
+  const discs = discRecords.data;
   let fastest = 0;
   let smallest = Infinity;
   for (let k = 0; k < c.activeCount; k++) {
@@ -127,6 +131,7 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
         if (dynamic) {
           const m = speed * dt + g;
           motion[s] = m;
+          writeDisc(discs, s, shapes.row[s], r, m, ctx.particles, c.friction[s]);
           c.isStatic[s] = 0;
           const minX = x[i] - r - m;
           const minY = y[i] - r - m;
@@ -144,6 +149,8 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
       }
       rigidBoundingBox(ctx, s, i, x, y, vx, vy, omega, radius, invMass, flags);
       const m = motion[s];
+      if (shapes.kind[s] === RigidShapeKind.Circle) writeDisc(discs, s, shapes.row[s], shapes.radius[s], m, ctx.particles, c.friction[s]);
+      else discs[8 * s + 2] = -1;
       if (m > fastest) fastest = m;
       if (c.isStatic[s]) continue;
       const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
@@ -169,6 +176,7 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
     }
     const m = movable ? Math.sqrt(speed2) * dt + g : Math.sqrt(speed2) * dt;
     motion[s] = m;
+    discs[8 * s + 2] = -1;
     c.isStatic[s] = movable ? 0 : 1;
     c.minX[s] = minX - m;
     c.minY[s] = minY - m;
@@ -181,6 +189,19 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   }
   reach[0] = fastest;
   reach[1] = smallest;
+}
+
+/** Body slot s's record in discRecords: a rigid disc of radius r on row `row`, moving up to m this step. */
+function writeDisc(discs: Float64Array, s: number, row: number, r: number, m: number, p: StepContext['particles'], friction: number): void {
+  const o = 8 * s;
+  discs[o] = p.x[row];
+  discs[o + 1] = p.y[row];
+  discs[o + 2] = r;
+  discs[o + 3] = m;
+  discs[o + 4] = p.rc[row];
+  discs[o + 5] = p.rs[row];
+  discs[o + 6] = friction;
+  discs[o + 7] = row;
 }
 
 /**
