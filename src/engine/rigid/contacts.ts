@@ -172,6 +172,9 @@ export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, fe
  * The chain of an anchor key in RigidAnchorCache's index: the key's bits above body B and the feature (body A's slot
  * while that is below 32768; past it, the key wrapped at 2⁵³ and this is just a number below 2¹⁵ that equal keys share).
  */
+/** Doubles an entry of RigidAnchorCache's list. */
+const ENTRY = 6;
+
 function chainOf(key: number): number {
   return (key / 274877906944) | 0;
 }
@@ -199,42 +202,39 @@ export class RigidAnchorCache {
   private chainNext = new Int32Array(32);
   private stamp = 0;
   private count = 0;
-  private keys = new Float64Array(32);
-  /** 1: the entry holds anchors (its point acted); 0: a point that stayed apart, listed only to keep the order. */
-  private held = new Uint8Array(32);
-  private rA = new Float64Array(64);
-  private rB = new Float64Array(64);
-  /** The overlap each point still tolerated at the end of the step (RigidContacts.allowance). */
-  private allow = new Float64Array(32);
+  /**
+   * The list, ENTRY doubles an entry, side by side (one stream for store and restore to write and read, where five
+   * arrays were five): the feature key; the overlap the point still tolerated at the end of the step
+   * (RigidContacts.allowance, never negative), or −1 for a point that stayed apart, listed only to keep the order and
+   * holding no anchors; then A's and B's anchors (rAx, rAy, rBx, rBy).
+   */
+  private entries = new Float64Array(32 * ENTRY);
 
   /** Remembers the anchors of every point that acted and of rigid, particle or world B (not particle edges). */
   store(c: RigidContacts, r: BodyRows): void {
     this.tableBuilt = false;
-    if (this.keys.length < c.count) {
-      this.keys = new Float64Array(2 * c.count);
-      this.held = new Uint8Array(2 * c.count);
-      this.allow = new Float64Array(2 * c.count);
-      this.rA = new Float64Array(4 * c.count);
-      this.rB = new Float64Array(4 * c.count);
-    }
-    const { keys, held, rA, rB, allow } = this;
+    const count = c.count;
+    if (this.entries.length < count * ENTRY) this.entries = new Float64Array(2 * count * ENTRY);
+    const entries = this.entries;
     const { rc, rs } = r;
-    let n = 0;
-    for (let i = 0; i < c.count; i++) {
-      if (c.b2[i] >= 0) continue;
-      keys[n] = c.feature[i];
-      if (!c.touched[i]) {
-        held[n++] = 0;
+    // The columns in locals: read through `c` they are loaded again for every point.
+    const { b, b2, feature, touched, slip: slips, nx, ny, rAx, rAy, rBx, rBy, allowance } = c;
+    let e = 0;
+    for (let i = 0; i < count; i++) {
+      if (b2[i] >= 0) continue;
+      entries[e] = feature[i];
+      if (!touched[i]) {
+        entries[e + 1] = -1;
+        e += ENTRY;
         continue;
       }
-      held[n] = 1;
       // B's anchor moves along the tangent by what slid this step: that much is no longer held back.
-      const slip = c.slip[i];
-      const tx = -c.ny[i] * slip;
-      const ty = c.nx[i] * slip;
-      const ib = c.b[i];
-      let bx = c.rBx[i];
-      let by = c.rBy[i];
+      const slip = slips[i];
+      const tx = -ny[i] * slip;
+      const ty = nx[i] * slip;
+      const ib = b[i];
+      let bx = rBx[i];
+      let by = rBy[i];
       if (ib < 0) {
         bx += tx;
         by += ty;
@@ -245,28 +245,28 @@ export class RigidAnchorCache {
         bx += cb * tx + sb * ty;
         by += -sb * tx + cb * ty;
       }
-      rA[2 * n] = c.rAx[i];
-      rA[2 * n + 1] = c.rAy[i];
-      rB[2 * n] = bx;
-      rB[2 * n + 1] = by;
-      allow[n] = c.allowance[i];
-      n++;
+      entries[e + 1] = allowance[i];
+      entries[e + 2] = rAx[i];
+      entries[e + 3] = rAy[i];
+      entries[e + 4] = bx;
+      entries[e + 5] = by;
+      e += ENTRY;
     }
-    this.count = n;
+    this.count = e / ENTRY;
   }
 
   /** The chains of the stored list's held entries, each in list order (so a lookup finds a key's first entry). */
   private build(): void {
-    const { keys, held } = this;
+    const entries = this.entries;
     const n = this.count;
-    if (this.chainNext.length < n) this.chainNext = new Int32Array(this.keys.length);
+    if (this.chainNext.length < n) this.chainNext = new Int32Array(2 * n);
     // A new stamp invalidates every chain head at once (no clearing pass); it wraps long before it could repeat.
     this.stamp = this.stamp === 0x7fffffff ? 1 : this.stamp + 1;
     const stamp = this.stamp;
     const next = this.chainNext;
     for (let k = n - 1; k >= 0; k--) {
-      if (held[k] === 0) continue;
-      const h = chainOf(keys[k]);
+      if (entries[k * ENTRY + 1] < 0) continue;
+      const h = chainOf(entries[k * ENTRY]);
       if (h >= this.chainHead.length) this.growChains(h + 1);
       const head = this.chainHead;
       if (this.chainStamp[h] === stamp) next[k] = head[h];
@@ -290,17 +290,17 @@ export class RigidAnchorCache {
   }
 
   /**
-   * Index in the stored list of `key` (its anchors when held[k] is 1), or −1; `cursor` is where the list is expected
+   * Index in the stored list of `key` (its anchors when it holds any), or −1; `cursor` is where the list is expected
    * to match.
    */
   private lookup(key: number, cursor: number): number {
-    if (cursor < this.count && this.keys[cursor] === key) return cursor;
+    if (cursor < this.count && this.entries[cursor * ENTRY] === key) return cursor;
     if (!this.tableBuilt) this.build();
     const h = chainOf(key);
     if (h >= this.chainHead.length || this.chainStamp[h] !== this.stamp) return -1;
-    const keys = this.keys;
+    const entries = this.entries;
     const next = this.chainNext;
-    for (let k = this.chainHead[h]; k >= 0; k = next[k]) if (keys[k] === key) return k;
+    for (let k = this.chainHead[h]; k >= 0; k = next[k]) if (entries[k * ENTRY] === key) return k;
     return -1;
   }
 
@@ -311,40 +311,80 @@ export class RigidAnchorCache {
    */
   restore(c: RigidContacts, reach: number): void {
     const reach2 = reach * reach;
-    const { rA, rB, allow } = this;
+    const entries = this.entries;
+    const stored = this.count;
+    // The columns in locals: read through `c` they are loaded again for every point.
+    const { b2, feature, allowance, rAx, rAy, rBx, rBy } = c;
     let cursor = 0;
-    for (let i = 0; i < c.count; i++) {
-      if (c.b2[i] >= 0) continue;
-      const k = this.lookup(c.feature[i], cursor);
+    for (let i = 0, n = c.count; i < n; i++) {
+      if (b2[i] >= 0) continue;
+      const key = feature[i];
+      // The list's order holds (most points): no call.
+      const k = cursor < stored && entries[cursor * ENTRY] === key ? cursor : this.lookup(key, cursor);
       if (k < 0) continue;
       cursor = k + 1;
-      if (this.held[k] === 0) continue;
-      if (allow[k] < c.allowance[i]) c.allowance[i] = allow[k];
-      const dax = rA[2 * k] - c.rAx[i];
-      const day = rA[2 * k + 1] - c.rAy[i];
+      const e = k * ENTRY;
+      const allow = entries[e + 1];
+      if (allow < 0) continue;
+      if (allow < allowance[i]) allowance[i] = allow;
+      const ax = entries[e + 2];
+      const ay = entries[e + 3];
+      const dax = ax - rAx[i];
+      const day = ay - rAy[i];
       if (dax * dax + day * day > reach2) continue;
-      const dbx = rB[2 * k] - c.rBx[i];
-      const dby = rB[2 * k + 1] - c.rBy[i];
+      const bx = entries[e + 4];
+      const by = entries[e + 5];
+      const dbx = bx - rBx[i];
+      const dby = by - rBy[i];
       if (dbx * dbx + dby * dby > reach2) continue;
-      c.rAx[i] = rA[2 * k];
-      c.rAy[i] = rA[2 * k + 1];
-      c.rBx[i] = rB[2 * k];
-      c.rBy[i] = rB[2 * k + 1];
+      rAx[i] = ax;
+      rAy[i] = ay;
+      rBx[i] = bx;
+      rBy[i] = by;
     }
   }
 
   snapshot(): { keys: Float64Array; held: Uint8Array; rA: Float64Array; rB: Float64Array; allow: Float64Array } {
     const n = this.count;
-    return { keys: this.keys.slice(0, n), held: this.held.slice(0, n), rA: this.rA.slice(0, 2 * n), rB: this.rB.slice(0, 2 * n), allow: this.allow.slice(0, n) };
+    const entries = this.entries;
+    const keys = new Float64Array(n);
+    const held = new Uint8Array(n);
+    const rA = new Float64Array(2 * n);
+    const rB = new Float64Array(2 * n);
+    const allow = new Float64Array(n);
+    for (let k = 0; k < n; k++) {
+      const e = k * ENTRY;
+      keys[k] = entries[e];
+      // The arrays as they were kept before the entries were packed (a point that stayed apart: zeros).
+      if (entries[e + 1] < 0) continue;
+      held[k] = 1;
+      allow[k] = entries[e + 1];
+      rA[2 * k] = entries[e + 2];
+      rA[2 * k + 1] = entries[e + 3];
+      rB[2 * k] = entries[e + 4];
+      rB[2 * k + 1] = entries[e + 5];
+    }
+    return { keys, held, rA, rB, allow };
   }
 
   restoreSnapshot(s: { keys: Float64Array; held: Uint8Array; rA: Float64Array; rB: Float64Array; allow: Float64Array }): void {
-    this.count = s.keys.length;
-    this.keys = s.keys.length > 0 ? s.keys.slice() : new Float64Array(32);
-    this.held = s.held.length > 0 ? s.held.slice() : new Uint8Array(32);
-    this.allow = s.allow.length > 0 ? s.allow.slice() : new Float64Array(32);
-    this.rA = s.rA.length > 0 ? s.rA.slice() : new Float64Array(64);
-    this.rB = s.rB.length > 0 ? s.rB.slice() : new Float64Array(64);
+    const n = s.keys.length;
+    this.count = n;
+    this.entries = new Float64Array(Math.max(n, 32) * ENTRY);
+    const entries = this.entries;
+    for (let k = 0; k < n; k++) {
+      const e = k * ENTRY;
+      entries[e] = s.keys[k];
+      if (s.held[k] === 0) {
+        entries[e + 1] = -1;
+        continue;
+      }
+      entries[e + 1] = s.allow[k];
+      entries[e + 2] = s.rA[2 * k];
+      entries[e + 3] = s.rA[2 * k + 1];
+      entries[e + 4] = s.rB[2 * k];
+      entries[e + 5] = s.rB[2 * k + 1];
+    }
     this.tableBuilt = false;
   }
 }
