@@ -15,6 +15,8 @@
 // lanes have their own gate: a step whose rigid contacts are single points or two-point manifolds between rigid
 // bodies or with the world, restitution 0 and no shock sweep (disc piles, box piles, pyramids) sweeps them there
 // (kernel.beginRigid after the first substep's prepare, endRigid after the substeps); any other step, the JS solver.
+// While the lanes hold a step's contacts the kernel also integrates positions and derives velocities (from the first
+// substep's velocities on), links or not: the columns are in its memory then anyway.
 import { breakOverstretched, solveDistances } from '../constraints/distance.js';
 import { solveAngles } from '../constraints/angle.js';
 import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
@@ -80,7 +82,11 @@ export function substep(ctx: StepContext, h: number): void {
   // without springs, step() computed them once for all substeps.
   const fused = fusedAccelerations(ctx);
   if (ctx.constraints.springs.count > 0) accelerate(ctx, h);
-  if (kernel && settings.integrator === 'verlet') kernel.integrateVerlet(particles, h, damp, fused ? settings.gravity : null);
+  // While the rigid lanes hold this step's contacts (every substep after the first) the columns live in the kernel's
+  // memory: its Verlet step (the same arithmetic, two rows a lane) runs then too, on the accelerations step() computed
+  // (fused is false without links).
+  const positionKernel = kernel ?? lanesKernel(ctx);
+  if (positionKernel && settings.integrator === 'verlet') positionKernel.integrateVerlet(particles, h, damp, fused ? settings.gravity : null);
   else integrate(particles, h, damp, settings.integrator);
   const sub = ctx.substepReals;
   sub[0] = h;
@@ -105,7 +111,9 @@ export function substep(ctx: StepContext, h: number): void {
   resetMultipliers(ctx);
   ctx.contacts.beginSubstep(settings.maxPushSpeed * h);
   for (let k = 0; k < settings.iterations; k++) relax(ctx, h);
-  if (kernel && settings.integrator !== 'explicit-euler') kernel.updateVelocities(particles, h);
+  // Likewise v = (x − px)/h, once the lanes are taken (in this substep's prepare or before).
+  const velocityKernel = kernel ?? lanesKernel(ctx);
+  if (velocityKernel && settings.integrator !== 'explicit-euler') velocityKernel.updateVelocities(particles, h);
   else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
@@ -123,10 +131,16 @@ function fusedAccelerations(ctx: StepContext): boolean {
 /**
  * The WebAssembly kernel when it has links to sweep. Without any (a world of rigid bodies, free particles) the JS
  * loops integrate: the same doubles (position Verlet is the same arithmetic either way), and the rigid solver's loops
- * ran slower between the kernel's calls (S2, 1000 boxes: 2.6 against 2.2 ms per step).
+ * ran slower between the kernel's calls (S2, 1000 boxes: 2.6 against 2.2 ms per step), except while the rigid lanes
+ * hold the step's contacts (substep above: their columns are in the kernel's memory already).
  */
 function kernelAtWork(ctx: StepContext) {
   return ctx.kernel !== null && ctx.constraints.distances.count > 0 ? ctx.kernel : null;
+}
+
+/** The WebAssembly kernel while its rigid lanes hold this step's contacts. */
+function lanesKernel(ctx: StepContext) {
+  return ctx.kernel !== null && ctx.kernel.rigidLanes ? ctx.kernel : null;
 }
 
 /**
