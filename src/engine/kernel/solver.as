@@ -284,7 +284,8 @@ export function updateVelocities(x: usize, y: usize, px: usize, py: usize, vx: u
 //   0: i32 ia0, ia1, ib0, ib1 (row × 8)
 //  16 nx  32 ny  48 rAx  64 rAy  80 rBx  96 rBy  112 radA  128 radB  144 friction
 // 160 imA 176 iiA 192 imB 208 iiB                                   (per step, from the rows' inverse mass/inertia)
-// 224 allowance 240 lambdaN 256 impulseN 272 impulseT 288 slip 304 gap 320 touched (all-ones lanes)   (state)
+// 224 allowance 240 lambdaN 256 impulseN 272 impulseT 288 slip 304 (unused: the JS solver's gap, which nothing reads
+// after it) 320 touched (all-ones lanes)                                                            (state)
 // 336 lAx 352 lAy 368 lBx 384 lBy 400 rnA 416 rnB 432 wn             (written by the sweep for the velocity pass)
 const RIGID_PACKET: usize = 448;
 
@@ -299,6 +300,44 @@ const RIGID_PACKET: usize = 448;
 
 @inline function fld(pk: usize, offset: usize): v128 {
   return v128.load(pk + offset);
+}
+
+/**
+ * The step's layout of `n` single points (wasm-kernel.ts writeRigid): their columns staged at `stage`, `cap` rows each
+ * (f64 nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance; then i32 a, b, lane), each point into its lane
+ * (packet s >> 1, lane s & 1) with its rows' byte offsets (the world's row for b −1) and inverse mass and inertia
+ * (read from their columns: the world's row has 0), λn, the impulses, slip and touched 0 (gap is written by every
+ * sweep before it is read). A copy a field, no arithmetic: the same doubles as the table's.
+ */
+export function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, invInertia: usize, packets: usize, world: usize): void {
+  const column = cap << 3;
+  const ints = stage + column * 10;
+  for (let i = 0; i < n; i++) {
+    const j = <usize>i << 3;
+    const q = ints + (<usize>i << 2);
+    const s = load<i32>(q + (cap << 3));
+    const lane = <usize>(s & 1);
+    const pk = packets + <usize>(s >> 1) * RIGID_PACKET;
+    const f = pk + (lane << 3);
+    const oa = <usize>load<i32>(q) << 3;
+    const b = load<i32>(q + (cap << 2));
+    const ob = b >= 0 ? <usize>b << 3 : world;
+    store<i32>(pk + (lane << 2), <i32>oa);
+    store<i32>(pk + (lane << 2), <i32>ob, 8);
+    for (let k: usize = 0; k < 9; k++) store<f64>(f + (k << 4), load<f64>(stage + k * column + j), 16);
+    // The world's point is (rBx, rBy) itself (its row turns it by (1, 0)).
+    if (b < 0) store<f64>(f, 0, 128);
+    store<f64>(f, load<f64>(invMass + oa), 160);
+    store<f64>(f, load<f64>(invInertia + oa), 176);
+    store<f64>(f, load<f64>(invMass + ob), 192);
+    store<f64>(f, load<f64>(invInertia + ob), 208);
+    store<f64>(f, load<f64>(stage + 9 * column + j), 224);
+    store<f64>(f, 0, 240);
+    store<f64>(f, 0, 256);
+    store<f64>(f, 0, 272);
+    store<f64>(f, 0, 288);
+    store<i64>(f, 0, 320);
+  }
 }
 
 /** The substep's start (RigidContacts.beginSubstep): λn 0, allowances shrink by maxPush. */
@@ -356,7 +395,6 @@ export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: 
     const gx = f64x2.sub(f64x2.sub(f64x2.add(ax, lAx), f64x2.mul(dA, lAy)), f64x2.sub(f64x2.add(bx, lBx), f64x2.mul(dB, lBy)));
     const gy = f64x2.sub(f64x2.add(f64x2.add(ay, lAy), f64x2.mul(dA, lAx)), f64x2.add(f64x2.add(by, lBy), f64x2.mul(dB, lBx)));
     const g = f64x2.sub(f64x2.add(f64x2.mul(gx, nx), f64x2.mul(gy, ny)), fld(pk, 224));
-    v128.store(pk, g, 304);
     const acts = f64x2.gt(g, zero);
     if (!v128.any_true(acts)) continue;
     const imA = fld(pk, 160);
