@@ -324,7 +324,16 @@ export function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, in
     const ob = b >= 0 ? <usize>b << 3 : world;
     store<i32>(pk + (lane << 2), <i32>oa);
     store<i32>(pk + (lane << 2), <i32>ob, 8);
-    for (let k: usize = 0; k < 9; k++) store<f64>(f + (k << 4), load<f64>(stage + k * column + j), 16);
+    // nx … friction (fields 1-9), written out: as a loop the function took 1.3-1.5x as long (10,000 circles).
+    store<f64>(f, load<f64>(stage + j), 16);
+    store<f64>(f, load<f64>(stage + 1 * column + j), 32);
+    store<f64>(f, load<f64>(stage + 2 * column + j), 48);
+    store<f64>(f, load<f64>(stage + 3 * column + j), 64);
+    store<f64>(f, load<f64>(stage + 4 * column + j), 80);
+    store<f64>(f, load<f64>(stage + 5 * column + j), 96);
+    store<f64>(f, load<f64>(stage + 6 * column + j), 112);
+    store<f64>(f, load<f64>(stage + 7 * column + j), 128);
+    store<f64>(f, load<f64>(stage + 8 * column + j), 144);
     // The world's point is (rBx, rBy) itself (its row turns it by (1, 0)).
     if (b < 0) store<f64>(f, 0, 128);
     store<f64>(f, load<f64>(invMass + oa), 160);
