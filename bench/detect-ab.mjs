@@ -68,7 +68,7 @@ function make(E, scene, kernel) {
   return E.buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
 }
 
-const DETECTION = ['detectCollisions', 'updateBoundingBoxes', 'findPairs', 'radixSort', 'growPushedBodies', 'run', 'discPairs', 'prefillDiscRows', 'circles', 'restore', 'wakeTouched', 'recordApproachSpeeds'];
+const DETECTION = ['fastPartnerMotions', 'partnerMotions', 'detectCollisions', 'updateBoundingBoxes', 'findPairs', 'radixSort', 'growPushedBodies', 'run', 'discPairs', 'prefillDiscRows', 'circles', 'restore', 'wakeTouched', 'recordApproachSpeeds'];
 
 async function startProfile() {
   const session = new Session();

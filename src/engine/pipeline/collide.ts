@@ -8,7 +8,7 @@ import { RigidShapeKind } from '../rigid/shapes.js';
 import { boundsContacts, discRecords } from './rigid-narrowphase.js';
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
-import { overlaps, partnerMotions } from './broadphase.js';
+import { overlaps } from './broadphase.js';
 
 /** Broad phase then narrow phase: the contacts found act in every substep of the step (speculatively). */
 export function detectCollisions(ctx: StepContext, dt: number): void {
@@ -57,17 +57,19 @@ function growPushedBodies(ctx: StepContext): void {
   const c = ctx.colliders;
   const pairs = ctx.pairs;
   const motion = ctx.motion;
-  // Nothing to grow unless the fastest body moves more than a quarter of the smallest one's size (most steps; both
-  // found by updateBoundingBoxes).
-  if (reach[0] <= 0.25 * reach[1]) return;
-  const pushed = partnerMotions(c, pairs, motion);
+  // Nothing to grow unless the fastest body moves more than a quarter of the smallest one's size (both found by
+  // updateBoundingBoxes). A body grows when a partner moves more than its own motion plus a quarter of its size, so
+  // more than this threshold: only such fast partners are looked at (a pile's landing rows are a few of its bodies).
+  const threshold = 0.25 * reach[1];
+  if (reach[0] <= threshold) return;
+  const pushed = fastPartnerMotions(c, pairs, motion, threshold);
   let staticCount = -1;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
-    if (c.isStatic[s]) continue;
+    const extra = pushed[s];
+    if (extra <= threshold || c.isStatic[s]) continue;
     const m = motion[s];
     const size = Math.min(c.maxX[s] - c.minX[s], c.maxY[s] - c.minY[s]) - 2 * m;
-    const extra = pushed[s];
     if (extra <= m + 0.25 * size) continue;
     if (staticCount < 0) staticCount = gatherStatics(c);
     const minX = c.minX[s] - extra;
@@ -87,6 +89,31 @@ function growPushedBodies(ctx: StepContext): void {
     c.maxX[s] = maxX;
     c.maxY[s] = maxY;
   }
+}
+
+/** Per collider slot: the largest motion above the threshold among its partners, else 0 (fastPartnerMotions). */
+let fastPartner = new Float64Array(64);
+
+/**
+ * For each active collider, the largest `motion` above `threshold` among the colliders it is paired with, 0 if none
+ * moves more: partnerMotions where that exceeds the threshold, without a store for the pairs of slow bodies. The array
+ * is shared (valid until the next call).
+ */
+function fastPartnerMotions(c: StepContext['colliders'], pairs: StepContext['pairs'], motion: Float64Array, threshold: number): Float64Array {
+  if (fastPartner.length < motion.length) fastPartner = grown(fastPartner, motion.length);
+  const pushed = fastPartner;
+  for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
+  const pairA = pairs.a;
+  const pairB = pairs.b;
+  for (let k = 0, n = pairs.count; k < n; k++) {
+    const a = pairA[k];
+    const b = pairB[k];
+    const ma = motion[a];
+    const mb = motion[b];
+    if (mb > threshold && mb > pushed[a]) pushed[a] = mb;
+    if (ma > threshold && ma > pushed[b]) pushed[b] = ma;
+  }
+  return pushed;
 }
 
 /** Lists the active static colliders in statics[]; returns how many. */
