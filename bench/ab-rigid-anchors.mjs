@@ -7,6 +7,7 @@
 import { build } from 'esbuild';
 import { mkdirSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
+import { benchWorld } from './scenes.mjs';
 const arg = (n, f) => (process.argv.includes(n) ? process.argv[process.argv.indexOf(n) + 1] : f);
 const dirs = [arg('--a', '.'), arg('--b', '.')];
 const scene = arg('--scene', 'circles');
@@ -20,18 +21,7 @@ for (const [k, d] of dirs.entries()) {
   await build({ entryPoints: [d + '/src/engine/index.ts'], bundle: true, format: 'esm', platform: 'neutral', target: 'es2022', outfile, logLevel: 'error' });
   engines.push(await import(pathToFileURL(outfile).href));
 }
-function make(e) {
-  const { buildScene, catalogue } = e;
-  if (scene === 'circles10k') {
-    const base = catalogue.circles.make();
-    const walls = base.bodies.filter((b) => b.static).map((b) => (b.id === 'floor' ? { ...b, width: 102 } : { ...b, x: Math.sign(b.x) * 50.5 }));
-    const circles = Array.from({ length: 10000 }, (_, k) => { const row = Math.floor(k / 80); return { type: 'circle', x: ((k % 80) - 40) * 1.2 + (row % 2 ? 0.3 : -0.3), y: -2 - row * 1.2, radius: 0.5 }; });
-    return buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
-  }
-  const d = catalogue[scene].make();
-  return buildScene({ ...d, world: { ...d.world, sleeping: false, kernel } }).world;
-}
-const worlds = engines.map(make);
+const worlds = engines.map((e) => benchWorld(e, scene, kernel));
 const acc = worlds.map(() => ({ store: 0, restore: 0 }));
 worlds.forEach((w, k) => {
   const cache = w.ctx.rigidAnchors;

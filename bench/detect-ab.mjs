@@ -24,6 +24,7 @@ import { existsSync, mkdtempSync, rmSync } from 'node:fs';
 import { Session } from 'node:inspector/promises';
 import { loadavg, tmpdir } from 'node:os';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { benchWorld } from './scenes.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const arg = (name, fallback) => (process.argv.includes(name) ? process.argv[process.argv.indexOf(name) + 1] : fallback);
@@ -56,17 +57,6 @@ async function bundleRevision(rev, name) {
 // --b REV: B is that revision instead of the work tree (--base HEAD --b HEAD: an A/A run, the noise).
 const A = await bundleRevision(base, 'a');
 const B = process.argv.includes('--b') ? await bundleRevision(arg('--b'), 'b') : await bundle(root, 'b');
-
-function make(E, scene, kernel) {
-  const base = E.catalogue.circles.make();
-  if (scene === 'circles') return E.buildScene({ ...base, world: { ...base.world, sleeping: false, kernel } }).world;
-  const walls = base.bodies.filter((b) => b.static).map((b) => (b.id === 'floor' ? { ...b, width: 102 } : { ...b, x: Math.sign(b.x) * 50.5 }));
-  const circles = Array.from({ length: 10000 }, (_, k) => {
-    const row = Math.floor(k / 80);
-    return { type: 'circle', x: ((k % 80) - 40) * 1.2 + (row % 2 ? 0.3 : -0.3), y: -2 - row * 1.2, radius: 0.5 };
-  });
-  return E.buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
-}
 
 const DETECTION = ['fastPartnerMotions', 'partnerMotions', 'detectCollisions', 'updateBoundingBoxes', 'findPairs', 'radixSort', 'growPushedBodies', 'run', 'discPairs', 'prefillDiscRows', 'circles', 'restore', 'wakeTouched', 'recordApproachSpeeds'];
 
@@ -107,7 +97,7 @@ for (const scene of scenes) {
   for (const kernel of kernels) {
     // broad, narrow: one world (A's), each side's broad or narrow phase run on its state (the same memory).
     const parts = mode === 'broad' || mode === 'narrow';
-    const worlds = parts ? [make(A, scene, kernel)] : [make(A, scene, kernel), make(B, scene, kernel)];
+    const worlds = parts ? [benchWorld(A, scene, kernel)] : [benchWorld(A, scene, kernel), benchWorld(B, scene, kernel)];
     if (parts) worlds.push(worlds[0]);
     const components = [A, B].map((E) => (mode === 'broad' ? new E.GridBroadPhase() : new E.RigidNarrowPhase()));
     const warm = scene === 'circles' ? 300 : 120;

@@ -15,20 +15,21 @@ import { writeFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import { importTs } from '../scripts/build-engine-for-node.mjs';
+import { benchWorld } from './scenes.mjs';
 
 const arg = (name, fallback) => (process.argv.includes(name) ? process.argv[process.argv.indexOf(name) + 1] : fallback);
 const runs = Number(arg('--runs', 5));
 const engine = await importTs();
-const { World, buildScene, catalogue, createCloth } = engine;
+const { World, createCloth } = engine;
 
 /** Scenes: how to build them and how many steps to warm up and to time. */
 const SCENES = {
-  cloth30: { title: 'S5 cloth 30×30 (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('cloth', kernel) },
+  cloth30: { title: 'S5 cloth 30×30 (catalogue)', warm: 60, timed: 300, make: (kernel) => benchWorld(engine, 'cloth', kernel) },
   // Rigid piles: the kernel's rigid contact lanes (single points for the circles, by manifold for the boxes).
-  pyramid: { title: 'S1 pyramid, base 20 (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('pyramid', kernel) },
-  boxes: { title: 'S2 1000 boxes (catalogue)', warm: 300, timed: 100, make: (kernel) => sceneWorld('boxes', kernel) },
-  circles: { title: 'S3 2000 circles (catalogue)', warm: 300, timed: 100, make: (kernel) => sceneWorld('circles', kernel) },
-  chain: { title: 'S4 chain, 100 links (catalogue)', warm: 60, timed: 300, make: (kernel) => sceneWorld('chain', kernel) },
+  pyramid: { title: 'S1 pyramid, base 20 (catalogue)', warm: 60, timed: 300, make: (kernel) => benchWorld(engine, 'pyramid', kernel) },
+  boxes: { title: 'S2 1000 boxes (catalogue)', warm: 300, timed: 100, make: (kernel) => benchWorld(engine, 'boxes', kernel) },
+  circles: { title: 'S3 2000 circles (catalogue)', warm: 300, timed: 100, make: (kernel) => benchWorld(engine, 'circles', kernel) },
+  chain: { title: 'S4 chain, 100 links (catalogue)', warm: 60, timed: 300, make: (kernel) => benchWorld(engine, 'chain', kernel) },
   cloth200: {
     title: '200×200 pinned cloth (bench/cloth.mjs layout)',
     // Built in its rest shape, it hangs still from the first step (largest speed 2e-4 after 10 steps, 1e-4 after 60),
@@ -36,11 +37,7 @@ const SCENES = {
     // warm-up), 10,000-11,000 from step 20 on. 60 steps time the settled cloth, with every phase's code optimised.
     warm: 60,
     timed: 40,
-    make: (kernel) => {
-      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel });
-      createCloth(world, { origin: { x: 0, y: 0 }, columns: 200, rows: 200, spacing: 0.5, shear: 0 });
-      return world;
-    },
+    make: (kernel) => benchWorld(engine, 'cloth200', kernel),
   },
   circles10k: {
     title: '10,000 circles r 0.5 dropped into a container 100 wide',
@@ -49,22 +46,9 @@ const SCENES = {
     // rows still falling.
     warm: 120,
     timed: 30,
-    make: (kernel) => {
-      const base = catalogue.circles.make();
-      const walls = base.bodies.filter((b) => b.static).map((b) => (b.id === 'floor' ? { ...b, width: 102 } : { ...b, x: Math.sign(b.x) * 50.5 }));
-      const circles = Array.from({ length: 10000 }, (_, k) => {
-        const row = Math.floor(k / 80);
-        return { type: 'circle', x: ((k % 80) - 40) * 1.2 + (row % 2 ? 0.3 : -0.3), y: -2 - row * 1.2, radius: 0.5 };
-      });
-      return buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
-    },
+    make: (kernel) => benchWorld(engine, 'circles10k', kernel),
   },
 };
-
-function sceneWorld(name, kernel) {
-  const description = catalogue[name].make();
-  return buildScene({ ...description, world: { ...description.world, sleeping: false, kernel } }).world;
-}
 
 function measure(scene, kernel) {
   const world = scene.make(kernel);
