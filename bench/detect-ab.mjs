@@ -17,7 +17,7 @@
 //   node bench/detect-ab.mjs --base HEAD --scenes circles10k --kernels wasm --rounds 15 --block 4
 //
 // Scenes: circles (S3, the catalogue's 2,000 discs, sleeping off as in bench/peers) warmed 300 steps, circles10k
-// (bench/kernel.mjs's recipe) warmed 120 steps; each round times `--block` steps (or detections) per side.
+// (bench/scenes.mjs) warmed 120 steps; each round times `--block` steps (or detections) per side.
 import { build } from 'esbuild';
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, rmSync } from 'node:fs';
