@@ -3,12 +3,13 @@
 // Prints each side's median ms a step and the median of the per-round ratios B/A (an A/A run shows the noise).
 //
 //   node bench/ab-rigid-lanes.mjs --a /tmp/before --b . --scene circles --warm 300 --rounds 30 --block 5
-//   scenes: circles (S3, catalogue), circles10k (bench/kernel.mjs's pile), pyramid, boxes; --kernel wasm|js
+//   scenes: circles (S3, catalogue), circles10k (bench/scenes.mjs), pyramid, boxes; --kernel wasm|js
 import { build } from 'esbuild';
 import { mkdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { loadavg } from 'node:os';
 import { pathToFileURL } from 'node:url';
+import { benchWorld } from './scenes.mjs';
 
 const arg = (name, fallback) => (process.argv.includes(name) ? process.argv[process.argv.indexOf(name) + 1] : fallback);
 const roots = { A: resolve(arg('--a', '.')), B: resolve(arg('--b', '.')) };
@@ -26,23 +27,8 @@ async function bundle(root, tag) {
   return import(pathToFileURL(outfile).href);
 }
 
-function make(engine) {
-  const { buildScene, catalogue } = engine;
-  if (sceneName === 'circles10k') {
-    const base = catalogue.circles.make();
-    const walls = base.bodies.filter((b) => b.static).map((b) => (b.id === 'floor' ? { ...b, width: 102 } : { ...b, x: Math.sign(b.x) * 50.5 }));
-    const circles = Array.from({ length: 10000 }, (_, k) => {
-      const row = Math.floor(k / 80);
-      return { type: 'circle', x: ((k % 80) - 40) * 1.2 + (row % 2 ? 0.3 : -0.3), y: -2 - row * 1.2, radius: 0.5 };
-    });
-    return buildScene({ world: { ...base.world, sleeping: false, kernel }, bodies: [...walls, ...circles] }).world;
-  }
-  const d = catalogue[sceneName].make();
-  return buildScene({ ...d, world: { ...d.world, sleeping: false, kernel } }).world;
-}
-
 const engines = { A: await bundle(roots.A, 'A'), B: await bundle(roots.B, 'B') };
-const worlds = { A: make(engines.A), B: make(engines.B) };
+const worlds = { A: benchWorld(engines.A, sceneName, kernel), B: benchWorld(engines.B, sceneName, kernel) };
 for (const side of ['A', 'B']) {
   if (worlds[side].diagnostics().kernel !== kernel) throw new Error(`${side}: kernel ${worlds[side].diagnostics().kernel}`);
   for (let k = 0; k < warm; k++) worlds[side].step();
