@@ -140,8 +140,14 @@ function bars(title: string, yLabel: string, categories: string[], series: { nam
   return fig;
 }
 
-function table(head: string[], rows: string[][]): HTMLTableElement {
+/** A table in a box that scrolls sideways when the page is narrower than the table (a phone), reachable by keyboard. */
+function table(head: string[], rows: string[][]): HTMLElement {
+  const box = h('div', undefined, 'table-scroll');
+  box.tabIndex = 0;
+  box.setAttribute('role', 'region');
+  box.setAttribute('aria-label', `table: ${head[0]}, ${head.slice(1, 3).join(', ')}…`);
   const t = h('table');
+  box.append(t);
   const tr = h('tr');
   for (const c of head) tr.append(h('th', c));
   t.append(tr);
@@ -150,7 +156,7 @@ function table(head: string[], rows: string[][]): HTMLTableElement {
     for (const c of r) row.append(h('td', c));
     t.append(row);
   }
-  return t;
+  return box;
 }
 
 async function fetchText(path: string): Promise<string | null> {
@@ -246,7 +252,8 @@ function mdTable(md: string, heading: string): string[][] | null {
       continue;
     }
     if (/^\|\s*-/.test(line)) continue;
-    rows.push(line.slice(1, -1).split('|').map((c) => c.trim().replace(/\*\*/g, '')));
+    // Cells split at unescaped pipes: a label may hold |d − L|, written \|d − L\| in the markdown.
+    rows.push(line.slice(1, -1).split(/(?<!\\)\|/).map((c) => c.trim().replace(/\\\|/g, '|').replace(/\*\*/g, '')));
   }
   return rows.length ? rows : null;
 }

@@ -118,6 +118,14 @@ try {
       await page.waitForFunction(ready, null, { timeout: 15000 });
       await page.waitForTimeout(500);
       await page.screenshot({ path: new URL(`page-${path.replace('.html', '')}.png`, outDir).pathname, fullPage: path === 'report.html' });
+      if (path === 'report.html') {
+        // On a phone the page fits its width: wide tables scroll in their own box, plots take one column.
+        const viewport = page.viewportSize();
+        await page.setViewportSize({ width: 390, height: 844 });
+        const width = await page.evaluate(() => document.documentElement.scrollWidth);
+        if (width > 390) failures.push(`report.html: ${width} px wide at a 390 px viewport (the page scrolls sideways)`);
+        await page.setViewportSize(viewport);
+      }
     } catch (e) {
       failures.push(`${path}: not ready (${e.message.split('\n')[0]})`);
     }

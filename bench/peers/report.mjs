@@ -21,7 +21,7 @@ const QUALITY = [
   ['S3 pile height', 'S3', (q) => q.height, (v) => (v == null ? '—' : v.toFixed(1))],
   ['S3 circles outside the container', 'S3', (q) => q.escaped, (v) => (v == null ? '—' : String(v))],
   ['S4 max link strain (joint gap ÷ link length)', 'S4', (q) => q.strain, pct],
-  ['S5 max link strain (|d − L| ÷ L)', 'S5', (q) => q.strain, pct],
+  ['S5 max link strain (\\|d − L\\| ÷ L)', 'S5', (q) => q.strain, pct],
 ];
 
 export function report({ options, results, started, finished, node, cpu, load, source, peers }) {
