@@ -28,17 +28,23 @@ let partnerMotion = new Float64Array(64);
 
 /**
  * For each active collider, the largest `motion` among the colliders it is paired with: how far a partner may push it
- * this step. The array is shared (valid until the next call).
+ * this step; with `above`, only motions above it count (0 where no partner moves more: growPushedBodies looks only at
+ * fast partners, and skips the stores for the pairs of slow bodies). The array is shared (valid until the next call).
  */
-export function partnerMotions(c: Colliders, pairs: PairList, motion: Float64Array): Float64Array {
+export function partnerMotions(c: Colliders, pairs: PairList, motion: Float64Array, above = 0): Float64Array {
   if (partnerMotion.length < motion.length) partnerMotion = grown(partnerMotion, motion.length);
   const pushed = partnerMotion;
   for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
-  for (let k = 0; k < pairs.count; k++) {
-    const a = pairs.a[k];
-    const b = pairs.b[k];
-    if (motion[b] > pushed[a]) pushed[a] = motion[b];
-    if (motion[a] > pushed[b]) pushed[b] = motion[a];
+  const pairA = pairs.a;
+  const pairB = pairs.b;
+  // Motions are ≥ 0 and pushed starts at 0, so above = 0 keeps every partner's largest motion.
+  for (let k = 0, n = pairs.count; k < n; k++) {
+    const a = pairA[k];
+    const b = pairB[k];
+    const ma = motion[a];
+    const mb = motion[b];
+    if (mb > above && mb > pushed[a]) pushed[a] = mb;
+    if (ma > above && ma > pushed[b]) pushed[b] = ma;
   }
   return pushed;
 }

@@ -8,7 +8,7 @@ import { RigidShapeKind } from '../rigid/shapes.js';
 import { boundsContacts, discRecords } from './rigid-narrowphase.js';
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
-import { overlaps } from './broadphase.js';
+import { overlaps, partnerMotions } from './broadphase.js';
 
 /** Broad phase then narrow phase: the contacts found act in every substep of the step (speculatively). */
 export function detectCollisions(ctx: StepContext, dt: number): void {
@@ -62,7 +62,7 @@ function growPushedBodies(ctx: StepContext): void {
   // more than this threshold: only such fast partners are looked at (a pile's landing rows are a few of its bodies).
   const threshold = 0.25 * reach[1];
   if (reach[0] <= threshold) return;
-  const pushed = fastPartnerMotions(c, pairs, motion, threshold);
+  const pushed = partnerMotions(c, pairs, motion, threshold);
   let staticCount = -1;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
@@ -89,31 +89,6 @@ function growPushedBodies(ctx: StepContext): void {
     c.maxX[s] = maxX;
     c.maxY[s] = maxY;
   }
-}
-
-/** Per collider slot: the largest motion above the threshold among its partners, else 0 (fastPartnerMotions). */
-let fastPartner = new Float64Array(64);
-
-/**
- * For each active collider, the largest `motion` above `threshold` among the colliders it is paired with, 0 if none
- * moves more: partnerMotions where that exceeds the threshold, without a store for the pairs of slow bodies. The array
- * is shared (valid until the next call).
- */
-function fastPartnerMotions(c: StepContext['colliders'], pairs: StepContext['pairs'], motion: Float64Array, threshold: number): Float64Array {
-  if (fastPartner.length < motion.length) fastPartner = grown(fastPartner, motion.length);
-  const pushed = fastPartner;
-  for (let k = 0; k < c.activeCount; k++) pushed[c.active[k]] = 0;
-  const pairA = pairs.a;
-  const pairB = pairs.b;
-  for (let k = 0, n = pairs.count; k < n; k++) {
-    const a = pairA[k];
-    const b = pairB[k];
-    const ma = motion[a];
-    const mb = motion[b];
-    if (mb > threshold && mb > pushed[a]) pushed[a] = mb;
-    if (ma > threshold && ma > pushed[b]) pushed[b] = ma;
-  }
-  return pushed;
 }
 
 /** Lists the active static colliders in statics[]; returns how many. */

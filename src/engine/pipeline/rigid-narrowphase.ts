@@ -346,7 +346,7 @@ function discPairs(pairs: PairList, order: Int32Array | null, q: number, end: nu
     const k = order === null ? q : order[q];
     const a = pairA[k];
     const b = pairB[k];
-    // Each side's record (Colliders.discs): centre, radius (−1: not a rigid disc), motion, rotation, friction, row.
+    // Each side's record (discRecords): centre, radius (−1: not a rigid disc), motion, rotation, friction, row.
     const oa = 8 * a;
     const ob = 8 * b;
     const ra = discs[oa + 2];
