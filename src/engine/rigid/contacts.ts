@@ -168,13 +168,13 @@ export function writeAnchorKey(f: Float64Array, bodyA: number, bodyB: number, fe
   f[12] = key < 9007199254740991 ? key : key % 9007199254740991;
 }
 
+/** Doubles an entry of RigidAnchorCache's list. */
+const ENTRY = 6;
+
 /**
  * The chain of an anchor key in RigidAnchorCache's index: the key's bits above body B and the feature (body A's slot
  * while that is below 32768; past it, the key wrapped at 2⁵³ and this is just a number below 2¹⁵ that equal keys share).
  */
-/** Doubles an entry of RigidAnchorCache's list. */
-const ENTRY = 6;
-
 function chainOf(key: number): number {
   return (key / 274877906944) | 0;
 }
