@@ -2,16 +2,21 @@
 // and { kernel: 'wasm' }, sleeping off, dt 1/60, default substeps and iterations. Runs alternate between the kernels
 // so a burst of load from elsewhere on the machine lands on both; the load average is printed with the table. The
 // table gives CPU time per step (process.cpuUsage: on a shared, loaded machine it counts only the time this process
-// ran, where wall time also counts the time it waited for a core) and wall time beside it.
+// ran, where wall time also counts the time it waited for a core) and wall time beside it. With --fresh, each
+// measurement runs in a process of its own (as bench/peers.mjs runs each engine) and its wall time is the median of
+// the timed steps' times (as bench/peers.mjs reports them); in one process the rigid piles run slower (docs/engine.md).
 //
 //   node bench/kernel.mjs                       every scene, 5 runs
 //   node bench/kernel.mjs --runs 3 --scenes cloth200,circles10k
 //   node bench/kernel.mjs --runs 3 --scenes pyramid,boxes,circles   the rigid contact lanes (S1, S2, S3)
 //   node bench/kernel.mjs --warm 100            warm-up steps for every scene (default: each scene's own, below)
+//   node bench/kernel.mjs --fresh --runs 5 --scenes circles10k,cloth200   a fresh process a run, median step
 //   node bench/kernel.mjs --sweep               also time the distance sweep alone (JS loop vs kernel, same arrays)
 //   node bench/kernel.mjs --runs 3 --out bench/results/kernel.json   also write the table as JSON (the experiments
 //                                               page, demo/report.html, draws it)
+import { spawnSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { cpus, loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import { importTs } from '../scripts/build-engine-for-node.mjs';
@@ -19,6 +24,9 @@ import { benchWorld } from './scenes.mjs';
 
 const arg = (name, fallback) => (process.argv.includes(name) ? process.argv[process.argv.indexOf(name) + 1] : fallback);
 const runs = Number(arg('--runs', 5));
+const fresh = process.argv.includes('--fresh');
+const child = process.argv.includes('--child');
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const engine = await importTs();
 const { World, createCloth } = engine;
 
@@ -50,26 +58,46 @@ const SCENES = {
   },
 };
 
+/**
+ * One scene and kernel measured: here, or with --fresh in a child process of its own (`--child <scene> <kernel>`
+ * prints the result as JSON), as bench/peers.mjs runs each engine: a JS realm that ran other worlds is slower (see
+ * docs/engine.md: the first detached buffer, other scenes' compiled code).
+ */
 function measure(scene, kernel) {
+  if (fresh && !child) {
+    const name = Object.keys(SCENES).find((n) => SCENES[n] === scene);
+    const warm = process.argv.includes('--warm') ? ['--warm', arg('--warm')] : [];
+    const run = spawnSync(process.execPath, [fileURLToPath(import.meta.url), '--child', name, kernel, '--fresh', ...warm], { encoding: 'utf8', maxBuffer: 1 << 24 });
+    if (run.status !== 0) throw new Error(`${name} ${kernel}: ${run.stderr}`);
+    return JSON.parse(run.stdout.trim().split('\n').pop());
+  }
   const world = scene.make(kernel);
   if (world.diagnostics().kernel !== kernel) throw new Error(`asked for ${kernel}, runs ${world.diagnostics().kernel}: ${world.diagnostics().reason}`);
   for (let k = 0, n = Number(arg('--warm', scene.warm)); k < n; k++) world.step();
   const t0 = performance.now();
   const cpu0 = process.cpuUsage();
-  for (let k = 0; k < scene.timed; k++) world.step();
+  const steps = [];
+  for (let k = 0; k < scene.timed; k++) {
+    const t = performance.now();
+    world.step();
+    steps.push(performance.now() - t);
+  }
   const cpu = process.cpuUsage(cpu0);
-  const wall = (performance.now() - t0) / scene.timed;
+  const wall = fresh ? median(steps) : (performance.now() - t0) / scene.timed;
   // Steps (warm-up included) whose rigid contacts the kernel's lanes took, and those left to the JS solver.
   const k = world.ctx.kernel;
   const lanes = k ? { lanes: k.rigidLaneSteps, js: k.rigidJsSteps } : null;
   return { ms: (cpu.user + cpu.system) / 1000 / scene.timed, wall, strain: world.maxStrain(), particles: world.particleCount, links: world.distances.count, lanes };
 }
 
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+if (child) {
+  console.log(JSON.stringify(measure(SCENES[process.argv[process.argv.indexOf('--child') + 1]], process.argv[process.argv.indexOf('--child') + 2])));
+  process.exit(0);
+}
 const names = arg('--scenes', Object.keys(SCENES).join(',')).split(',');
 const wasmBytes = (await import('../scripts/build-wasm.mjs')).readKernelBytes();
 const load = [loadavg()[0]];
-console.log(`solver kernels: ${runs} runs alternating, sleeping off, substeps ${new World().substeps} × iterations ${new World().iterations}, Node ${process.version}`);
+console.log(`solver kernels: ${runs} runs alternating${fresh ? ', each in a fresh process (wall: median step)' : ''}, sleeping off, substeps ${new World().substeps} × iterations ${new World().iterations}, Node ${process.version}`);
 console.log('| scene | particles | links | js CPU ms/step | wasm CPU ms/step | wasm/js | wall js | wall wasm | max strain js | wasm |');
 console.log('|---|---|---|---|---|---|---|---|---|---|');
 const rows = [];
@@ -92,7 +120,7 @@ console.log(`\nload average (1 min) during the runs: ${load.map((l) => l.toFixed
 console.log(`kernel: ${wasmBytes.length} bytes of WebAssembly, ${gzipSync(wasmBytes).length} gzip`);
 const out = arg('--out', null);
 if (out) {
-  const summary = { date: new Date().toISOString(), runs, node: process.version, cpus: cpus().length, load, wasmBytes: wasmBytes.length, wasmGzip: gzipSync(wasmBytes).length };
+  const summary = { date: new Date().toISOString(), runs, fresh, node: process.version, cpus: cpus().length, load, wasmBytes: wasmBytes.length, wasmGzip: gzipSync(wasmBytes).length };
   writeFileSync(new URL(`../${out}`, import.meta.url), `${JSON.stringify({ summary, rows }, null, 2)}\n`);
   console.log(`wrote ${out}`);
 }
