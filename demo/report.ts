@@ -294,8 +294,9 @@ async function experiment4(): Promise<void> {
   const box = document.getElementById('e4')!;
   const text = await fetchText('../bench/results/kernel.json');
   if (!text) return void box.append(h('p', 'bench/results/kernel.json is missing: run the command above.', 'missing'));
-  const { summary, rows } = JSON.parse(text) as { summary: { date: string; runs: number; node: string; cpus: number; load: number[]; wasmBytes: number; wasmGzip: number }; rows: KernelRow[] };
-  box.append(h('p', `Measured ${summary.date.slice(0, 16).replace('T', ' ')} UTC in Node ${summary.node}, ${summary.runs} runs per kernel alternating (median CPU ms per step), sleeping off; machine load ${Math.min(...summary.load).toFixed(1)}–${Math.max(...summary.load).toFixed(1)} on ${summary.cpus} shared cores. The kernel is ${summary.wasmBytes} bytes of WebAssembly (${summary.wasmGzip} gzip).`, 'meta'));
+  const { summary, rows } = JSON.parse(text) as { summary: { date: string; runs: number; fresh?: boolean; node: string; cpus: number; load: number[]; wasmBytes: number; wasmGzip: number }; rows: KernelRow[] };
+  const how = summary.fresh ? 'each run in a fresh process' : 'in one process';
+  box.append(h('p', `Measured ${summary.date.slice(0, 16).replace('T', ' ')} UTC in Node ${summary.node}, ${summary.runs} runs per kernel alternating, ${how} (median CPU ms per step), sleeping off; machine load ${Math.min(...summary.load).toFixed(1)}–${Math.max(...summary.load).toFixed(1)} on ${summary.cpus} shared cores. The kernel is ${summary.wasmBytes} bytes of WebAssembly (${summary.wasmGzip} gzip).`, 'meta'));
   const bySize = [...rows].sort((a, b) => a.particles - b.particles);
   box.append(
     bars('Step time by scene size: JS solver vs WebAssembly SIMD kernel (lower is better)', 'CPU ms per step', bySize.map((r) => `${r.scene} (${r.particles.toLocaleString('en')})`), [
