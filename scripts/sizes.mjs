@@ -1,5 +1,6 @@
 // Sizes of the builds in dist/ (run `npm run build` first), raw and `gzip -9`, in KB = 1024 bytes. Prints the README's
-// table (`node scripts/sizes.mjs`), or the numbers as JSON (`--json`).
+// table (`node scripts/sizes.mjs`), or the numbers as JSON (`--json`); `--check` (CI) also fails when a build is over
+// its budget (BUDGETS below).
 //
 // - The single files are measured as they are.
 // - The ESM library is measured twice: as its files (what a page without a bundler fetches with an import map:
@@ -27,6 +28,12 @@ import terser from '@rollup/plugin-terser';
 import { bundleP5 } from '../src/render/p5/bundle.mjs';
 import { singleFile } from '../rollup.config.js';
 import { readKernelBytes } from './build-wasm.mjs';
+
+/**
+ * The budgets the issues set, in gzip bytes, that `--check` holds the builds to: the single file with p5 (issue 15:
+ * at most 175 KB) and what the WebAssembly kernel adds to it (issue 16: at most 10 KB). KB = 1024 bytes.
+ */
+const BUDGETS = { singleFile: 175 * 1024, kernelShare: 10 * 1024 };
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = resolve(root, 'dist');
@@ -168,4 +175,18 @@ if (process.argv.includes('--json')) {
       `(the file built with it minus without it, ${kb(kernel.singleFile.gzip)} KB gzip with it); the module itself ` +
       `${kernel.module.raw} bytes, ${kernel.module.gzip} gzip.`,
   );
+}
+
+if (process.argv.includes('--check')) {
+  const checks = [
+    ['the single file with p5', withP5.gzip, BUDGETS.singleFile],
+    ["the WebAssembly kernel's share of the single file", kernel.gzip, BUDGETS.kernelShare],
+  ];
+  let over = 0;
+  for (const [what, bytes, budget] of checks) {
+    const ok = bytes <= budget;
+    if (!ok) over++;
+    console.log(`${ok ? 'within' : 'OVER'} budget: ${what}, ${bytes} bytes gzip of ${budget} (${budget - bytes} left)`);
+  }
+  if (over > 0) process.exit(1);
 }

@@ -37,6 +37,8 @@ echo "== browser soak: 1 minute of markup changes (long form: node scripts/brows
 node scripts/browser-soak.mjs --minutes 1
 echo "== build, the single-file build embedded across origins, both builds under a strict CSP"
 npm run build --silent
+echo "== sizes within the issues' budgets (single file with p5 <= 175 KB gzip, the kernel's share <= 10 KB)"
+node scripts/sizes.mjs --check
 node test/e2e/cross-origin.mjs
 node test/e2e/csp.mjs
 echo "== the npm tarball installed and embedded from a second origin (chromium; Firefox ESR when installed)"
