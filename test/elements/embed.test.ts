@@ -181,6 +181,39 @@ describe('embedding', () => {
     expect(scene.canvas!.getBoundingClientRect().height).to.equal(135);
     expect(scene.canvas!.width).to.equal(Math.round(240 * ratio));
   });
+
+  it('has a width where the layout sizes it by its content (flex row, inline-block, float), and fills a block', async () => {
+    // A CMS puts an embed beside a label or in a shrink-to-fit box: it takes 300 px there, as a canvas or a video would,
+    // keeping its aspect ratio (it was 0 × 0: nothing on the page); in a plain block it still fills the container.
+    const page = document.createElement('div');
+    page.style.width = '640px';
+    page.innerHTML =
+      '<div style="display:flex"><span>label</span><cloth-sim></cloth-sim></div>' +
+      '<span style="display:inline-block"><cloth-sim></cloth-sim></span>' +
+      '<div style="float:left"><physics-scene width="12" height="9"></physics-scene></div><div style="clear:both"></div>' +
+      '<div style="display:flex;width:200px"><span>label</span><cloth-sim></cloth-sim></div>' +
+      '<cloth-sim></cloth-sim>';
+    spacers.push(page);
+    document.body.append(page);
+    const [row, inline, float, narrow, block] = page.querySelectorAll<PhysicsSceneElement>('cloth-sim, physics-scene');
+    await Promise.all([row, inline, float, narrow, block].map((el) => el.updateComplete));
+    const size = (el: Element) => {
+      const r = el.getBoundingClientRect();
+      return [Math.round(r.width), Math.round(r.height)];
+    };
+    expect(size(row), 'in a flex row').to.deep.equal([300, 188]);
+    expect(size(inline), 'in an inline-block').to.deep.equal([300, 188]);
+    expect(size(float), 'in a float').to.deep.equal([300, 225]);
+    // A row narrower than label + 300 px shrinks the embed, not past the row.
+    const label = narrow.previousElementSibling!.getBoundingClientRect().width;
+    expect(size(narrow)[0], 'in a narrow flex row').to.equal(Math.round(200 - label));
+    expect(size(block), 'in a block').to.deep.equal([640, 400]);
+    await block.ready;
+    await waitFor(() => block.canvas?.getBoundingClientRect().width === 640, 'the block embed\'s canvas at 640 px');
+    await row.ready;
+    await waitFor(() => row.canvas?.getBoundingClientRect().width === 300, 'the flex-row embed\'s canvas at 300 px');
+    for (const el of [row, inline, float, narrow, block]) el.remove();
+  });
 });
 
 /** A component that renders its own <cloth-sim> in its shadow root, as a framework component would. */

@@ -470,7 +470,8 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   protected override render() {
-    return html`<div class="fallback" part="fallback" ?hidden=${this.loaded}>
+    return html`<div class="sizer"></div>
+      <div class="fallback" part="fallback" ?hidden=${this.loaded}>
         <slot name="fallback" @slotchange=${this.fallbackChanged}></slot><slot @slotchange=${this.fallbackChanged}></slot>
       </div>
       <div

@@ -1,10 +1,11 @@
 // The styles of <physics-scene> (and of the presets built on it).
 //
-// The box: a block as wide as its container, `aspect-ratio` from the view (width / height) unless CSS gives it a height,
-// overflow hidden. A page reserves the same box before the script has run with the snippet's inline style
-// (style="display:block;aspect-ratio:16/9" for a default scene, 16/10 for the presets; overflow:hidden too when the tag
-// holds fallback content), which wins over these styles once defined, so nothing moves when the element upgrades
-// (scripts/measure-loading.mjs: layout shift 0 with it, 0.13 desktop / 0.16 phone without). Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
+// The box: a block as wide as its container (300 px where the layout sizes it by its content: .sizer), `aspect-ratio`
+// from the view (width / height) unless CSS gives it a height, overflow hidden. A page reserves the same box before the
+// script has run with the snippet's inline style (style="display:block;aspect-ratio:16/9" for a default scene, 16/10
+// for the presets; overflow:hidden too when the tag holds fallback content), which wins over these styles once
+// defined, so nothing moves when the element upgrades (scripts/measure-loading.mjs: layout shift 0 with it, 0.13
+// desktop / 0.16 phone without). Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
 import { css } from 'lit';
 
 /** @internal */
@@ -18,6 +19,8 @@ export const sceneStyles = css`
     user-select: none;
     -webkit-user-select: none;
     contain: layout paint;
+    /* A flex row may shrink it below the sizer's width (as it shrinks text). */
+    min-width: 0;
   }
   :host([hidden]) {
     display: none;
@@ -29,6 +32,16 @@ export const sceneStyles = css`
   .stage {
     position: absolute;
     inset: 0;
+  }
+  /*
+   * The only child in flow: the box's width where the layout asks for one from the content (a flex row, an
+   * inline-block, a float, an auto grid column): 300 px as a canvas or a video would have, or the container's width
+   * when narrower; no height. Elsewhere a block fills its container and this changes nothing.
+   */
+  .sizer {
+    width: 300px;
+    max-width: 100%;
+    height: 0;
   }
   /* Under the stage: seen until the canvas draws its first frame over it, hidden once the scene is ready. */
   .fallback {
