@@ -103,6 +103,20 @@ export class Checker {
     return out;
   }
 
+  /**
+   * A cloth's pinned top-row particles: "top", "corners", "none", or column numbers from 0 to columns − 1 separated by
+   * spaces or commas. Null when absent or not one of those (reported with every form it may take).
+   */
+  pins(value: string | null | undefined, columns: number): 'top' | 'corners' | 'none' | number[] | null {
+    if (value === undefined || value === null) return null;
+    const v = value.trim();
+    if (v === 'top' || v === 'corners' || v === 'none') return v;
+    const list = v.split(/[\s,]+/).filter(Boolean).map(Number);
+    if (list.length > 0 && list.every((c) => Number.isInteger(c) && c >= 0 && c < columns)) return list;
+    this.fail('pins', value, `must be top, corners, none or column numbers from 0 to ${columns - 1}`);
+    return null;
+  }
+
   /** A CSS colour, "none", or undefined. */
   color(attribute: string, value: unknown, fallback: string | null): string | null {
     if (value === undefined || value === null || value === '') return fallback;

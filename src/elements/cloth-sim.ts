@@ -121,15 +121,9 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     const auto = Math.min((w * 0.7) / (columns - 1), (h * 0.75) / (rows - 1));
     const spacing = check.number('spacing', this.spacing, { positive: true, max: 100, fallback: auto })!;
     const spread = [...new Set([0, 1, 2, 3, 4].map((k) => Math.round((k * (columns - 1)) / 4)))].join(' ');
-    let pins = spread;
-    const p = (this.pins ?? '').trim();
-    if (p === '') pins = spread;
-    else if (p === 'top' || p === 'corners' || p === 'none') pins = p;
-    else {
-      const list = check.numbers('pins', p);
-      if (list && list.every((c) => Number.isInteger(c) && c >= 0 && c < columns)) pins = list.join(' ');
-      else if (list) check.fail('pins', this.pins, `column indices must be whole numbers from 0 to ${columns - 1}`);
-    }
+    // Not written (or blank): the spread; a bad value is reported and falls back to it.
+    const chosen = (this.pins ?? '').trim() === '' ? null : check.pins(this.pins, columns);
+    const pins = chosen === null ? spread : Array.isArray(chosen) ? chosen.join(' ') : chosen;
     const stiffness = check.number('stiffness', this.stiffness, { positive: true, max: 1, fallback: 1 })!;
     // XPBD compliance (inverse stiffness): 0 at stiffness 1, about 1e-5 at 0.1.
     const compliance = ((1 - stiffness) / stiffness) * 1e-6;

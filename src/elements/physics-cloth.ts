@@ -36,16 +36,7 @@ export class PhysicsClothElement extends PhysicsBodyElement {
     const columns = check.number('columns', this.columns, { integer: true, min: 2, max: 4096, fallback: 12 })!;
     const rows = check.number('rows', this.rows, { integer: true, min: 2, max: 4096, fallback: 10 })!;
     const spacing = check.number('spacing', this.spacing, { positive: true, fallback: 0.3 })!;
-    let pins: string | number[] = 'top';
-    if (this.pins !== undefined && this.pins !== null) {
-      const p = this.pins.trim();
-      if (p === 'top' || p === 'corners' || p === 'none') pins = p;
-      else {
-        const list = check.numbers('pins', p);
-        if (list && list.every((c) => Number.isInteger(c) && c >= 0 && c < columns)) pins = list;
-        else if (list) check.fail('pins', this.pins, `column indices must be whole numbers from 0 to ${columns - 1}`);
-      }
-    }
+    const pins = check.pins(this.pins, columns) ?? 'top';
     const out: Record<string, unknown> = { type: 'cloth', origin, columns, rows, spacing, pins, collide: this.collide, radius: this.collide ? spacing * 0.3 : 0 };
     const compliance = check.number('compliance', this.compliance, { min: 0 });
     if (compliance !== undefined) out.structural = compliance;

@@ -131,6 +131,11 @@ describe('<cloth-sim>', () => {
       const mine = errors.filter((e) => e.element === sim);
       expect(mine.map((e) => `${e.attribute}=${e.value}`).sort()).to.deep.equal(['columns=abc', 'pins=0 99', 'stiffness=2']);
       expect(warnings.some((w) => w.includes('<cloth-sim> columns="abc"'))).to.equal(true);
+      // A bad pin list is told every form pins may take (24 columns: the default, columns being bad).
+      expect(mine.find((e) => e.attribute === 'pins')!.message).to.equal('must be top, corners, none or column numbers from 0 to 23');
+      sim.setAttribute('pins', 'top row');
+      await waitFor(() => errors.some((e) => e.value === 'top row'), 'the second bad pins value reported');
+      expect(errors.find((e) => e.value === 'top row')!.message).to.equal('must be top, corners, none or column numbers from 0 to 23');
       const box = sim.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
       expect(box.textContent).to.contain('columns="abc"');
       expect(box.getBoundingClientRect().height).to.be.greaterThan(10);

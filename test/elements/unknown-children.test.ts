@@ -49,7 +49,7 @@ describe('unknown children of a scene', () => {
     expect(rec.errors.map((e) => [e.element.localName, e.attribute, e.value])).to.deep.equal(tags.map((t) => [t, '', t]));
     expect(warnings.length, warnings.join('\n')).to.equal(3);
     expect(warnings[0]).to.contain('<physics-boxx>').and.contain('did you mean <physics-box>?');
-    expect(warnings[1]).to.contain('<physics-triangle id="tri">').and.contain('did you mean <physics-circle>?').and.contain('<physics-polygon>');
+    expect(warnings[1]).to.contain('<physics-triangle id="tri">: unknown element, ignored: did you mean <physics-polygon>?');
     expect(warnings[2]).to.contain('<div>').and.contain('the scene ignores it');
     expect(errorBox(scene).textContent!.split('\n')).to.have.length(3);
 
@@ -91,6 +91,14 @@ describe('unknown children of a scene', () => {
     expect(unknownChildMessage('physics-spirng')).to.equal('unknown element, ignored: did you mean <physics-spring>?');
     expect(unknownChildMessage('circle')).to.equal('unknown element, ignored: did you mean <physics-circle>?');
     expect(unknownChildMessage('rope')).to.equal('unknown element, ignored: did you mean <physics-rope>?');
+    // Another word for a known body or link: its tag, though another is nearer by spelling (ball → box).
+    expect(unknownChildMessage('physics-ball')).to.equal('unknown element, ignored: did you mean <physics-circle>?');
+    expect(unknownChildMessage('physics-triangle')).to.equal('unknown element, ignored: did you mean <physics-polygon>?');
+    expect(unknownChildMessage('physics-chain')).to.equal('unknown element, ignored: did you mean <physics-rope>?');
+    expect(unknownChildMessage('physics-hinge')).to.equal('unknown element, ignored: did you mean <physics-joint>?');
+    expect(unknownChildMessage('rect')).to.equal('unknown element, ignored: did you mean <physics-box>?');
+    // A far guess by spelling comes with the whole list.
+    expect(unknownChildMessage('physics-lamp')).to.match(/^unknown element, ignored: did you mean <physics-\w+>\? \(bodies are <physics-box>/);
     for (const tag of ['div', 'span', 'p', 'cloth-sim', 'physics-scene']) expect(unknownChildMessage(tag), tag).to.match(/^not a body or link element, so the scene ignores it \(bodies are <physics-box>/);
   });
 

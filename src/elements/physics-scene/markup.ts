@@ -37,13 +37,45 @@ function editDistance(a: string, b: string): number {
 }
 
 /**
- * What to tell the author of a child that is not a body or link: the known tag closest to it by edit distance (a
- * `physics-*` tag always gets one; another tag only when it is close to a known one without the prefix, as `<circle>`
- * is to `<physics-circle>`), else that it is ignored. Exported for tests.
+ * Other words for the known bodies and links, without the prefix: `<physics-ball>` means a circle, though its nearest
+ * tag by spelling is `<physics-box>`.
+ */
+const SYNONYMS: Record<string, string> = {
+  ball: 'physics-circle',
+  disc: 'physics-circle',
+  disk: 'physics-circle',
+  rect: 'physics-box',
+  rectangle: 'physics-box',
+  square: 'physics-box',
+  block: 'physics-box',
+  crate: 'physics-box',
+  triangle: 'physics-polygon',
+  poly: 'physics-polygon',
+  shape: 'physics-polygon',
+  chain: 'physics-rope',
+  string: 'physics-rope',
+  sheet: 'physics-cloth',
+  flag: 'physics-cloth',
+  blob: 'physics-softbody',
+  jelly: 'physics-softbody',
+  figure: 'physics-ragdoll',
+  hinge: 'physics-joint',
+  link: 'physics-joint',
+  constraint: 'physics-joint',
+  anchor: 'physics-pin',
+};
+
+/**
+ * What to tell the author of a child that is not a body or link: the known tag it is another word for (SYNONYMS), or
+ * the known tag closest to it by edit distance (a `physics-*` tag always gets one; another tag only when it is close
+ * to a known one without the prefix, as `<circle>` is to `<physics-circle>`), else that it is ignored. Exported for
+ * tests.
  */
 export function unknownChildMessage(tag: string): string {
   const prefixed = tag.startsWith('physics-');
   const name = prefixed ? tag : `physics-${tag}`;
+  const synonym = SYNONYMS[name.slice('physics-'.length)];
+  if (synonym !== undefined && customElements.get(tag) === undefined) return `unknown element, ignored: did you mean <${synonym}>?`;
   let best = '';
   let bestDistance = Infinity;
   for (const known of KNOWN_TAGS) {

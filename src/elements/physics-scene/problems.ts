@@ -21,7 +21,7 @@ export interface ProblemsOptions {
 
 /** One line of the error box and of the console. */
 function problemText(el: Element, attribute: string, value: string, message: string): string {
-  return `${describeElement(el)} ${attribute ? `${attribute}="${displayValue(value)}"` : ''}: ${message}`;
+  return `${describeElement(el)}${attribute ? ` ${attribute}="${displayValue(value)}"` : ''}: ${message}`;
 }
 
 /** @internal */

@@ -73,7 +73,7 @@ describe('ProblemsController', () => {
     for (let k = 1; k <= 7; k++) problems.report(host, '', '', `engine: failure ${k}`);
     expect(errors.length).to.equal(7);
     expect(errors.every((e) => e.target === host)).to.equal(true);
-    expect(box.textContent!.split('\n')).to.deep.equal([3, 4, 5, 6, 7].map((k) => `<x-fake-host> : engine: failure ${k}`));
+    expect(box.textContent!.split('\n')).to.deep.equal([3, 4, 5, 6, 7].map((k) => `<x-fake-host>: engine: failure ${k}`));
     problems.set('config', host, [{ attribute: 'width', value: '0', message: 'must be a number > 0' }]);
     problems.clear();
     expect(box.hidden).to.equal(true);
