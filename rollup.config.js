@@ -104,6 +104,14 @@ function worker({ inline = false } = {}) {
       }
       return { code: out + code.slice(last), map: null };
     },
+    // The emitted chunk's address written as `new URL('./…', import.meta.url)`, a URL the Worker takes as it is, not
+    // Rollup's default `new URL('…', import.meta.url).href`: an app's bundler (Vite, webpack 5, Parcel) bundles a
+    // worker only when it sees exactly `new Worker(new URL('./…', import.meta.url))`.
+    resolveFileUrl({ relativePath, format }) {
+      if (inline || format !== 'es') return null;
+      const path = relativePath.startsWith('.') ? relativePath : `./${relativePath}`;
+      return `new URL(${JSON.stringify(path)}, import.meta.url)`;
+    },
   };
 }
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every test: installs what it needs (npm packages, Debian's chromium and, where it can, firefox-esr), type-checks, runs
 # the engine's tests in Node (mocha), then the element, worker and drawing tests in chromium with @web/test-runner, the
-# gallery checks, and the end-to-end pages (builds across origins, CSP, the npm tarball, layout shift, phone gestures,
-# many embeds on one worker pool).
+# gallery checks, and the end-to-end pages (builds across origins, CSP, the npm tarball, an app's bundlers, layout
+# shift, phone gestures, many embeds on one worker pool).
 # Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +43,8 @@ node test/e2e/cross-origin.mjs
 node test/e2e/csp.mjs
 echo "== the npm tarball installed and embedded from a second origin (chromium; Firefox ESR when installed)"
 node test/e2e/pack.mjs --no-build
+echo "== an app's bundlers: Vite and webpack bundle the library and its worker, esbuild the single file"
+node test/e2e/bundlers.mjs
 echo "== no layout shift while the embed loads (1.6 Mbit/s, 150 ms; desktop and phone)"
 node scripts/measure-loading.mjs --runs 1 --max-cls 0.02
 echo "== phone: swipes scroll past the scene, a body drags, pinch zooms"
