@@ -156,3 +156,44 @@ export function describeElement(el: Element): string {
 /** Degrees (markup) → radians (engine). */
 export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;
+
+/** Levenshtein distance: single-character insertions, deletions and substitutions. */
+export function editDistance(a: string, b: string): number {
+  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const next = [i];
+    for (let j = 1; j <= b.length; j++) next.push(Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1)));
+    row = next;
+  }
+  return row[b.length];
+}
+
+/** Attributes any element may carry (HTML's global attributes that a page puts on an embed). */
+const GLOBAL_ATTRIBUTES = new Set([
+  'id', 'class', 'style', 'slot', 'title', 'hidden', 'lang', 'dir', 'tabindex', 'role', 'part', 'exportparts', 'is',
+  'nonce', 'draggable', 'translate', 'inert', 'popover', 'autofocus', 'accesskey', 'contenteditable', 'spellcheck',
+  'enterkeyhint', 'inputmode', 'autocapitalize', 'itemprop', 'itemscope', 'itemtype', 'itemid', 'itemref',
+]);
+
+/**
+ * The attributes of `el` that look like misspellings of its own (`radus` for `radius`): not one of its attributes, not
+ * a global, `data-`, `aria-` or event attribute, and within two edits of one of its attributes (one for names of four
+ * letters or fewer; none under three, where every short name is near another). Other unknown attributes are the
+ * page's own and are left alone. Each is reported with the attribute it most likely meant.
+ */
+export function misspeltAttributes(el: Element): Problem[] {
+  const known: readonly string[] = (el.constructor as { observedAttributes?: string[] }).observedAttributes ?? [];
+  const problems: Problem[] = [];
+  for (const { name, value } of el.attributes) {
+    if (known.includes(name) || GLOBAL_ATTRIBUTES.has(name) || /^(data-|aria-|on)/.test(name) || name.length < 3) continue;
+    let best = '';
+    let bestDistance = Infinity;
+    for (const k of known) {
+      const d = editDistance(name, k);
+      if (d < bestDistance) [best, bestDistance] = [k, d];
+    }
+    if (bestDistance <= (name.length <= 4 ? 1 : 2)) problems.push({ attribute: name, value, message: `unknown attribute, ignored: did you mean ${best}?` });
+  }
+  return problems;
+}
+

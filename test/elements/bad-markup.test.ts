@@ -49,6 +49,31 @@ describe('<physics-scene> bad markup', () => {
     expect(errors.length).to.equal(4);
   });
 
+  it('reports misspelt attribute names with the one meant; the page\'s own attributes and globals are left alone', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="10" height="10" gravty="0 1" data-post="7" aria-label="Two crates" class="wide" title="t" my-widget="1"',
+      `<physics-circle id="ball" x="5" y="2" radus="1.5"></physics-circle>
+       <physics-box id="crate" x="3" y="2" width="1" heigth="2" frction="0.2" data-kind="crate" sound="thud"></physics-box>
+       <physics-joint a="ball" b="crate" typ="weld"></physics-joint>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    expect(errors.map((e) => [e.element.localName, e.attribute, e.value, e.message])).to.have.deep.members([
+      ['physics-scene', 'gravty', '0 1', 'unknown attribute, ignored: did you mean gravity?'],
+      ['physics-circle', 'radus', '1.5', 'unknown attribute, ignored: did you mean radius?'],
+      ['physics-box', 'heigth', '2', 'unknown attribute, ignored: did you mean height?'],
+      ['physics-box', 'frction', '0.2', 'unknown attribute, ignored: did you mean friction?'],
+      ['physics-joint', 'typ', 'weld', 'unknown attribute, ignored: did you mean type?'],
+    ]);
+    expect(warnings.length).to.equal(5);
+    expect(warnings.some((w) => w.includes('<physics-circle id="ball"> radus="1.5": unknown attribute, ignored: did you mean radius?'))).to.equal(true);
+    // They are ignored: the defaults hold and everything is simulated.
+    const d = await scene.diagnostics();
+    expect([d.bodyCount, d.linkCount]).to.deep.equal([2, 1]);
+  });
+
   it('reports coordinates beyond ±1e9 (x="1e12" on a box, a pin and a spring\'s length, a polygon point); the rest runs', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));

@@ -4,7 +4,7 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Bounds, KernelChoice } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
-import { Checker, numberAttribute, type Problem } from '../checks.js';
+import { Checker, misspeltAttributes, numberAttribute, type Problem } from '../checks.js';
 
 /** The scene properties the configuration is read from (as set: unchecked). */
 export interface SceneAttributes {
@@ -159,7 +159,7 @@ export class ConfigController implements ReactiveController {
   read(): SceneConfig {
     const { config, problems } = readConfig(this.host);
     this.current = config;
-    this.options.problems.set('config', this.host, problems);
+    this.options.problems.set('config', this.host, [...problems, ...misspeltAttributes(this.host)]);
     return config;
   }
 

@@ -6,7 +6,7 @@ import type { BodyDescription } from '../../engine/index.js';
 import type { BodyStyle } from '../../render/renderer.js';
 import type { KeyedBody, KeyedLink, LinkDescription } from '../../worker/protocol.js';
 import { PhysicsBodyElement } from '../body-element.js';
-import { Checker, type Problem } from '../checks.js';
+import { Checker, editDistance, misspeltAttributes, type Problem } from '../checks.js';
 import { PhysicsLinkElement } from '../link-element.js';
 import type { SceneHost } from '../scene-host.js';
 import type { EngineCommands } from './session.js';
@@ -24,17 +24,6 @@ const KNOWN_TAGS = [...BODY_TAGS, ...LINK_TAGS];
  * `slot`).
  */
 const NOT_A_MISTAKE = new Set(['template', 'script', 'style', 'noscript', 'img', 'picture']);
-
-/** Levenshtein distance: single-character insertions, deletions and substitutions. */
-function editDistance(a: string, b: string): number {
-  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
-  for (let i = 1; i <= a.length; i++) {
-    const next = [i];
-    for (let j = 1; j <= b.length; j++) next.push(Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1)));
-    row = next;
-  }
-  return row[b.length];
-}
 
 /**
  * Other words for the known bodies and links, without the prefix: `<physics-ball>` means a circle, though its nearest
@@ -289,7 +278,7 @@ export class MarkupSync implements SceneHost {
     const { desc, problems } = el.describe();
     const check = new Checker(el);
     const style = el.styleOf(check);
-    this.options.problems.set(el, el, [...problems, ...check.problems]);
+    this.options.problems.set(el, el, [...problems, ...check.problems, ...misspeltAttributes(el)]);
     this.options.styles.setStyle(key, style);
     entry.sent = desc ? JSON.stringify(desc) : '';
     return desc;
@@ -299,7 +288,7 @@ export class MarkupSync implements SceneHost {
     const entry = this.entries.get(key)!;
     const el = entry.element as PhysicsLinkElement;
     const { desc, problems } = el.describe((id) => this.resolve(id));
-    this.options.problems.set(el, el, problems);
+    this.options.problems.set(el, el, [...problems, ...misspeltAttributes(el)]);
     entry.sent = desc ? JSON.stringify(desc) : '';
     return desc;
   }

@@ -82,11 +82,12 @@ export const sceneStyles = css`
   .error[hidden] {
     display: none;
   }
+  /* At the top, where a scene is mostly empty (bodies fall and rest on a floor at the bottom). */
   .error {
     position: absolute;
     left: 6px;
     right: 6px;
-    bottom: 6px;
+    top: 6px;
     max-height: 45%;
     overflow: auto;
     padding: 4px 8px;
