@@ -35,7 +35,7 @@ const check = checker();
 const lib = resolve(root, 'dist/lib');
 const workerFile = readdirSync(lib)
   .filter((f) => f.endsWith('.js'))
-  .map((f) => /new URL\(\s*["'](engine\.worker-[\w-]+\.js)["']/.exec(readFileSync(resolve(lib, f), 'utf8'))?.[1])
+  .map((f) => /new URL\(\s*["'](?:\.\/)?(engine\.worker-[\w-]+\.js)["']/.exec(readFileSync(resolve(lib, f), 'utf8'))?.[1])
   .find(Boolean);
 if (!workerFile) throw new Error('dist/lib has no worker chunk: run npm run build');
 const appId = '\0app';
