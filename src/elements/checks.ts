@@ -1,6 +1,6 @@
 // Attribute checks for the elements: a bad value is recorded as a problem naming the attribute and the value as
 // written in the markup, and a fallback is used, so bad markup never throws.
-import { MAX_WORLD_COORDINATE } from '../engine/validate.js';
+import { editDistance, MAX_WORLD_COORDINATE } from '../engine/validate.js';
 
 /** A rejected attribute value. */
 export interface Problem {
@@ -157,16 +157,7 @@ export function describeElement(el: Element): string {
 export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;
 
-/** Levenshtein distance: single-character insertions, deletions and substitutions. */
-export function editDistance(a: string, b: string): number {
-  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
-  for (let i = 1; i <= a.length; i++) {
-    const next = [i];
-    for (let j = 1; j <= b.length; j++) next.push(Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1)));
-    row = next;
-  }
-  return row[b.length];
-}
+export { editDistance };
 
 /** Attributes any element may carry (HTML's global attributes that a page puts on an embed). */
 const GLOBAL_ATTRIBUTES = new Set([

@@ -3,7 +3,7 @@
 import type { Bounds } from './bounds.js';
 import { INTEGRATORS, type Integrator } from './integrate.js';
 import { checkBounds, type SubstepChoice, type Vec2, type WorldOptions } from './options.js';
-import { finite, integer, nonNegative, oneOf, positive } from './validate.js';
+import { describeValue, finite, integer, nonNegative, oneOf, positive } from './validate.js';
 
 /** See WorldOptions for what each setting does. */
 export interface StepSettings {
@@ -48,7 +48,7 @@ export const NARROW_PHASES = ['sat', 'gjk'] as const;
 export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K]) => StepSettings[K] } = {
   gravity: (g) => ({ x: finite('gravity.x', g?.x), y: finite('gravity.y', g?.y) }),
   timestep: (v) => positive('timestep', v),
-  substeps: (v) => (v === 'auto' ? 'auto' : integer('substeps', v, 1, 1000)),
+  substeps: (v) => (v === 'auto' ? 'auto' : substepCountOption(v)),
   iterations: (v) => integer('iterations', v, 1, 1000),
   damping: (v) => nonNegative('damping', v),
   integrator: (v) => oneOf('integrator', v, INTEGRATORS),
@@ -59,6 +59,16 @@ export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K
   contactSlop: (v) => nonNegative('contactSlop', v),
   maxPushSpeed: (v) => positive('maxPushSpeed', v),
 };
+
+/** `substeps` when not 'auto': a whole number from 1 to 1000 (the error says 'auto' is allowed too). */
+function substepCountOption(v: unknown): number {
+  const ok = typeof v === 'number' && Number.isInteger(v) && v >= 1 && v <= 1000;
+  if (!ok) {
+    const error = typeof v === 'number' ? RangeError : TypeError;
+    throw new error(`substeps must be 'auto' or a whole number from 1 to 1000, got ${describeValue(v)}`);
+  }
+  return v;
+}
 
 const NAMES = Object.keys(CHECK) as (keyof StepSettings)[];
 

@@ -81,3 +81,33 @@ export function oneOf<T extends string>(name: string, value: unknown, allowed: r
 }
 
 export { show as describeValue };
+
+/** Levenshtein distance: single-character insertions, deletions and substitutions. */
+export function editDistance(a: string, b: string): number {
+  let row = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const next = [i];
+    for (let j = 1; j <= b.length; j++) next.push(Math.min(row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1)));
+    row = next;
+  }
+  return row[b.length];
+}
+
+/**
+ * Throws a TypeError for the first key of `options` that is not in `known` (`what` names the object: "World option"),
+ * with the known name it most likely meant when one is within two edits. Plain JS has no type check to catch
+ * `{ substepz: 3 }`, which would otherwise be ignored in silence.
+ */
+export function knownOptions(what: string, options: object, known: readonly string[]): void {
+  for (const name of Object.keys(options)) {
+    if (known.includes(name)) continue;
+    let best = '';
+    let bestDistance = Infinity;
+    for (const k of known) {
+      const d = editDistance(name, k);
+      if (d < bestDistance) [best, bestDistance] = [k, d];
+    }
+    const hint = bestDistance <= 2 ? ` (did you mean ${best}?)` : '';
+    throw new TypeError(`unknown ${what} ${JSON.stringify(name)}${hint}: the ${what}s are ${known.join(', ')}`);
+  }
+}

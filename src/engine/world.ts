@@ -32,7 +32,7 @@ import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { coordinate, finite, integer, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
+import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -42,6 +42,12 @@ export type { Vec2, WorldOptions, Limits, GrabOptions, RayCastHit, ColliderOptio
 export type { RigidBodyOptions, Pose, MassInfo, JointOptions, JointType } from './options.js';
 export type { DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions, BodyKind, ConstraintKind } from './options.js';
 export { BODY_KINDS, COLLIDER_SHAPES, DEFAULT_LIMITS } from './options.js';
+
+/** The longest step World.step() takes, in seconds: its substeps would be too long for any contact or link to hold. */
+export const MAX_STEP_SECONDS = 1;
+
+/** The names `new World(options)` takes: the settings, their limits and the solver kernel. */
+const WORLD_OPTIONS = [...Object.keys(DEFAULTS), 'limits', 'kernel'];
 
 /**
  * The headless engine: Verlet particles, constraints relaxed by Gauss–Seidel (XPBD) iterations inside substeps,
@@ -56,6 +62,10 @@ export class World {
   private readonly ctx: StepContext;
 
   constructor(options: WorldOptions & KernelOptions = {}) {
+    if (typeof options !== 'object') throw new TypeError(`options must be an object, got ${describeValue(options)}`);
+    options ??= {};
+    knownOptions('World option', options, WORLD_OPTIONS);
+    if (options.limits != null) knownOptions('limits option', options.limits, Object.keys(DEFAULT_LIMITS));
     const o = { ...DEFAULTS, ...options };
     const settings = checkedSettings(o);
     const ctx = new StepContext(settings, makeBroadPhase(oneOf('broadphase', o.broadphase, BROAD_PHASES), nonNegative('cellSize', o.cellSize)), options.kernel);
@@ -680,9 +690,16 @@ export class World {
 
   // ---- time --------------------------------------------------------------------------------------------------
 
-  /** One step of `dt` seconds (the fixed timestep by default), in `substepCount` substeps (see pipeline/step.ts). */
+  /**
+   * One step of `dt` seconds (the fixed timestep by default), in `substepCount` substeps (see pipeline/step.ts). For
+   * n steps, call it n times (an element's `step(n)` counts steps; this one takes a length, so `step(60)` would be one
+   * step of a minute: refused, as any step longer than MAX_STEP_SECONDS).
+   */
   step(dt: number = this.settings.timestep): void {
-    if (dt !== this.settings.timestep) positive('dt', dt);
+    if (dt !== this.settings.timestep) {
+      positive('dt', dt);
+      if (dt > MAX_STEP_SECONDS) throw new RangeError(`dt is one step's length in seconds, at most ${MAX_STEP_SECONDS}, got ${describeValue(dt)}: for n steps, call step() n times`);
+    }
     step(this.ctx, dt);
   }
 

@@ -35,6 +35,28 @@ describe('bad input', () => {
     throwsNaming(() => new World({ bounds: { minX: 1, minY: 0, maxX: 0, maxY: 1 } }), RangeError, 'minX < maxX');
   });
 
+  it('a misspelt or unknown World option throws naming it and the one meant; a step of a minute is refused', () => {
+    throwsNaming(() => new World({ substepz: 3 } as never), TypeError, 'unknown World option "substepz"', 'did you mean substeps?');
+    throwsNaming(() => new World({ gravty: { x: 0, y: 1 } } as never), TypeError, '"gravty"', 'did you mean gravity?');
+    throwsNaming(() => new World({ limits: { particle: 5 } } as never), TypeError, 'unknown limits option "particle"', 'did you mean particles?');
+    // Far from every name: no guess, the list of names.
+    throwsNaming(() => new World({ speed: 2 } as never), TypeError, '"speed"', 'the World options are gravity, timestep, substeps');
+    throwsNaming(() => new World(5 as never), TypeError, 'options', '5');
+    // The error for a bad substep count names both forms it takes.
+    throwsNaming(() => new World({ substeps: 'many' as never }), TypeError, "substeps must be 'auto' or a whole number from 1 to 1000", '"many"');
+    // World.step takes a length: step(60), written as an element's step(60) (sixty steps), would be one 60 s step.
+    const w = new World();
+    const p = w.addParticle({ x: 0, y: 0 });
+    throwsNaming(() => w.step(60), RangeError, 'dt', 'at most 1', '60', 'call step() n times');
+    w.step(1);
+    expect(w.time).to.equal(1);
+    expect(allFinite(w)).to.equal(true);
+    expect(w.particles.y[w.particleIndex(p)]).to.be.above(0);
+    // Every name the options type has is accepted, and no options at all.
+    expect(() => new World({ gravity: { x: 0, y: 1 }, timestep: 1 / 30, substeps: 'auto', iterations: 2, damping: 0, sleeping: true, kernel: 'js', limits: { particles: 10 } })).not.to.throw();
+    expect(() => new World(undefined)).not.to.throw();
+  });
+
   it('negative mass, length, radius or stiffness throw', () => {
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: -1 }), RangeError, 'mass', '-1');
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: 0 }), RangeError, 'mass', '0');
