@@ -105,8 +105,9 @@ function worker({ inline = false } = {}) {
       return { code: out + code.slice(last), map: null };
     },
     // The emitted chunk's address written as `new URL('./…', import.meta.url)`, a URL the Worker takes as it is, not
-    // Rollup's default `new URL('…', import.meta.url).href`: an app's bundler (Vite, webpack 5, Parcel) bundles a
-    // worker only when it sees exactly `new Worker(new URL('./…', import.meta.url))`.
+    // Rollup's default `new URL('…', import.meta.url).href`: webpack 5 bundles a worker only when it sees exactly
+    // `new Worker(new URL('./…', import.meta.url))` (with `.href` it copied the file, whose bare `comlink` import
+    // cannot load; Vite took both). test/e2e/bundlers.mjs builds apps with both.
     resolveFileUrl({ relativePath, format }) {
       if (inline || format !== 'es') return null;
       const path = relativePath.startsWith('.') ? relativePath : `./${relativePath}`;

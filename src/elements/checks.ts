@@ -157,8 +157,6 @@ export function describeElement(el: Element): string {
 export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;
 
-export { editDistance };
-
 /** Attributes any element may carry (HTML's global attributes that a page puts on an embed). */
 const GLOBAL_ATTRIBUTES = new Set([
   'id', 'class', 'style', 'slot', 'title', 'hidden', 'lang', 'dir', 'tabindex', 'role', 'part', 'exportparts', 'is',
