@@ -1,6 +1,6 @@
 // Attribute checks for the elements: a bad value is recorded as a problem naming the attribute and the value as
 // written in the markup, and a fallback is used, so bad markup never throws.
-import { editDistance, MAX_WORLD_COORDINATE } from '../engine/validate.js';
+import { MAX_WORLD_COORDINATE, nearestName } from '../engine/validate.js';
 
 /** A rejected attribute value. */
 export interface Problem {
@@ -175,13 +175,8 @@ export function misspeltAttributes(el: Element): Problem[] {
   const problems: Problem[] = [];
   for (const { name, value } of el.attributes) {
     if (known.includes(name) || GLOBAL_ATTRIBUTES.has(name) || /^(data-|aria-|on)/.test(name) || name.length < 3) continue;
-    let best = '';
-    let bestDistance = Infinity;
-    for (const k of known) {
-      const d = editDistance(name, k);
-      if (d < bestDistance) [best, bestDistance] = [k, d];
-    }
-    if (bestDistance <= (name.length <= 4 ? 1 : 2)) problems.push({ attribute: name, value, message: `unknown attribute, ignored: did you mean ${best}?` });
+    const { nearest, distance } = nearestName(name, known);
+    if (distance <= (name.length <= 4 ? 1 : 2)) problems.push({ attribute: name, value, message: `unknown attribute, ignored: did you mean ${nearest}?` });
   }
   return problems;
 }

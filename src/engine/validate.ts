@@ -93,6 +93,17 @@ export function editDistance(a: string, b: string): number {
   return row[b.length];
 }
 
+/** The name among `names` nearest to `name` by edit distance, and that distance ('' and Infinity for no names). */
+export function nearestName(name: string, names: Iterable<string>): { nearest: string; distance: number } {
+  let nearest = '';
+  let distance = Infinity;
+  for (const candidate of names) {
+    const d = editDistance(name, candidate);
+    if (d < distance) [nearest, distance] = [candidate, d];
+  }
+  return { nearest, distance };
+}
+
 /**
  * Throws a TypeError for the first key of `options` that is not in `known` (`what` names the object: "World option"),
  * with the known name it most likely meant when one is within two edits. Plain JS has no type check to catch
@@ -101,13 +112,8 @@ export function editDistance(a: string, b: string): number {
 export function knownOptions(what: string, options: object, known: readonly string[]): void {
   for (const name of Object.keys(options)) {
     if (known.includes(name)) continue;
-    let best = '';
-    let bestDistance = Infinity;
-    for (const k of known) {
-      const d = editDistance(name, k);
-      if (d < bestDistance) [best, bestDistance] = [k, d];
-    }
-    const hint = bestDistance <= 2 ? ` (did you mean ${best}?)` : '';
+    const { nearest, distance } = nearestName(name, known);
+    const hint = distance <= 2 ? ` (did you mean ${nearest}?)` : '';
     throw new TypeError(`unknown ${what} ${JSON.stringify(name)}${hint}: the ${what}s are ${known.join(', ')}`);
   }
 }

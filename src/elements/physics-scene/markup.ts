@@ -6,7 +6,7 @@ import type { BodyDescription } from '../../engine/index.js';
 import type { BodyStyle } from '../../render/renderer.js';
 import type { KeyedBody, KeyedLink, LinkDescription } from '../../worker/protocol.js';
 import { PhysicsBodyElement } from '../body-element.js';
-import { editDistance } from '../../engine/validate.js';
+import { nearestName } from '../../engine/validate.js';
 import { Checker, misspeltAttributes, type Problem } from '../checks.js';
 import { PhysicsLinkElement } from '../link-element.js';
 import type { SceneHost } from '../scene-host.js';
@@ -66,12 +66,7 @@ export function unknownChildMessage(tag: string): string {
   const name = prefixed ? tag : `physics-${tag}`;
   const synonym = SYNONYMS[name.slice('physics-'.length)];
   if (synonym !== undefined && customElements.get(tag) === undefined) return `unknown element, ignored: did you mean <${synonym}>?`;
-  let best = '';
-  let bestDistance = Infinity;
-  for (const known of KNOWN_TAGS) {
-    const d = editDistance(name, known);
-    if (d < bestDistance) [best, bestDistance] = [known, d];
-  }
+  const { nearest: best, distance: bestDistance } = nearestName(name, KNOWN_TAGS);
   const close = prefixed || bestDistance <= Math.max(1, Math.floor(tag.length / 3));
   const list = (tags: string[]) => tags.map((t) => `<${t}>`).join(', ');
   const known = `bodies are ${list(BODY_TAGS)}; links are ${list(LINK_TAGS)}`;
