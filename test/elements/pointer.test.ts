@@ -2,7 +2,7 @@
 // release, drag a cloth and a soft body. The outcome depends on the steps taken, never on how fast the machine runs.
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsSceneElement } from '../../src/index.js';
-import { drawn, mount, pointerAt, steppedDrag, unmount } from './helpers.js';
+import { drawn, mount, pointerAt, simulated, steppedDrag, unmount, waitFor } from './helpers.js';
 
 describe('<physics-scene> pointer drag', () => {
   let scene: PhysicsSceneElement | null = null;
@@ -82,4 +82,49 @@ describe('<physics-scene> pointer drag', () => {
     // its radius of the drag's line (x 4.55 with the JS kernel, 5.68 with the WebAssembly one, whose sweep order differs).
     expect(blob.x).to.be.closeTo(5, 1);
   });
+  // Slides scaled to fit the window (reveal.js and the like scale with a transform) and CSS zoom: pointer events come
+  // in viewport pixels, which are not the canvas's own CSS pixels there. The press is placed by where the body is seen
+  // on screen (its share of the canvas's on-screen box), not by worldToClient.
+  for (const [scaling, pointerType] of [['transform: scale(0.5); transform-origin: 0 0', 'mouse'], ['zoom: 0.5', 'mouse'], ['transform: scale(0.5); transform-origin: 0 0', 'touch']]) {
+    it(`drags the body under the ${pointerType} in a scene scaled by the page (${scaling.split(':')[0]})`, async () => {
+      scene = await mount('width="10" height="10" gravity="0 0" bounds="none" paused', `<physics-box id="crate" x="3" y="5" width="1" height="1"></physics-box><physics-box id="other" x="1.5" y="2.5" width="1" height="1"></physics-box>`);
+      scene.parentElement!.style.cssText += scaling;
+      await waitFor(() => scene!.canvas !== null, 'the canvas');
+      const crate = scene.querySelector<PhysicsBoxElement>('#crate')!;
+      const other = scene.querySelector<PhysicsBoxElement>('#other')!;
+      // A touch takes a body it sees drawn (the hit test reads the drawn outlines).
+      await simulated(scene, crate);
+      await drawn(scene);
+      const seen = (x: number, y: number) => {
+        const r = scene!.canvas!.getBoundingClientRect();
+        return { x: r.left + (x / 10) * r.width, y: r.top + (y / 10) * r.height };
+      };
+      expect(scene.canvas!.getBoundingClientRect().width, 'on screen').to.be.closeTo(200, 1);
+      const mapped = scene.worldToClient(3, 5);
+      expect(mapped.x).to.be.closeTo(seen(3, 5).x, 0.5);
+      expect(mapped.y).to.be.closeTo(seen(3, 5).y, 0.5);
+      const world = scene.clientToWorld(seen(7, 5).x, seen(7, 5).y);
+      expect(world.x).to.be.closeTo(7, 1e-6);
+      expect(world.y).to.be.closeTo(5, 1e-6);
+      const press = (type: string, x: number, y: number) => {
+        const p = seen(x, y);
+        const init = { clientX: p.x, clientY: p.y, pointerId: 9, pointerType, isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 };
+        scene!.canvas!.dispatchEvent(new PointerEvent(type, { ...init, bubbles: true, composed: true, cancelable: true }));
+      };
+      press('pointerdown', 3, 5);
+      await scene.step(1);
+      for (let k = 1; k <= 10; k++) {
+        press('pointermove', 3 + 0.4 * k, 5);
+        await scene.step(2);
+      }
+      await scene.step(30);
+      press('pointerup', 7, 5);
+      // The crate was held at its centre and follows the pointer to (7, 5); the box where the unscaled mapping would
+      // have pressed (half-way to the origin: (1.5, 2.5)) stays where it was.
+      expect(crate.x).to.be.closeTo(7, 0.1);
+      expect(crate.y).to.be.closeTo(5, 0.1);
+      expect(other.x).to.be.closeTo(1.5, 1e-6);
+      expect(other.y).to.be.closeTo(2.5, 1e-6);
+    });
+  }
 });

@@ -223,7 +223,7 @@ export class PhysicsSceneElement extends LitElement {
     hit: (x, y) => {
       const p = this.stage.clientToCanvas(x, y);
       const on = this.outlines.bodyAt(p.x, p.y, TOUCH_SLOP, (body) => this.movable(body));
-      return on && { x: x + on.x - p.x, y: y + on.y - p.y };
+      return on && this.stage.canvasToClient(on.x, on.y);
     },
   });
   /** @internal Pick, push and reset with the keyboard. */

@@ -123,24 +123,43 @@ export class StageController implements ReactiveController {
   clientToCanvas(x: number, y: number): { x: number; y: number } {
     const canvas = this.canvas;
     if (!canvas) return { x: NaN, y: NaN };
-    const r = canvas.getBoundingClientRect();
-    return { x: x - r.left, y: y - r.top };
+    const { left, top, scaleX, scaleY } = onScreen(canvas);
+    return { x: (x - left) / scaleX, y: (y - top) / scaleY };
+  }
+
+  /** A point in canvas CSS pixels in viewport (client) coordinates; NaN without a canvas. */
+  canvasToClient(x: number, y: number): { x: number; y: number } {
+    const canvas = this.canvas;
+    if (!canvas) return { x: NaN, y: NaN };
+    const { left, top, scaleX, scaleY } = onScreen(canvas);
+    return { x: left + x * scaleX, y: top + y * scaleY };
   }
 
   /** A world point in viewport (client) coordinates; NaN without a canvas. */
   worldToClient(x: number, y: number): { x: number; y: number } {
     const canvas = this.canvas;
     if (!this.renderer || !canvas) return { x: NaN, y: NaN };
-    const r = canvas.getBoundingClientRect();
     const p = this.renderer.worldToCanvas(x, y);
-    return { x: r.left + p.x, y: r.top + p.y };
+    return this.canvasToClient(p.x, p.y);
   }
 
   /** A viewport point in world units; NaN without a canvas. */
   clientToWorld(x: number, y: number): { x: number; y: number } {
     const canvas = this.canvas;
     if (!this.renderer || !canvas) return { x: NaN, y: NaN };
-    const r = canvas.getBoundingClientRect();
-    return this.renderer.canvasToWorld(x - r.left, y - r.top);
+    const c = this.clientToCanvas(x, y);
+    return this.renderer.canvasToWorld(c.x, c.y);
   }
+}
+
+/**
+ * Where the canvas is on screen: its top-left corner in viewport pixels and viewport pixels per CSS pixel of its own
+ * layout. They differ from 1 when a page scales the scene (slides scaled to fit the window with `transform: scale()`,
+ * CSS `zoom`): pointer events come in viewport pixels, the view is drawn in the canvas's CSS pixels.
+ */
+function onScreen(canvas: HTMLCanvasElement): { left: number; top: number; scaleX: number; scaleY: number } {
+  const r = canvas.getBoundingClientRect();
+  const w = canvas.clientWidth;
+  const h = canvas.clientHeight;
+  return { left: r.left, top: r.top, scaleX: w > 0 && r.width > 0 ? r.width / w : 1, scaleY: h > 0 && r.height > 0 ? r.height / h : 1 };
 }
