@@ -74,6 +74,22 @@ describe('<physics-scene> bad markup', () => {
     expect([d.bodyCount, d.linkCount]).to.deep.equal([2, 1]);
   });
 
+  it('on a right-to-left page the messages read left to right, marked as English, and the page stays right to left', async () => {
+    console.warn = () => {};
+    scene = await mount('width="10" height="10"', `<physics-box x="3" y="2" width="1" wdth="3"></physics-box>`, { ready: false });
+    const page = scene.parentElement!;
+    page.dir = 'rtl';
+    page.lang = 'ar';
+    await scene.ready;
+    const box = scene.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
+    await waitFor(() => !box.hidden, 'the error box');
+    expect(box.textContent).to.include('<physics-box> wdth="3": unknown attribute');
+    // Unmarked, the box would take the page's direction and the bidi algorithm would move the leading "<" to the end.
+    expect(getComputedStyle(box).direction).to.equal('ltr');
+    expect(box.closest('[lang]')!.getAttribute('lang')).to.equal('en');
+    expect(getComputedStyle(scene).direction).to.equal('rtl');
+  });
+
   it('reports coordinates beyond ±1e9 (x="1e12" on a box, a pin and a spring\'s length, a polygon point); the rest runs', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));

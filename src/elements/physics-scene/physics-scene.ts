@@ -483,13 +483,13 @@ export class PhysicsSceneElement extends LitElement {
         @pointercancel=${this.pointer.up}
         @touchstart=${{ handleEvent: this.pointer.touchStart, passive: false }}
       ></div>
-      ${this.loading && !this.hasFallback ? html`<div class="status" part="status" role="status">Loading simulation…</div>` : nothing}
+      ${this.loading && !this.hasFallback ? html`<div class="status" part="status" role="status" lang="en" dir="ltr">Loading simulation…</div>` : nothing}
       <div class="ring" part="focus-ring" hidden></div>
-      <div class="announcer" aria-live="polite" aria-atomic="true"></div>
+      <div class="announcer" aria-live="polite" aria-atomic="true" lang="en"></div>
       ${this.visibility.playControl && this.paused
-        ? html`<button class="play" part="play-button" type="button" aria-label="Play the simulation" @click=${this.visibility.onPlayClick}>▶</button>`
+        ? html`<button class="play" part="play-button" type="button" lang="en" aria-label="Play the simulation" @click=${this.visibility.onPlayClick}>▶</button>`
         : nothing}
-      <div class="error" part="error" role="alert" hidden></div>
+      <div class="error" part="error" role="alert" lang="en" dir="ltr" hidden></div>
       ${this.renderBodies()}`;
   }
 
