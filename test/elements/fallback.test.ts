@@ -30,6 +30,24 @@ describe('<physics-scene> fallback content', () => {
     expect(scene.shadowRoot!.querySelector<HTMLElement>('.fallback')!.hidden).to.equal(true);
   });
 
+  it('the fallback does not blink out between the element\'s upgrade and its first render', async () => {
+    const page = document.createElement('div');
+    document.body.append(page);
+    // The script arrives after the markup: the tag upgrades with its shadow root, and renders a task later.
+    page.innerHTML = '<physics-scene style="display:block;aspect-ratio:16/9"><img slot="fallback" alt="A still" width="40" height="30"> A cloth in the wind.</physics-scene>';
+    scene = page.querySelector('physics-scene')!;
+    const img = scene.querySelector('img')!;
+    expect([scene.shadowRoot !== null, scene.hasUpdated]).to.deep.equal([true, false]);
+    expect(shown(img)).to.equal(true);
+    const text = document.createRange();
+    text.selectNodeContents(scene.lastChild!);
+    expect(text.getClientRects().length).to.be.above(0);
+    await scene.updateComplete;
+    expect([shown(img), scene.shadowRoot!.querySelectorAll('.fallback').length]).to.deep.equal([true, 1]);
+    await scene.ready;
+    await waitFor(() => !shown(img), 'the fallback hidden');
+  });
+
   it('text inside the tag is fallback too; without any, the loading message shows', async () => {
     scene = await mount('', 'A cloth in the wind. <physics-circle x="3" y="3" radius="1"></physics-circle>', { ready: false });
     await scene.updateComplete;

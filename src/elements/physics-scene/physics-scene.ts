@@ -434,6 +434,32 @@ export class PhysicsSceneElement extends LitElement {
     return new Promise<void>((resolve) => setTimeout(resolve, 0)).then(() => super.scheduleUpdate());
   }
 
+  /** What shows the fallback content between the shadow root's creation and the first render (createRenderRoot). */
+  private fallbackUntilRendered: HTMLElement | null = null;
+
+  /**
+   * The shadow root is attached when the element connects, but the first render waits a task (scheduleUpdate): an
+   * empty shadow root would hide the page's fallback content for a frame or two (an image blinking out as the script
+   * arrives). Until then the root holds the fallback box with its two slots, as render() writes it.
+   */
+  protected override createRenderRoot(): HTMLElement | DocumentFragment {
+    const root = super.createRenderRoot();
+    const box = document.createElement('div');
+    box.className = 'fallback';
+    box.append(document.createElement('slot'), document.createElement('slot'));
+    box.firstElementChild!.setAttribute('name', 'fallback');
+    root.append(box);
+    this.fallbackUntilRendered = box;
+    return root;
+  }
+
+  protected override update(changed: PropertyValues): void {
+    // Replaced by render()'s own fallback box in the same task: nothing is painted in between.
+    this.fallbackUntilRendered?.remove();
+    this.fallbackUntilRendered = null;
+    super.update(changed);
+  }
+
   override disconnectedCallback(): void {
     super.disconnectedCallback();
     // A move (disconnect then connect in the same task) keeps the running engine.
