@@ -5,6 +5,7 @@ import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import type { BodyStyle } from '../render/renderer.js';
 import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
+import type { ColourScheme } from './physics-scene/scheme.js';
 import type { SceneHost, SceneParent } from './scene-host.js';
 
 /**
@@ -130,12 +131,12 @@ export abstract class PhysicsBodyElement extends LitElement {
   /** The body as plain data for the engine, or null with problems when the markup cannot make one. @internal */
   abstract describe(): Described<BodyDescription>;
 
-  /** Default colours of this kind of body. */
-  protected abstract defaultStyle(): { fill: string | null; stroke: string | null };
+  /** Default colours of this kind of body on a page of this colour scheme. */
+  protected abstract defaultStyle(scheme: ColourScheme): { fill: string | null; stroke: string | null };
 
-  /** Drawing style from `fill` / `stroke`. @internal */
-  styleOf(check: Checker = new Checker(this)): BodyStyle {
-    const d = this.defaultStyle();
+  /** Drawing style from `fill` / `stroke`, the defaults those of the page's colour scheme. @internal */
+  styleOf(check: Checker = new Checker(this), scheme: ColourScheme = 'light'): BodyStyle {
+    const d = this.defaultStyle(scheme);
     const fallbackFill = this.isStatic && d.fill ? '#8a8f98' : d.fill;
     return {
       fill: check.color('fill', this.fill, fallbackFill),

@@ -2,6 +2,7 @@ import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
 import { Checker, numberAttribute } from './checks.js';
+import { SCHEME_COLOURS, type ColourScheme } from './physics-scene/scheme.js';
 
 /**
  * A stick-figure ragdoll whose pelvis is at `x`, `y`: bones as sticks, joints with angle limits.
@@ -31,8 +32,8 @@ export class PhysicsRagdollElement extends PhysicsBodyElement {
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 
-  protected defaultStyle() {
-    return { fill: null, stroke: '#333a44' };
+  protected defaultStyle(scheme: ColourScheme) {
+    return { fill: null, stroke: SCHEME_COLOURS[scheme].ragdoll };
   }
 }
 

@@ -2,6 +2,7 @@ import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
 import { Checker, numberAttribute } from './checks.js';
+import { SCHEME_COLOURS, type ColourScheme } from './physics-scene/scheme.js';
 
 /**
  * A rope (or, with `rigid`, a chain of sticks) from (`x1`, `y1`) to (`x2`, `y2`). `x`, `y` read its live centroid.
@@ -44,8 +45,8 @@ export class PhysicsRopeElement extends PhysicsBodyElement {
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 
-  protected defaultStyle() {
-    return { fill: null, stroke: '#8e5a2b' };
+  protected defaultStyle(scheme: ColourScheme) {
+    return { fill: null, stroke: SCHEME_COLOURS[scheme].rope };
   }
 }
 

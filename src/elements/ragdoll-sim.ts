@@ -59,7 +59,7 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
    * value but "off" or "false"); `respawn="off"` lets them lie.
    */
   @property({ converter: respawnAttribute }) respawn = true;
-  /** Ragdoll line colour (CSS colour). Default "#333a44". */
+  /** Ragdoll line colour (CSS colour). Default "#333a44", or "#d3d8e0" on a page whose colour scheme is dark. */
   @property() stroke?: string;
   /** Obstacle fill colour (CSS colour). Default "#8a8f98". */
   @property({ attribute: 'obstacle-fill' }) obstacleFill?: string;

@@ -5,6 +5,7 @@ import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Bounds, KernelChoice } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
 import { Checker, misspeltAttributes, numberAttribute, type Problem } from '../checks.js';
+import { SCHEME_COLOURS, type ColourScheme } from './scheme.js';
 
 /** The scene properties the configuration is read from (as set: unchecked). */
 export interface SceneAttributes {
@@ -18,7 +19,7 @@ export interface SceneAttributes {
   broadphase: string;
   narrowphase: string;
   bounds: string;
-  background: string;
+  background?: string;
   worker: string;
   kernel: string;
   maxRestarts: number;
@@ -58,8 +59,11 @@ export interface SceneConfig {
 /** The engine's kernel choices (engine/kernel/choice.ts), listed here so the element layer imports no engine code. */
 const KERNELS: readonly KernelChoice[] = ['auto', 'wasm', 'js'];
 
-/** Reads and checks the scene's attributes, in the order their problems are reported. @internal */
-export function readConfig(scene: Element & SceneAttributes): { config: SceneConfig; problems: Problem[] } {
+/**
+ * Reads and checks the scene's attributes, in the order their problems are reported; without a `background`, the
+ * canvas takes the default of the page's colour scheme. @internal
+ */
+export function readConfig(scene: Element & SceneAttributes, scheme: ColourScheme = 'light'): { config: SceneConfig; problems: Problem[] } {
   const check = new Checker(scene);
   const config: SceneConfig = {
     width: check.number('width', scene.width, { positive: true, fallback: 16 })!,
@@ -75,7 +79,7 @@ export function readConfig(scene: Element & SceneAttributes): { config: SceneCon
     kernel: check.oneOf('kernel', scene.kernel, KERNELS, 'auto'),
     maxRestarts: check.number('max-restarts', scene.maxRestarts, { integer: true, min: 0, max: 100, fallback: 3 })!,
     drawMode: check.oneOf('draw-mode', scene.drawMode, ['over', 'replace'] as const, 'over'),
-    background: check.color('background', scene.background, '#f7f5f0') ?? 'transparent',
+    background: check.color('background', scene.background, SCHEME_COLOURS[scheme].background) ?? 'transparent',
   };
   return { config, problems: check.problems };
 }
@@ -130,6 +134,8 @@ export function changedParams(changed: Iterable<PropertyKey>, params: HostParams
 export interface ConfigOptions {
   /** Where the scene's problems go. */
   problems: { set(source: unknown, el: Element, problems: Problem[]): void };
+  /** The page's colour scheme, which decides the default background. */
+  scheme(): ColourScheme;
 }
 
 /** @internal */
@@ -157,7 +163,7 @@ export class ConfigController implements ReactiveController {
 
   /** Reads and checks the attributes now (problems reported once each; their lines put back in the error box). */
   read(): SceneConfig {
-    const { config, problems } = readConfig(this.host);
+    const { config, problems } = readConfig(this.host, this.options.scheme());
     this.current = config;
     this.options.problems.set('config', this.host, [...problems, ...misspeltAttributes(this.host)]);
     return config;

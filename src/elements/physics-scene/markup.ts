@@ -10,6 +10,7 @@ import { nearestName } from '../../engine/validate.js';
 import { Checker, misspeltAttributes, type Problem } from '../checks.js';
 import { PhysicsLinkElement } from '../link-element.js';
 import type { SceneHost } from '../scene-host.js';
+import type { ColourScheme } from './scheme.js';
 import type { EngineCommands } from './session.js';
 
 type Child = PhysicsBodyElement | PhysicsLinkElement;
@@ -91,6 +92,8 @@ export interface MarkupOptions {
   problems: { set(source: unknown, el: Element, problems: Problem[]): void; forget(source: unknown): void };
   /** How each body is drawn. */
   styles: { setStyle(key: number, style: BodyStyle): void; deleteStyle(key: number): void };
+  /** The page's colour scheme, which the bodies' default colours follow (light when not given). */
+  scheme?(): ColourScheme;
 }
 
 /** @internal */
@@ -116,6 +119,18 @@ export class MarkupSync implements SceneHost {
     for (const el of this.unknown) this.options.problems.forget(el);
     this.unknown.clear();
     this.keys = new WeakMap();
+  }
+
+  /** The page's colour scheme changed: every body's style again (its default colours may differ; its problems were
+   * reported when it was described). */
+  restyle(): void {
+    for (const [key, entry] of this.entries) {
+      if (entry.kind === 'body') this.options.styles.setStyle(key, (entry.element as PhysicsBodyElement).styleOf(new Checker(entry.element), this.scheme()));
+    }
+  }
+
+  private scheme(): ColourScheme {
+    return this.options.scheme?.() ?? 'light';
   }
 
   keyOf(el: Element): number | undefined {
@@ -273,7 +288,7 @@ export class MarkupSync implements SceneHost {
     const el = entry.element as PhysicsBodyElement;
     const { desc, problems } = el.describe();
     const check = new Checker(el);
-    const style = el.styleOf(check);
+    const style = el.styleOf(check, this.scheme());
     this.options.problems.set(el, el, [...problems, ...check.problems, ...misspeltAttributes(el)]);
     this.options.styles.setStyle(key, style);
     entry.sent = desc ? JSON.stringify(desc) : '';

@@ -17,6 +17,7 @@ import { BodyOutlines } from './outlines.js';
 import { PointerDragController } from './pointer.js';
 import { ProblemsController } from './problems.js';
 import { RecoveryController } from './recovery.js';
+import { ColourSchemeController, schemeProbe } from './scheme.js';
 import { EngineSession, startEngine, type Engine } from './session.js';
 import { StageController } from './stage.js';
 import { sceneStyles } from './styles.js';
@@ -111,8 +112,11 @@ export class PhysicsSceneElement extends LitElement {
   @property() narrowphase = 'sat';
   /** "view" (default): walls at the sides and bottom of the width × height box (open at the top); "none": unbounded. */
   @property() bounds = 'view';
-  /** Canvas background (CSS colour). Default "#f7f5f0". */
-  @property() background = '#f7f5f0';
+  /**
+   * Canvas background (CSS colour, or "none": transparent). Default "#f7f5f0", or "#1d2025" on a page whose colour
+   * scheme is dark (`color-scheme: dark`, or "light dark" for a reader who prefers dark): the default colours follow it.
+   */
+  @property() background?: string;
   /** "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. */
   @property() worker = 'auto';
   /**
@@ -178,8 +182,17 @@ export class PhysicsSceneElement extends LitElement {
     failed: (message) => this.problems.report(this, '', '', message),
     refused: (e) => this.problems.refused(e),
   });
+  /** @internal The page's colour scheme, which the default colours follow. */
+  private readonly colourScheme = new ColourSchemeController(this, {
+    probe: () => this.schemeProbe,
+    // Also called from hostUpdate, before the first render: requestUpdate() is then part of that update.
+    changed: () => {
+      this.requestUpdate();
+      this.markup.restyle();
+    },
+  });
   /** @internal The scene's attributes, checked once per update. */
-  private readonly settings = new ConfigController(this, { problems: this.problems });
+  private readonly settings = new ConfigController(this, { problems: this.problems, scheme: () => this.colourScheme.scheme });
   /** @internal The canvas. */
   private readonly stage = new StageController(this, {
     source: () => this.session.shown,
@@ -191,6 +204,7 @@ export class PhysicsSceneElement extends LitElement {
     engine: this.session,
     problems: this.problems,
     styles: this.stage,
+    scheme: () => this.colourScheme.scheme,
   });
   /** @internal Snapshots, the stall probe, restarts. */
   private readonly recovery: RecoveryController = new RecoveryController(this, {
@@ -436,6 +450,8 @@ export class PhysicsSceneElement extends LitElement {
 
   /** What shows the fallback content between the shadow root's creation and the first render (createRenderRoot). */
   private fallbackUntilRendered: HTMLElement | null = null;
+  /** Tells the page's colour scheme (scheme.ts); in the shadow root from its creation, beside what render() writes. */
+  private schemeProbe: HTMLElement | null = null;
 
   /**
    * The shadow root is attached when the element connects, but the first render waits a task (scheduleUpdate): an
@@ -450,6 +466,8 @@ export class PhysicsSceneElement extends LitElement {
     box.firstElementChild!.setAttribute('name', 'fallback');
     root.append(box);
     this.fallbackUntilRendered = box;
+    this.schemeProbe = schemeProbe();
+    root.append(this.schemeProbe);
     return root;
   }
 

@@ -5,8 +5,11 @@
 // script has run with the snippet's inline style (style="display:block;aspect-ratio:16/9" for a default scene, 16/10
 // for the presets; overflow:hidden too when the tag holds fallback content), which wins over these styles once
 // defined, so nothing moves when the element upgrades (scripts/measure-loading.mjs: layout shift 0 with it, 0.13
-// desktop / 0.16 phone without). Touch: panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
+// desktop / 0.16 phone without). Colours: each light one is followed by its light-dark() pair (ignored by browsers
+// without it), so the messages and the rings follow the page's colour scheme as the canvas does (scheme.ts). Touch:
+// panning and pinch-zoom stay the page's (pointer.ts decides which touches drag).
 import { css } from 'lit';
+import { schemeProbeStyles } from './scheme.js';
 
 /** @internal */
 export const sceneStyles = css`
@@ -27,6 +30,7 @@ export const sceneStyles = css`
   }
   :host(:focus-visible) {
     outline: 2px solid #2f6fb5;
+    outline-color: light-dark(#2f6fb5, #7fb0ee);
     outline-offset: 2px;
   }
   .stage {
@@ -57,6 +61,7 @@ export const sceneStyles = css`
     position: absolute;
     box-sizing: border-box;
     border: 2px solid #2f6fb5;
+    border-color: light-dark(#2f6fb5, #7fb0ee);
     border-radius: 6px;
     box-shadow: 0 0 0 2px #ffffffcc;
     pointer-events: none;
@@ -77,6 +82,7 @@ export const sceneStyles = css`
     justify-content: center;
     font: 14px/1.3 system-ui, sans-serif;
     color: #5b6270;
+    color: light-dark(#5b6270, #aeb5c0);
     pointer-events: none;
   }
   .error[hidden] {
@@ -92,9 +98,12 @@ export const sceneStyles = css`
     overflow: auto;
     padding: 4px 8px;
     border: 1px solid #e0a090;
+    border-color: light-dark(#e0a090, #9a5447);
     border-radius: 4px;
     background: #fff3efee;
+    background: light-dark(#fff3efee, #3a1e1aee);
     color: #8a1c0c;
+    color: light-dark(#8a1c0c, #ffc4b8);
     font: 12px/1.35 system-ui, sans-serif;
     white-space: pre-wrap;
     overflow-wrap: anywhere;
@@ -118,6 +127,7 @@ export const sceneStyles = css`
     outline: 3px solid #fff;
     outline-offset: -6px;
   }
+  ${schemeProbeStyles}
   /* Body and link elements (the default slot) are never shown; fallback elements keep their own display. */
   slot:not([name])::slotted(*) {
     display: none;
