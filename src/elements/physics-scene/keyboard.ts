@@ -1,6 +1,7 @@
 // The keyboard alternative to dragging, while the scene itself has focus: Tab and Shift+Tab pick the bodies one by one
 // (after the last, Tab leaves the scene as usual; before the first, Shift+Tab comes back to the scene), the arrow keys
-// push the picked body (with nothing picked, an arrow key picks the first), Escape lets go of it, R resets the scene.
+// push the picked body (with nothing picked, an arrow key picks the first), Escape lets go of it and the Tab after it
+// leaves the scene (a scene of many bodies is two keys to pass, not one per body), R resets the scene.
 // A ring drawn over the canvas (a DOM overlay placed from the body's box in the newest frame) shows the picked body,
 // and a live region tells screen readers ("Picked box 2 of 5", "Reset"). Space (pause) is the visibility
 // controller's.
@@ -35,6 +36,8 @@ const ARROWS: Record<string, [number, number]> = { ArrowLeft: [-1, 0], ArrowRigh
 /** @internal */
 export class KeyboardController implements ReactiveController {
   private pickedKey: number | null = null;
+  /** Escape let go of the bodies: the next Tab leaves the scene instead of picking the first again. */
+  private letGo = false;
   private frame = 0;
 
   constructor(
@@ -54,7 +57,7 @@ export class KeyboardController implements ReactiveController {
   hostConnected(): void {
     const host = this.host;
     if (!host.hasAttribute('aria-description') && !host.hasAttribute('aria-describedby')) {
-      host.setAttribute('aria-description', 'Tab picks a body, arrow keys push it, R resets, Space pauses');
+      host.setAttribute('aria-description', 'Tab picks a body, arrow keys push it, Escape then Tab leaves, R resets, Space pauses');
     }
   }
 
@@ -62,8 +65,9 @@ export class KeyboardController implements ReactiveController {
     this.cancel();
   }
 
-  /** Forgets the picked body (the engine that had it stopped), silently. */
+  /** Forgets the picked body (the engine that had it stopped, or focus left the scene), silently. */
   cancel(): void {
+    this.letGo = false;
     this.pick(null, false);
   }
 
@@ -125,9 +129,12 @@ export class KeyboardController implements ReactiveController {
     if (e.composedPath()[0] !== this.host || e.altKey || e.ctrlKey || e.metaKey) return;
     const bodies = this.options.bodies();
     const at = this.pickedKey === null ? -1 : bodies.findIndex((b) => b.key === this.pickedKey);
+    const letGo = this.letGo;
+    this.letGo = false;
     if (e.key === 'Tab') {
-      // The scene, then each body, in the page's tab order: past the last body (or back before the scene) Tab leaves.
-      const next = e.shiftKey ? (at < 0 ? -2 : at - 1) : at + 1;
+      // The scene, then each body, in the page's tab order: past the last body (or back before the scene) Tab leaves;
+      // so does Tab after Escape.
+      const next = e.shiftKey ? (at < 0 ? -2 : at - 1) : letGo && at < 0 ? bodies.length : at + 1;
       if (next < -1 || next >= bodies.length) {
         this.pick(null, false);
         return;
@@ -144,6 +151,7 @@ export class KeyboardController implements ReactiveController {
       if (at < 0) this.pick(bodies[0].key, true);
       else this.options.push(bodies[at].key, arrow[0], arrow[1]);
     } else if (e.key === 'Escape') {
+      this.letGo = true;
       if (at < 0) return;
       e.preventDefault();
       this.pick(null, true);

@@ -41,7 +41,7 @@ describe('KeyboardController', () => {
     const r = rig();
     host = r.host;
     document.body.append(host);
-    expect(host.getAttribute('aria-description')).to.equal('Tab picks a body, arrow keys push it, R resets, Space pauses');
+    expect(host.getAttribute('aria-description')).to.equal('Tab picks a body, arrow keys push it, Escape then Tab leaves, R resets, Space pauses');
     expect([r.press('Tab'), r.keyboard.picked, r.live.textContent]).to.deep.equal([true, 7, 'Picked box 1 of 3']);
     expect([r.press('Tab'), r.keyboard.picked, r.live.textContent]).to.deep.equal([true, 9, 'Picked ball 2 of 3']);
     expect([r.press('Tab'), r.keyboard.picked, r.live.textContent]).to.deep.equal([true, 4, 'Picked Red crate 3 of 3']);
@@ -71,6 +71,28 @@ describe('KeyboardController', () => {
     expect([r.press('Escape'), r.keyboard.picked, r.live.textContent]).to.deep.equal([true, null, 'Nothing picked']);
     // Escape with nothing picked is not ours (a dialog around the scene may want it).
     expect(r.press('Escape')).to.equal(false);
+  });
+
+  it('Escape, then Tab, leaves the scene from any body (two keys past a scene of many bodies); any other key first and Tab picks again', () => {
+    const many = Array.from({ length: 50 }, (_, k) => ({ key: k + 1, label: 'ball' }));
+    const r = rig(many);
+    host = r.host;
+    document.body.append(host);
+    for (let k = 0; k < 20; k++) r.press('Tab');
+    expect(r.keyboard.picked).to.equal(20);
+    expect([r.press('Escape'), r.keyboard.picked]).to.deep.equal([true, null]);
+    expect([r.press('Tab'), r.keyboard.picked]).to.deep.equal([false, null]);
+    // Tabbed in again (focus back on the scene): Tab picks the first body.
+    host.dispatchEvent(new FocusEvent('blur'));
+    expect([r.press('Tab'), r.keyboard.picked]).to.deep.equal([true, 1]);
+    // Escape with nothing picked, then Tab: leaves too.
+    r.press('Escape');
+    r.press('Tab', { shiftKey: true });
+    expect([r.press('Escape'), r.press('Tab'), r.keyboard.picked]).to.deep.equal([false, false, null]);
+    // Escape, then another key, then Tab: the key came between, Tab picks.
+    r.press('Escape');
+    r.press('r');
+    expect([r.press('Tab'), r.keyboard.picked]).to.deep.equal([true, 1]);
   });
 
   it('R resets and says so, each time (the same words twice still change the live region); held down it resets once', () => {
