@@ -25,7 +25,25 @@ const KNOWN_TAGS = [...BODY_TAGS, ...LINK_TAGS];
  * scripts, styles), or they are what the page shows instead of the scene (`<noscript>`, an image, anything given a
  * `slot`).
  */
-const NOT_A_MISTAKE = new Set(['template', 'script', 'style', 'noscript', 'img', 'picture']);
+const NOT_A_MISTAKE = new Set(['template', 'script', 'style', 'noscript', 'img', 'picture', 'br']);
+
+/**
+ * Whether `el`, a child of the scene, is a paragraph a CMS or Markdown wrapped around the scene's lines (Markdown
+ * ends raw HTML at a blank line and makes the lines after it a <p>; WordPress's automatic paragraphs add <p> and
+ * <br>): a <p> holding body or link elements, or nothing but white space and <br>. Its body and link elements are the
+ * scene's. A <p> of text is not one (reported as any other element).
+ */
+function isWrapper(el: Element): boolean {
+  if (el.localName !== 'p' || el.hasAttribute('slot')) return false;
+  for (const inner of Array.from(el.children)) if (KNOWN_TAGS.includes(inner.localName)) return true;
+  return el.textContent!.trim() === '' && Array.from(el.children).every((inner) => inner.localName === 'br');
+}
+
+/** Whether `el` is in the scene's markup: a child of its container, or of a paragraph wrapped around its lines. */
+export function inMarkup(el: Element, container: ParentNode & Node): boolean {
+  const parent = el.parentElement;
+  return el.parentNode === container || (parent !== null && parent.parentNode === container && isWrapper(parent));
+}
 
 /**
  * Other words for the known bodies and links, without the prefix: `<physics-ball>` means a circle, though its nearest
@@ -233,20 +251,27 @@ export class MarkupSync implements SceneHost {
    */
   private flush(child: Element): number | undefined {
     if (this.options.engine.live) {
-      if (this.observer.takeRecords().length > 0 || (!this.keys.has(child) && child.parentNode === this.options.container())) this.sync();
+      if (this.observer.takeRecords().length > 0 || (!this.keys.has(child) && inMarkup(child, this.options.container()))) this.sync();
       if (this.keys.has(child) && (child as Element & { isUpdatePending?: boolean }).isUpdatePending) this.childChanged(child);
     }
     return this.keys.get(child);
   }
 
-  /** The body and link elements of the container; the other element children are reported (once each) instead. */
+  /**
+   * The body and link elements of the container, also those in a paragraph wrapped around its lines (isWrapper); the
+   * other elements are reported (once each) instead.
+   */
   private children(): Child[] {
     const out: Child[] = [];
     const unknown = new Set<Element>();
-    for (const el of Array.from(this.options.container().children)) {
+    const take = (el: Element) => {
       if (el instanceof PhysicsBodyElement || el instanceof PhysicsLinkElement) out.push(el);
       // A known tag not upgraded yet (its module loads later) is not a mistake.
       else if (!NOT_A_MISTAKE.has(el.localName) && !el.hasAttribute('slot') && !(KNOWN_TAGS.includes(el.localName) && !customElements.get(el.localName))) unknown.add(el);
+    };
+    for (const el of Array.from(this.options.container().children)) {
+      if (isWrapper(el)) for (const inner of Array.from(el.children)) take(inner);
+      else take(el);
     }
     for (const el of this.unknown) if (!unknown.has(el)) this.options.problems.forget(el);
     for (const el of unknown) {

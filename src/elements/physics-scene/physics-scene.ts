@@ -12,7 +12,7 @@ import { CollisionEventsController } from './collisions.js';
 import { changedParams, ConfigController, substepsAttribute } from './config.js';
 import { firePhysicsEvent } from './events.js';
 import { KeyboardController, type PickableBody } from './keyboard.js';
-import { MarkupSync } from './markup.js';
+import { inMarkup, MarkupSync } from './markup.js';
 import { BodyOutlines } from './outlines.js';
 import { PointerDragController } from './pointer.js';
 import { ProblemsController } from './problems.js';
@@ -412,7 +412,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** A child added in this task asks for its scene host (SceneParent): it is adopted now. @internal */
   _hostOf(child: Element): SceneHost | null {
-    return child.parentNode === this.bodyContainer ? this.markup.hostOf(child) : null;
+    return inMarkup(child, this.bodyContainer) ? this.markup.hostOf(child) : null;
   }
 
   /** The engine client (null while there is none): for diagnostics and tests. @internal */
