@@ -66,7 +66,7 @@ describe('colour scheme', () => {
     await shows(scene, DARK, 'switched back to dark');
   });
 
-  it('"light dark" follows the reader\'s preference; a page that declares nothing stays light for a reader who prefers dark', async () => {
+  it('"light dark" follows the reader\'s preference; a page that declares nothing stays light for a reader who prefers dark; the scene\'s own color-scheme counts', async () => {
     await emulateMedia({ colorScheme: 'dark' });
     scene = await mount('width="10" height="10" gravity="0 0" paused', BODIES);
     await shows(scene, LIGHT, 'no color-scheme, reader prefers dark');
@@ -74,6 +74,10 @@ describe('colour scheme', () => {
     await shows(scene, DARK, '"light dark", reader prefers dark');
     await emulateMedia({ colorScheme: 'light' });
     await shows(scene, LIGHT, '"light dark", reader prefers light');
+    // The scene's own color-scheme: one embed made dark on a light page.
+    document.documentElement.style.colorScheme = '';
+    scene.style.colorScheme = 'dark';
+    await shows(scene, DARK, 'color-scheme: dark on the scene itself');
   });
 
   it('colours the page sets stay as set on a dark page', async () => {
