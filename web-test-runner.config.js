@@ -9,6 +9,26 @@ const args = [
   '--disable-component-update', '--disable-sync',
 ];
 
+/**
+ * `emulateForcedColors('active' | 'none')` (test/elements/commands.js): forced colours, as a high-contrast theme sets
+ * them. @web/test-runner-commands' emulateMedia passes `forcedColors` to Playwright only; this launcher is Puppeteer's.
+ * It sets the page's emulated media features to this one alone (prefers-color-scheme and the others back to none).
+ */
+const cdpSessions = new WeakMap();
+const forcedColorsCommand = {
+  name: 'emulate-forced-colors',
+  async executeCommand({ command, payload, session }) {
+    if (command !== 'emulate-forced-colors') return undefined;
+    if (payload !== 'active' && payload !== 'none') throw new Error(`emulate-forced-colors: 'active' or 'none', not ${payload}`);
+    // Puppeteer's emulateMediaFeatures() refuses the name: straight to the DevTools protocol, on a session kept open
+    // (its emulation ends with it).
+    const page = session.browser.getPage(session.id);
+    cdpSessions.set(page, cdpSessions.get(page) ?? (await page.createCDPSession()));
+    await cdpSessions.get(page).send('Emulation.setEmulatedMedia', { features: [{ name: 'forced-colors', value: payload }] });
+    return true;
+  },
+};
+
 export default {
   // .test.html files are pages of their own (their URL can carry "transfer", see below). The engine's and the worker
   // host's tests need no browser: they run in Node (npm run test:engine, .mocharc.json).
@@ -17,7 +37,7 @@ export default {
   // Cross-origin isolation everywhere except for test files whose name says "transfer": those run without it, so
   // both ways of publishing state (SharedArrayBuffer, transferred ArrayBuffer) are exercised.
   middleware: [crossOriginIsolation({ when: (ctx) => !/transfer/.test(ctx.headers.referer ?? '') && !/transfer/.test(ctx.path) }), jsToTs],
-  plugins,
+  plugins: [...plugins, forcedColorsCommand],
   browsers: [
     chromeLauncher({
       launchOptions: { executablePath, headless: true, args },

@@ -1,9 +1,9 @@
 // A dark page gets a dark scene: the default colours follow the colour scheme the page declares (color-scheme on an
 // ancestor, or "light dark" with the reader's preference), also when the page switches it later while the scene is
-// paused; colours the page sets stay as set. Checked by what the canvas shows and by the computed colours of the
+// paused; forced colours (a high-contrast theme) do not flip it; colours the page sets stay as set. Checked by what the canvas shows and by the computed colours of the
 // messages.
 import { expect } from '@open-wc/testing';
-import { emulateMedia } from './commands.js';
+import { emulateForcedColors, emulateMedia } from './commands.js';
 import type { PhysicsSceneElement } from '../../src/index.js';
 import { colourDistance, mount, pixelAt, rgb, unmount, waitFor } from './helpers.js';
 
@@ -78,6 +78,17 @@ describe('colour scheme', () => {
     document.documentElement.style.colorScheme = '';
     scene.style.colorScheme = 'dark';
     await shows(scene, DARK, 'color-scheme: dark on the scene itself');
+  });
+
+  it('forced colours (a high-contrast theme) do not turn a light page\'s scene dark', async () => {
+    await emulateForcedColors('active');
+    try {
+      expect(matchMedia('(forced-colors: active)').matches, 'forced colours emulated').to.equal(true);
+      scene = await mount('width="10" height="10" gravity="0 0" paused', BODIES);
+      await shows(scene, LIGHT, 'forced colours on a light page');
+    } finally {
+      await emulateForcedColors('none');
+    }
   });
 
   it('colours the page sets stay as set on a dark page', async () => {

@@ -14,7 +14,8 @@ export type ColourScheme = 'light' | 'dark';
 /**
  * The probe's styles (part of the scene's styles). Its background is read: white where the used scheme is dark
  * (browsers without light-dark() keep the black: light). Its colour is not read: its transition announces a change of
- * scheme (transitionrun), when the final background can be read. @internal
+ * scheme (transitionrun), when the final background can be read. Forced colours (a high-contrast theme) would paint
+ * it the theme's Canvas colour, white for a light theme: they are turned off for the probe. @internal
  */
 export const schemeProbeStyles = css`
   .scheme {
@@ -23,6 +24,7 @@ export const schemeProbeStyles = css`
     height: 0;
     overflow: hidden;
     visibility: hidden;
+    forced-color-adjust: none;
     background-color: #000;
     background-color: light-dark(#000, #fff);
     color: #000001;
