@@ -1,7 +1,7 @@
 // A dark page gets a dark scene: the default colours follow the colour scheme the page declares (color-scheme on an
 // ancestor, or "light dark" with the reader's preference), also when the page switches it later while the scene is
-// paused; forced colours (a high-contrast theme) do not flip it; colours the page sets stay as set. Checked by what the canvas shows and by the computed colours of the
-// messages.
+// paused; forced colours (a high-contrast theme) do not flip it; colours the page sets stay as set. Checked by what
+// the canvas shows and by the computed colours of the messages.
 import { expect } from '@open-wc/testing';
 import { emulateForcedColors, emulateMedia } from './commands.js';
 import type { PhysicsSceneElement } from '../../src/index.js';
