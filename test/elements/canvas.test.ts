@@ -38,6 +38,27 @@ describe('<physics-scene> canvas', () => {
     }
   });
 
+  it('draws a soft body resting on the floor touching it (its ring\'s particles collide as discs: drawn around them)', async () => {
+    // 40 px per unit; the floor's top at y = 9; a ring of radius 1 and 12 particles (each a disc of 1 · sin(π/12) =
+    // 0.26 units, 10 px: drawn through their centres, the ring hovered 10 px above the floor).
+    scene = await mount(
+      'width="10" height="10" paused background="#ffffff"',
+      `<physics-box x="5" y="9.5" width="10" height="1" static fill="#0000ff" stroke="none"></physics-box>
+       <physics-softbody x="5" y="7" radius="1" segments="12" fill="#ff0000" stroke="none"></physics-softbody>`,
+    );
+    await scene.step(180);
+    await drawn(scene, 3);
+    const canvas = scene.canvas!;
+    const ratio = canvas.width / canvas.getBoundingClientRect().width;
+    const data = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data;
+    const red = (x: number, y: number) => colourDistance(Array.from(data.subarray(4 * (y * canvas.width + x), 4 * (y * canvas.width + x) + 3)), rgb('#ff0000')) < 40;
+    // The lowest red pixel in the body's middle columns, and the floor's first blue row, in canvas pixels.
+    const floorTop = Math.round(9 * 40 * ratio);
+    let lowest = -1;
+    for (let y = 0; y < floorTop; y++) for (let x = Math.round(4.5 * 40 * ratio); x < Math.round(5.5 * 40 * ratio); x++) if (red(x, y)) lowest = y;
+    expect(floorTop - 1 - lowest, `gap between the soft body and the floor (canvas px, ${ratio} per CSS px)`).to.be.at.most(2 * ratio);
+  });
+
   it('fits the viewBox into the element keeping its aspect ratio (centred, letterboxed)', async () => {
     // A 400×200 element showing a 10×10 world: 20 px per unit, the world spans x = 100..300 px.
     scene = await mount(

@@ -59,6 +59,24 @@ describe('body painters', () => {
     expect(calls.filter((c) => c[0] === 'arc')).to.deep.equal([['arc', 4, 40, 0.5 * 20, 0, Math.PI * 2]]);
   });
 
+  it('a soft ring with a particle radius: its loop pushed out by the radius, away from its middle, either way round', () => {
+    // Four particles on a 10-pixel square, their radius 0.1 units = 2 pixels at 20 pixels a unit.
+    const square = [[0, 0], [10, 0], [10, 10], [0, 10]];
+    for (const order of [[0, 1, 2, 3], [3, 2, 1, 0]]) {
+      const r = recorder();
+      const body: TopologyBody = { key: 1, type: 'softbody', kind: 'soft', indices: Int32Array.from(order), ring: 4, radius: 0.1 };
+      const pen: Pen = { ctx: r.ctx, X: (i) => square[i][0], Y: (i) => square[i][1], scale: 20, offsetX: 0, offsetY: 0, topology: { version: 1, bodies: [body], links: [] }, poses: new Float64Array(0) };
+      PAINTERS.softbody.draw(pen, [0], { fill: '#f00', stroke: null, lineWidth: 1 });
+      const drawn = r.calls.filter((c) => c[0] === 'moveTo' || c[0] === 'lineTo').map((c) => [c[1], c[2]]);
+      expect(drawn.length).to.equal(4);
+      drawn.forEach(([x, y], q) => {
+        const [px, py] = square[order[q]];
+        expect(Math.hypot(x - px, y - py), `corner ${order[q]} moved by the radius`).to.be.closeTo(2, 1e-9);
+        expect(Math.hypot(x - 5, y - 5), `corner ${order[q]} away from the middle`).to.be.closeTo(Math.hypot(5, 5) + 2, 1e-9);
+      });
+    }
+  });
+
   it('rigid bodies from their pose: an outline turned by the angle, a disc with a radius line that turns with it', () => {
     const bodies: TopologyBody[] = [
       { key: 1, type: 'box', kind: 'rigid', indices: Int32Array.of(0), rigid: true, outline: Float64Array.of(-1, -0.5, 1, -0.5, 1, 0.5, -1, 0.5), center: [0, 0] },

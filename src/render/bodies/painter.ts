@@ -37,7 +37,8 @@ export interface BodyPainter {
  * Closed shapes of one style, as one path with one fill and one stroke: a rigid body its outline or disc placed at
  * its pose (then a second path: a radius line on each rigid disc, so its spin shows); a body the topology gives a
  * radius and one particle is a disc (a particle ball); any other the closed loop through its particles (the first
- * `ring` of them: a soft body's hub is not on its outline).
+ * `ring` of them: a soft body's hub is not on its outline), pushed out by the particles' radius when the topology
+ * gives one (a soft ring's particles collide as discs: drawn through their centres, it hovered above the floor).
  */
 export const shape: BodyPainter = {
   batch: 'shape',
@@ -57,6 +58,10 @@ export const shape: BodyPainter = {
         continue;
       }
       const n = b.ring ?? idx.length;
+      if (b.radius) {
+        loopAround(pen, idx, n, b.radius * pen.scale);
+        continue;
+      }
       ctx.moveTo(X(idx[0]), Y(idx[0]));
       for (let q = 1; q < n; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
       ctx.closePath();
@@ -81,6 +86,35 @@ export const shape: BodyPainter = {
     ctx.stroke();
   },
 };
+
+/**
+ * The closed loop through the first n particles of idx, each pushed out by r pixels, square to the line from the
+ * particle before it to the one after (outward by the loop's turning sense): the loop runs along the outer side of
+ * the particles' discs, as far out as each disc reaches.
+ */
+function loopAround({ ctx, X, Y }: Pen, idx: Int32Array, n: number, r: number): void {
+  let area = 0;
+  for (let q = 0; q < n; q++) {
+    const a = idx[q];
+    const b = idx[(q + 1) % n];
+    area += X(a) * Y(b) - X(b) * Y(a);
+  }
+  const out = area >= 0 ? r : -r;
+  for (let q = 0; q < n; q++) {
+    const i = idx[q];
+    const prev = idx[(q + n - 1) % n];
+    const next = idx[(q + 1) % n];
+    const tx = X(next) - X(prev);
+    const ty = Y(next) - Y(prev);
+    const length = Math.hypot(tx, ty);
+    const k = length > 0 ? out / length : 0;
+    const x = X(i) + ty * k;
+    const y = Y(i) - tx * k;
+    if (q === 0) ctx.moveTo(x, y);
+    else ctx.lineTo(x, y);
+  }
+  ctx.closePath();
+}
 
 /** A radius line's colour on a disc drawn without a stroke. */
 const SPOKE = 'rgba(0, 0, 0, 0.45)';

@@ -13,6 +13,8 @@ export const softbody: BodyDescriptor<'softbody'> = {
   pose: CENTROID,
   describe(t, d, body) {
     t.ring = ring(d, body.indices).length;
+    // The ring's particles collide as discs half a chord wide: drawn around them, the body rests on what it touches.
+    t.radius = body.world.particles.radius[body.indices[0]];
   },
   outline: ring,
 };
