@@ -171,4 +171,28 @@ describe('<physics-scene> lifecycle', () => {
       w.restore();
     }
   });
+
+  it('a new worker attribute restarts the running scene in that mode, in one update (no update scheduled after one)', async () => {
+    const warnings: string[] = [];
+    const warn = console.warn;
+    console.warn = (...args: unknown[]) => warnings.push(args.join(' '));
+    let scene: PhysicsSceneElement | null = null;
+    try {
+      scene = await mount('width="10" height="10"', CHILDREN);
+      expect(scene.mode).to.equal('worker');
+      for (const [worker, mode] of [['none', 'main'], ['auto', 'worker']] as const) {
+        scene.worker = worker;
+        await scene.updateComplete;
+        await scene.ready;
+        await waitFor(() => scene!.mode === mode, `mode ${mode} after worker="${worker}"`);
+        expect(await scene.step(3)).to.be.greaterThan(0);
+      }
+      expect(warnings.filter((w) => w.includes('scheduled an update')), warnings.join('\n')).to.deep.equal([]);
+    } finally {
+      console.warn = warn;
+      unmount(scene);
+      // The pool's worker ends after its grace period: later tests count the workers they make.
+      await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');
+    }
+  });
 });

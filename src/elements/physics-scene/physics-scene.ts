@@ -544,14 +544,18 @@ export class PhysicsSceneElement extends LitElement {
     );
   };
 
-  protected override updated(changed: PropertyValues): void {
-    const { width, height } = this.settings.config;
-    this.style.setProperty('--physics-scene-aspect', `${width} / ${height}`);
+  protected override willUpdate(changed: PropertyValues): void {
+    // A new `worker` restarts the engine in that mode. Here, before the render: the state stop() resets is part of
+    // this update (in updated() it scheduled another); start() waits for the update to complete.
     if (changed.has('worker') && changed.get('worker') !== undefined && this.session.engine) {
       this.stop();
       void this.session.start();
-      return;
     }
+  }
+
+  protected override updated(changed: PropertyValues): void {
+    const { width, height } = this.settings.config;
+    this.style.setProperty('--physics-scene-aspect', `${width} / ${height}`);
     if (!this.session.live) return;
     const params = changedParams(changed.keys(), this.params());
     if (Object.keys(params).length > 0) this.session.send('setParams', params);
