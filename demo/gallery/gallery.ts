@@ -11,7 +11,7 @@ type SceneEl = HTMLElement & {
   stepCount: number;
   renderedFrames: number;
   canvas: HTMLCanvasElement | null;
-  diagnostics(): Promise<{ bodyCount: number; particleCount: number; linkCount: number; transport: string; mode: string }>;
+  diagnostics(): Promise<{ bodyCount: number; particleCount: number; linkCount: number; stepMs: number; transport: string; mode: string }>;
   drawHook: unknown;
 };
 
@@ -79,7 +79,9 @@ const ENUMS: Record<string, string[]> = {
   worker: ['auto', 'none'],
   bounds: ['view', 'none'],
   'draw-mode': ['over', 'replace'],
-  model: ['pressure', 'springs'],
+  model: ['rigid', 'particles'],
+  // Keyed by tag and attribute where one element's values differ from the others'.
+  'physics-softbody model': ['pressure', 'springs'],
   pin: ['start', 'end', 'both', 'none'],
 };
 
@@ -126,6 +128,11 @@ const setNavOpen = (open: boolean) => {
 };
 navToggle.addEventListener('click', () => setNavOpen(!navEl.classList.contains('open')));
 nav.addEventListener('click', (e) => (e.target as Element).closest('a') && setNavOpen(false));
+document.addEventListener('keydown', (e) => {
+  if (e.key !== 'Escape' || !navEl.classList.contains('open')) return;
+  setNavOpen(false);
+  navToggle.focus();
+});
 
 let groupEl: HTMLElement | null = null;
 let lastGroup = '';
@@ -183,10 +190,10 @@ function controlFor(target: HTMLElement, data: Node, p: PropInfo): HTMLElement {
     input = el('input', { id, type: 'checkbox' });
     input.checked = value !== undefined;
     input.addEventListener('change', () => setAttr(target, data, p.attr, (input as HTMLInputElement).checked ? true : null));
-  } else if (ENUMS[p.attr]) {
+  } else if (ENUMS[`${data.tag} ${p.attr}`] ?? ENUMS[p.attr]) {
     input = el('select', { id });
     input.append(el('option', { value: '', text: '(default)' }));
-    for (const o of ENUMS[p.attr]) input.append(el('option', { value: o, text: o }));
+    for (const o of ENUMS[`${data.tag} ${p.attr}`] ?? ENUMS[p.attr]) input.append(el('option', { value: o, text: o }));
     input.value = typeof value === 'string' ? value : '';
     input.addEventListener('change', () => setAttr(target, data, p.attr, input.value === '' ? null : input.value));
   } else {
@@ -286,6 +293,8 @@ function fromHash(): void {
   const [id, q = ''] = raw.split('?');
   if (current && current.story.id === id) return;
   show(id, new URLSearchParams(q));
+  // A story chosen while the page was scrolled down (on a phone, from the menu) starts at its title.
+  window.scrollTo(0, 0);
 }
 window.addEventListener('hashchange', fromHash);
 
@@ -295,11 +304,13 @@ copyButton.addEventListener('click', async () => {
     await navigator.clipboard.writeText(text);
     copyButton.textContent = 'Copied';
   } catch {
+    // No clipboard API (a page not served over https or from localhost, as `npm start`'s network address is on a
+    // phone): the snippet selected and copied the old way, or left selected for the reader to copy.
     const range = document.createRange();
     range.selectNodeContents(snippet);
     getSelection()?.removeAllRanges();
     getSelection()?.addRange(range);
-    copyButton.textContent = 'Selected: press Ctrl+C';
+    copyButton.textContent = document.execCommand('copy') ? 'Copied' : 'Selected: copy it';
   }
   setTimeout(() => (copyButton.textContent = 'Copy'), 1500);
 });
@@ -329,15 +340,6 @@ const count = () => {
 };
 requestAnimationFrame(count);
 
-/** Physics ms per step: times 4 extra steps taken through the engine's own call (worker or main), round trip included. */
-async function probeStep(scene: SceneEl): Promise<void> {
-  const client = (scene as unknown as { client?: { api: { step(n: number): Promise<number> } } }).client;
-  if (!client || scene.hasAttribute('paused')) return;
-  const t0 = performance.now();
-  await client.api.step(4);
-  stepMs = (performance.now() - t0) / 4;
-}
-
 setInterval(async () => {
   const c = current;
   if (!c || stats.hidden) return;
@@ -354,8 +356,11 @@ setInterval(async () => {
   longStart = longTasks;
   try {
     const d = await Promise.race([c.scene.diagnostics(), new Promise<null>((r) => setTimeout(() => r(null), 500))]);
-    if (d) counts = { bodies: d.bodyCount, particles: d.particleCount };
-    await probeStep(c.scene);
+    // The engine's own time per step (its loop's average): measuring it takes no extra steps.
+    if (d) {
+      counts = { bodies: d.bodyCount, particles: d.particleCount };
+      stepMs = d.stepMs;
+    }
   } catch {
     /* the scene is restarting */
   }

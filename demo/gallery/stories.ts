@@ -66,17 +66,17 @@ const elementStories: Story[] = [
     id: 'physics-rope',
     group: 'Elements',
     title: '<physics-rope>',
-    description: 'Particles and links from (x1, y1) to (x2, y2); `rigid` makes a chain of sticks, `pin` chooses the fixed ends.',
+    description: 'Particles and links from (x1, y1) to (x2, y2); `rigid` makes a chain of sticks, `pin` chooses the fixed ends, `collide` lets it catch the ball.',
     featured: 1,
-    root: scene({}, [floor(), n('physics-rope', { x1: 3, y1: 1, x2: 13, y2: 1, segments: 30, pin: 'both', slack: 1.2, radius: 0.08 }), n('physics-circle', { x: 8, y: -1, radius: 0.6 })]),
+    root: scene({}, [floor(), n('physics-rope', { x1: 3, y1: 1, x2: 13, y2: 1, segments: 30, pin: 'both', slack: 1.2, radius: 0.08, collide: true }), n('physics-circle', { x: 8, y: -1, radius: 0.6 })]),
   },
   {
     id: 'physics-cloth',
     group: 'Elements',
     title: '<physics-cloth>',
-    description: 'A grid of particles with structural, shear and bend links; `pins` holds the top row, the corners or chosen columns.',
+    description: 'A grid of particles with structural, shear and bend links; `pins` holds the top row, the corners or chosen columns; `collide` lets it catch the ball.',
     featured: 1,
-    root: scene({}, [floor(), n('physics-cloth', { x: 4, y: 0.5, columns: 20, rows: 14, spacing: 0.4, pins: 'corners', shear: 0.001 }), n('physics-circle', { x: 8, y: -2, radius: 0.7 })]),
+    root: scene({}, [floor(), n('physics-cloth', { x: 4, y: 0.5, columns: 20, rows: 14, spacing: 0.4, pins: 'corners', shear: 0.001, collide: true }), n('physics-circle', { x: 8, y: -2, radius: 0.7 })]),
   },
   {
     id: 'physics-softbody',
@@ -182,8 +182,16 @@ const rigidStories: Story[] = [
     id: 'car',
     group: 'Rigid bodies',
     title: 'Car on motorised wheels',
-    description: 'A chassis on two wheels, each a revolute joint with a motor (motor-speed 300°/s, max-motor-torque 40): it drives over the bumps.',
+    description: 'A chassis on two wheels, each a revolute joint with a motor (motor-speed 300°/s, max-motor-torque 40): it drives over the bumps. The gallery starts it over when it reaches the far wall.',
     featured: 4,
+    onReady: (s) => {
+      const scene = s as HTMLElement & { reset(): Promise<void> };
+      const chassis = s.querySelector('#chassis') as HTMLElement & { x: number };
+      const timer = setInterval(() => {
+        if (!s.isConnected) clearInterval(timer);
+        else if (chassis.x > 13.5) scene.reset().catch(() => {});
+      }, 500);
+    },
     root: scene({}, [
       floor(),
       ramp(8, 8.05, 2.5, -10),

@@ -184,6 +184,7 @@ export class EngineHost implements EngineApi {
       crossOriginIsolated: crossOriginIsolated(),
       running: this.#loop.running,
       stepCount: w.stepCount,
+      stepMs: this.#loop.stepMs,
       substepCount: w.substepCount,
       particleCount: w.particleCount,
       bodyCount: this.#frames.bodyCount,

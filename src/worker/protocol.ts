@@ -139,6 +139,11 @@ export interface Diagnostics {
   crossOriginIsolated: boolean;
   running: boolean;
   stepCount: number;
+  /**
+   * Milliseconds a step takes in the running loop (the engine's step and reading what it left, not sending the
+   * frame), averaged over about its last ten ticks; NaN before the loop has stepped. step(n) calls are not counted.
+   */
+  stepMs: number;
   /** The substeps the next step takes: the count asked for, or the engine's choice under 'auto' (World.substepCount). */
   substepCount: number;
   particleCount: number;

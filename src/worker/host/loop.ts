@@ -36,6 +36,7 @@ export class StepLoop {
   readonly #clock: Clock;
   #timer: unknown = null;
   #lastTick = 0;
+  #stepMs = NaN;
 
   constructor(hooks: LoopHooks, clock: Clock = realClock) {
     this.#hooks = hooks;
@@ -44,6 +45,14 @@ export class StepLoop {
 
   get running(): boolean {
     return this.#running;
+  }
+
+  /**
+   * Milliseconds a step of the loop took (the world's step and what is read after it, not publishing), averaged over
+   * about the last ten ticks that stepped; NaN before the first.
+   */
+  get stepMs(): number {
+    return this.#stepMs;
   }
 
   /** Starts the loop; false when it was running already. */
@@ -88,7 +97,12 @@ export class StepLoop {
     const elapsed = Math.max(0, (now - this.#lastTick) / 1000);
     this.#lastTick = now;
     const w = this.#hooks.world();
-    if (w.advance(elapsed, this.#hooks.afterStep) > 0) this.#hooks.stepped();
+    const steps = w.advance(elapsed, this.#hooks.afterStep);
+    if (steps > 0) {
+      const perStep = (this.#clock.now() - now) / steps;
+      this.#stepMs = Number.isNaN(this.#stepMs) ? perStep : 0.9 * this.#stepMs + 0.1 * perStep;
+      this.#hooks.stepped();
+    }
     // Wake up when the next step is due (variableStep worlds: one step of the elapsed time per timestep).
     this.#schedule((w.variableStep ? 1 : 1 - w.alpha) * w.timestep * 1000);
   };

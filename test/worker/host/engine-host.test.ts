@@ -707,6 +707,24 @@ describe('EngineHost step loop (fake clock)', () => {
     expect(h.publisher.frames.length - frames).to.equal(1);
   });
 
+  it('diagnostics().stepMs: the time the loop\'s ticks spend per step, NaN before it stepped; step(n) is not counted', () => {
+    const h = makeHost();
+    h.host.load({ world: {}, bodies: clone(EVERY_TYPE).slice(0, 3), links: [] });
+    h.host.step(5);
+    expect(h.host.diagnostics().stepMs).to.be.NaN;
+    // Each reading of the clock lets 3 ms pass: a tick reads it before and after its steps.
+    h.clock.readCost = 3;
+    h.host.play();
+    h.clock.advance(500);
+    const { stepMs, stepCount } = h.host.diagnostics();
+    expect(stepCount).to.be.greaterThan(5 + 10);
+    // 3 ms over the 1 or 2 steps of a tick.
+    expect(stepMs).to.be.within(1.5, 3);
+    h.host.pause();
+    h.host.step(20);
+    expect(h.host.diagnostics().stepMs).to.equal(stepMs);
+  });
+
   it('debugFault("throw") makes the next tick throw, and the loop stops there', () => {
     const h = running();
     h.clock.advance(50);

@@ -33,9 +33,13 @@ export class FakeClock implements Clock {
   private time = 1000;
   private timers: { at: number; run: () => void; id: number }[] = [];
   private ids = 0;
+  /** Milliseconds each reading of the clock lets pass after it (work that takes time); 0 by default. */
+  readCost = 0;
 
   now(): number {
-    return this.time;
+    const t = this.time;
+    this.time += this.readCost;
+    return t;
   }
 
   /** As Node's timers: a delay below 1 ms is 1 ms (so a loop that reschedules itself lets time pass). */
