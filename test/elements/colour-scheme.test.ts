@@ -62,8 +62,12 @@ describe('colour scheme', () => {
     // A theme toggle on the page's root, the scene paused and idle.
     document.documentElement.style.colorScheme = 'light';
     await shows(scene, LIGHT, 'switched to light');
+    // Moved within the page (disconnected and connected in one task: the engine stays): it still follows.
+    const box = scene.parentElement!;
+    box.remove();
+    document.body.append(box);
     document.documentElement.style.colorScheme = 'dark';
-    await shows(scene, DARK, 'switched back to dark');
+    await shows(scene, DARK, 'switched back to dark after a move');
   });
 
   it('"light dark" follows the reader\'s preference; a page that declares nothing stays light for a reader who prefers dark; the scene\'s own color-scheme counts', async () => {

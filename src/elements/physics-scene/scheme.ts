@@ -48,11 +48,16 @@ export function schemeProbe(): HTMLElement {
   return probe;
 }
 
+/** The probe's transition events: any of them means its colour may have changed (one is enough; all are cheap). */
+const TRANSITION_EVENTS = ['transitionrun', 'transitionend', 'transitioncancel'] as const;
+
 /** @internal */
 export class ColourSchemeController implements ReactiveController {
   /** The scheme the page's CSS gives the scene (read before each update and when the page switches it). */
   scheme: ColourScheme = 'light';
   private watched: HTMLElement | null = null;
+  /** The reader's preference: a page of "light dark" follows it (also read there through the probe). */
+  private preference: MediaQueryList | null = null;
 
   constructor(
     host: ReactiveControllerHost,
@@ -61,20 +66,35 @@ export class ColourSchemeController implements ReactiveController {
     host.addController(this);
   }
 
+  /** Connected (again, after a move): listening, and the scheme read, as it may have changed meanwhile. */
+  hostConnected(): void {
+    this.watch();
+    this.preference = typeof matchMedia === 'function' ? matchMedia('(prefers-color-scheme: dark)') : null;
+    this.preference?.addEventListener('change', this.read);
+    this.read();
+  }
+
   /** Before each update (before the configuration is read), so the first render already has the page's scheme. */
   hostUpdate(): void {
-    const probe = this.options.probe();
-    if (probe !== this.watched) {
-      this.watched?.removeEventListener('transitionrun', this.read);
-      probe?.addEventListener('transitionrun', this.read);
-      this.watched = probe;
-    }
+    this.watch();
     this.read();
   }
 
   hostDisconnected(): void {
-    this.watched?.removeEventListener('transitionrun', this.read);
+    for (const type of TRANSITION_EVENTS) this.watched?.removeEventListener(type, this.read);
     this.watched = null;
+    this.preference?.removeEventListener('change', this.read);
+    this.preference = null;
+  }
+
+  private watch(): void {
+    const probe = this.options.probe();
+    if (probe === this.watched) return;
+    for (const type of TRANSITION_EVENTS) {
+      this.watched?.removeEventListener(type, this.read);
+      probe?.addEventListener(type, this.read);
+    }
+    this.watched = probe;
   }
 
   /** Reads the scheme from the probe and tells the host when it changed. */
