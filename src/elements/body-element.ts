@@ -3,6 +3,7 @@
 import { LitElement, css, nothing } from 'lit';
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
+import { finite, speed } from '../engine/validate.js';
 import type { BodyStyle } from '../render/renderer.js';
 import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
 import type { ColourScheme } from './physics-scene/scheme.js';
@@ -109,18 +110,23 @@ export abstract class PhysicsBodyElement extends LitElement {
 
   /**
    * Changes the body's velocity by impulse / mass (world units · mass / s). Like setVelocity(), it acts on the body as
-   * the markup describes it now, also right after a change of its attributes or after the element was added.
+   * the markup describes it now, also right after a change of its attributes or after the element was added. Throws a
+   * TypeError for a value that is not a number, a RangeError for NaN or ±Infinity; an impulse that would give the body
+   * a speed past ±1e9 units/s is refused by the engine with a `physics-error`.
    */
   applyImpulse(ix: number, iy: number): void {
-    this.host()?.applyImpulse(this, ix, iy);
+    // Checked here, where the caller can catch it (the speed it adds, by the body's mass, is checked by the engine:
+    // past ±1e9 units/s it is refused with a physics-error).
+    this.host()?.applyImpulse(this, finite('ix', ix), finite('iy', iy));
   }
 
   /**
    * Sets the body's velocity (world units / s): a rigid body's, or every particle's of a body of particles. A change of
    * attributes made just before (in the same task) reaches the engine first, so the body it builds gets the velocity.
+   * Throws a TypeError for a value that is not a number, a RangeError for NaN, ±Infinity or a speed past ±1e9.
    */
   setVelocity(vx: number, vy: number): void {
-    this.host()?.setVelocity(this, vx, vy);
+    this.host()?.setVelocity(this, speed('vx', vx), speed('vy', vy));
   }
 
   /** The scene running this body; asked of the parent scene when this element was added in the current task. */

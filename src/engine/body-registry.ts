@@ -93,9 +93,15 @@ export function centroid(p: ParticleStore, particles: Int32Array): Vec2 {
 }
 
 /** Changes the velocity of the movable particles by impulse / (their total mass). */
-export function applyImpulseByMass(p: ParticleStore, particles: Int32Array, jx: number, jy: number): void {
+/** The mass of the movable particles among `particles` (0 when none moves). */
+export function bodyMass(p: ParticleStore, particles: Int32Array): number {
   let mass = 0;
   for (const i of particles) if (p.invMass[i] > 0) mass += 1 / p.invMass[i];
+  return mass;
+}
+
+export function applyImpulseByMass(p: ParticleStore, particles: Int32Array, jx: number, jy: number): void {
+  const mass = bodyMass(p, particles);
   if (mass === 0) return;
   for (const i of particles) {
     if (p.invMass[i] === 0) continue;

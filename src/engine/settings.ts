@@ -44,10 +44,19 @@ export const DEFAULTS: Required<Omit<WorldOptions, 'limits'>> = {
 export const BROAD_PHASES = ['grid', 'brute'] as const;
 export const NARROW_PHASES = ['sat', 'gjk'] as const;
 
+/**
+ * The longest step World.step() takes, and the longest `timestep`, in seconds: its substeps would be too long for any
+ * contact or link to hold.
+ */
+export const MAX_STEP_SECONDS = 1;
+
 /** Each setting's check: returns the value to store or throws a TypeError/RangeError naming the setting. */
 export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K]) => StepSettings[K] } = {
   gravity: (g) => ({ x: finite('gravity.x', g?.x), y: finite('gravity.y', g?.y) }),
-  timestep: (v) => positive('timestep', v),
+  timestep: (v) => {
+    if (positive('timestep', v) > MAX_STEP_SECONDS) throw new RangeError(`timestep must be at most ${MAX_STEP_SECONDS} (seconds), got ${describeValue(v)}`);
+    return v;
+  },
   substeps: (v) => (v === 'auto' ? 'auto' : substepCountOption(v)),
   iterations: (v) => integer('iterations', v, 1, 1000),
   damping: (v) => nonNegative('damping', v),

@@ -36,6 +36,20 @@ export function coordinate(name: string, value: unknown): number {
   return v;
 }
 
+/**
+ * The largest speed a body may be given, in world units (or radians) a second: at it a body crosses the whole
+ * coordinate range (±MAX_WORLD_COORDINATE) in two seconds. Far beyond, one step puts it where a double has no detail
+ * left, and a speed near the largest double overflows to Infinity on the way (then NaN).
+ */
+export const MAX_SPEED = 1e9;
+
+/** A finite speed (a velocity component, or one an impulse adds) within ±MAX_SPEED. */
+export function speed(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (v > MAX_SPEED || v < -MAX_SPEED) throw new RangeError(`${name} must give a speed within ±1e9 (world units or radians per second), got ${show(value)}`);
+  return v;
+}
+
 /** A finite number > 0. */
 export function positive(name: string, value: unknown): number {
   const v = finite(name, value);

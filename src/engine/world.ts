@@ -21,18 +21,18 @@ import { advance, isSettled, step } from './pipeline/step.js';
 import { ensureTopology, topologyChanged, wakeAll, wakeParticle } from './pipeline/topology.js';
 import { pickGrabPoint } from './pipeline/pick.js';
 import { Kind } from './constraint-registry.js';
-import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js';
+import { applyImpulseByMass, bodyMass, centroid, softRingLength } from './body-registry.js';
 import { BODY_KINDS, DEFAULT_LIMITS, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
-import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, NARROW_PHASES, substepCount, type StepSettings } from './settings.js';
+import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { KernelDiagnostics, KernelOptions } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive } from './validate.js';
+import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive, speed } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -43,8 +43,7 @@ export type { RigidBodyOptions, Pose, MassInfo, JointOptions, JointType } from '
 export type { DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions, BodyKind, ConstraintKind } from './options.js';
 export { BODY_KINDS, COLLIDER_SHAPES, DEFAULT_LIMITS } from './options.js';
 
-/** The longest step World.step() takes, in seconds: its substeps would be too long for any contact or link to hold. */
-export const MAX_STEP_SECONDS = 1;
+export { MAX_STEP_SECONDS } from './settings.js';
 
 /** The names `new World(options)` takes: the settings, their limits and the solver kernel. */
 const WORLD_OPTIONS = [...Object.keys(DEFAULTS), 'limits', 'kernel'];
@@ -118,14 +117,14 @@ export class World {
   private get settings(): StepSettings {
     return this.ctx.settings;
   }
-  /** Acceleration of gravity (setGravity() also checks the value and wakes every body). */
-  get gravity(): Vec2 { return this.settings.gravity; }
-  set gravity(v: Vec2) { this.settings.gravity = v; }
-  /** A box the particles cannot leave, or null (setBounds() also checks the value). */
+  /** Acceleration of gravity, a copy (set it, or call setGravity(), which also wakes every body; both check it). */
+  get gravity(): Vec2 { return { ...this.settings.gravity }; }
+  set gravity(v: Vec2) { this.settings.gravity = CHECK.gravity(v); }
+  /** A box the particles cannot leave, or null (checked when set, as by setBounds()). */
   get bounds(): Bounds | null { return this.settings.bounds; }
-  set bounds(v: Bounds | null) { this.settings.bounds = v; }
+  set bounds(v: Bounds | null) { this.settings.bounds = CHECK.bounds(v); }
   get variableStep(): boolean { return this.settings.variableStep; }
-  set variableStep(v: boolean) { this.settings.variableStep = v; }
+  set variableStep(v: boolean) { this.settings.variableStep = CHECK.variableStep(v); }
   get timestep(): number { return this.settings.timestep; }
   set timestep(v: number) { this.settings.timestep = CHECK.timestep(v); }
   /** The substeps option: a count, or 'auto' (see WorldOptions.substeps; substepCount is the count it gives now). */
@@ -302,24 +301,33 @@ export class World {
   setVelocity(handle: Handle, vx: number, vy: number): void {
     const i = this.particleIndex(handle);
     wakeParticle(this.ctx, i);
-    this.writeVelocity(i, finite('vx', vx), finite('vy', vy));
+    this.writeVelocity(i, speed('vx', vx), speed('vy', vy));
   }
 
   /** Adds a force for the next step (cleared after it). */
   applyForce(handle: Handle, fx: number, fy: number): void {
     const i = this.particleIndex(handle);
+    const [gx, gy] = [finite('fx', fx), finite('fy', fy)];
+    // The speed it adds over a step.
+    const perStep = this.particles.invMass[i] * this.settings.timestep;
+    speed('fx · timestep / mass', gx * perStep);
+    speed('fy · timestep / mass', gy * perStep);
     wakeParticle(this.ctx, i);
-    this.particles.fx[i] += finite('fx', fx);
-    this.particles.fy[i] += finite('fy', fy);
+    this.particles.fx[i] += gx;
+    this.particles.fy[i] += gy;
   }
 
   /** Changes the velocity by impulse / mass at once. */
   applyImpulse(handle: Handle, ix: number, iy: number): void {
     const i = this.particleIndex(handle);
+    const w = this.particles.invMass[i];
     const [jx, jy] = [finite('ix', ix), finite('iy', iy)];
+    // The speed it adds (a heavy body may take a large impulse).
+    speed('ix / mass', jx * w);
+    speed('iy / mass', jy * w);
     wakeParticle(this.ctx, i);
-    this.particles.vx[i] += jx * this.particles.invMass[i];
-    this.particles.vy[i] += jy * this.particles.invMass[i];
+    this.particles.vx[i] += jx * w;
+    this.particles.vy[i] += jy * w;
   }
 
   getMass(handle: Handle): number {
@@ -569,6 +577,9 @@ export class World {
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
     if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) return api.pushBody(this.ctx, handle, jx, jy, x, y, true);
+    const mass = bodyMass(this.particles, idx);
+    speed('ix / mass', mass > 0 ? jx / mass : 0);
+    speed('iy / mass', mass > 0 ? jy / mass : 0);
     this.wake(handle);
     applyImpulseByMass(this.particles, idx, jx, jy);
   }

@@ -124,6 +124,25 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => box.y > 2.5 && far.y > 2.5, 'both boxes to fall');
   });
 
+  it('setVelocity and applyImpulse refuse bad numbers where they are called; an impulse past the speed limit is a physics-error, the engine keeps running', async () => {
+    console.warn = () => {};
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    const box = scene.querySelector<PhysicsBoxElement>('#box')!;
+    expect(() => box.setVelocity(NaN, 0)).to.throw(RangeError, 'vx');
+    expect(() => box.setVelocity('5' as never, 0)).to.throw(TypeError, 'vx');
+    expect(() => box.setVelocity(0, 2e9)).to.throw(RangeError, 'vy');
+    expect(() => box.applyImpulse(Infinity, 0)).to.throw(RangeError, 'ix');
+    box.applyImpulse(1e308, 1e308);
+    await waitFor(() => errors.some((e) => e.message.includes('ix / mass')), 'the refused impulse reported');
+    const before = scene.stepCount;
+    expect(await scene.step(10)).to.equal(before + 10);
+    expect(Number.isFinite(box.x) && Number.isFinite(box.y)).to.equal(true);
+    expect(errors.every((e) => e.attribute !== 'worker'), 'the worker did not die').to.equal(true);
+  });
+
   it('an attribute value never reaches the DOM as markup', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));

@@ -57,6 +57,49 @@ describe('bad input', () => {
     expect(() => new World(undefined)).not.to.throw();
   });
 
+  it('settings set as properties are checked as the options are; a timestep over 1 s is refused as a step is', () => {
+    const w = new World();
+    const p = w.addParticle({ x: 0, y: 0 });
+    createBox(w, { x: 5, y: 5, width: 1, height: 1 });
+    w.addRigidBody({ x: 10, y: 0, radius: 0.5 });
+    throwsNaming(() => (w.gravity = { x: NaN, y: 0 }), RangeError, 'gravity.x', 'NaN');
+    throwsNaming(() => (w.gravity = { x: '1', y: 0 } as never), TypeError, 'gravity.x', '"1"');
+    throwsNaming(() => (w.bounds = { minX: -10, minY: -10, maxX: 10 } as never), TypeError, 'maxY');
+    throwsNaming(() => (w.bounds = { minX: 10, minY: 0, maxX: 0, maxY: 1 }), RangeError, 'minX');
+    // The gravity read is a copy: changing it changes nothing unchecked.
+    w.gravity.x = NaN;
+    expect(w.gravity.x).to.equal(0);
+    throwsNaming(() => new World({ timestep: 100 }), RangeError, 'timestep', 'at most 1', '100');
+    throwsNaming(() => (w.timestep = 5), RangeError, 'timestep', '5');
+    w.gravity = { x: 1, y: 2 };
+    for (let k = 0; k < 30; k++) w.step();
+    expect(allFinite(w)).to.equal(true);
+    expect(w.getPosition(p).x).to.be.above(0);
+  });
+
+  it('speeds past ±1e9 units/s, given or added by an impulse or a step\'s force, are refused; the world keeps stepping', () => {
+    const w = new World();
+    createBox(w, { x: 0, y: 10, width: 20, height: 1, static: true });
+    const box = createBox(w, { x: 0, y: 0, width: 1, height: 1 });
+    const blob = createSoftBody(w, { center: { x: 4, y: 0 }, radius: 1 });
+    const p = w.addParticle({ x: -4, y: 0 });
+    throwsNaming(() => w.setBodyVelocity(box.body, 1e200, 0), RangeError, 'vx', '1e+200');
+    throwsNaming(() => w.setBodyAngularVelocity(box.body, -2e9), RangeError, 'angularVelocity');
+    throwsNaming(() => w.applyBodyImpulse(box.body, 1e308, 0), RangeError, 'ix / mass');
+    throwsNaming(() => w.applyBodyImpulse(box.body, 0, 1e9, 1e6, 0), RangeError, 'turn');
+    throwsNaming(() => w.applyBodyImpulse(blob.body, 0, 1e300), RangeError, 'iy / mass');
+    throwsNaming(() => w.setVelocity(p, 0, 1e10), RangeError, 'vy');
+    throwsNaming(() => w.applyImpulse(p, 1e300, 0), RangeError, 'ix / mass');
+    throwsNaming(() => w.applyForce(p, 0, 1e300), RangeError, 'fy');
+    throwsNaming(() => w.applyBodyForce(box.body, 1e300, 0), RangeError, 'fx · timestep / mass');
+    // Up to the limit, and a large impulse on a heavy body, are fine.
+    w.setBodyVelocity(box.body, 1e9, 0);
+    const heavy = createBox(w, { x: 0, y: -5, width: 1, height: 1, mass: 1e6 });
+    w.applyBodyImpulse(heavy.body, 1e12, 0);
+    for (let k = 0; k < 60; k++) w.step();
+    expect(allFinite(w)).to.equal(true);
+  });
+
   it('negative mass, length, radius or stiffness throw', () => {
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: -1 }), RangeError, 'mass', '-1');
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: 0 }), RangeError, 'mass', '0');

@@ -132,6 +132,11 @@ export class GridBroadPhase implements BroadPhase {
     }
     const rows = hiY - loY + 1;
     const cellsInUse = (hiX - loX + 1) * rows;
+    if (!Number.isFinite(cellsInUse)) {
+      // A box reaching to infinity (a body given a speed past any limit): no grid spans it; every pair is tested.
+      bruteForce.findPairs(c, accept, out);
+      return;
+    }
     if (cellsInUse > 0xffffffff) {
       // Sparse scene over a huge extent: coarser cells keep keys unique in 32 bits.
       const saved = this.cellSize;
@@ -349,6 +354,8 @@ function cellPairs(values: Uint32Array, start: number, end: number, box: Float64
     }
   }
 }
+
+const bruteForce = new BruteForceBroadPhase();
 
 export function makeBroadPhase(kind: 'grid' | 'brute', cellSize: number): BroadPhase {
   if (kind === 'brute') return new BruteForceBroadPhase();

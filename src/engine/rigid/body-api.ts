@@ -6,7 +6,7 @@ import { positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
-import { coordinate, finite, oneOf } from '../validate.js';
+import { coordinate, finite, oneOf, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
 import type { JointSide } from './joint-setup.js';
 import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
@@ -64,7 +64,7 @@ export function bodyVelocity(ctx: StepContext, body: Handle): Vec2 {
 
 export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: number): void {
   const r = rigidOf(ctx, body);
-  const [x, y] = [finite('vx', vx), finite('vy', vy)];
+  const [x, y] = [speed('vx', vx), speed('vy', vy)];
   ctx.particles.vx[r.i] = x;
   ctx.particles.vy[r.i] = y;
   wake(ctx, r.slot);
@@ -72,7 +72,7 @@ export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: 
 
 export function setBodyAngularVelocity(ctx: StepContext, body: Handle, w: number): void {
   const r = rigidOf(ctx, body);
-  ctx.particles.omega[r.i] = finite('angularVelocity', w);
+  ctx.particles.omega[r.i] = speed('angularVelocity', w);
   wake(ctx, r.slot);
 }
 
@@ -83,6 +83,12 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const names = impulse ? ['ix', 'iy'] : ['fx', 'fy'];
   const [jx, jy] = [finite(names[0], fx), finite(names[1], fy)];
   const [px, py] = [x === undefined ? p.x[r.i] : coordinate('x', x), y === undefined ? p.y[r.i] : coordinate('y', y)];
+  // The speeds it adds, along and around (a heavy body may take a large push): at once, or over a step.
+  const over = impulse ? 1 : ctx.settings.timestep;
+  const per = impulse ? ' / mass' : ' · timestep / mass';
+  speed(names[0] + per, jx * p.invMass[r.i] * over);
+  speed(names[1] + per, jy * p.invMass[r.i] * over);
+  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * p.invInertia[r.i] * over);
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);
