@@ -49,9 +49,16 @@ export class Checker {
 
   constructor(private readonly element: Element) {}
 
-  /** The value as written: the attribute's text when there is one, else the property value. */
+  /**
+   * The value as written: the attribute's text when it is what the property holds (or is blank), else the property
+   * value a script set since (`box.x = NaN` after `x="4"`: the NaN is what was refused, not the 4).
+   */
   raw(attribute: string, value: unknown): string {
-    return this.element.getAttribute(attribute) ?? String(value);
+    const text = this.element.getAttribute(attribute);
+    if (text === null) return String(value);
+    if (text.trim() === '' || value === undefined || value === null) return text;
+    const read = typeof value === 'number' ? numberAttribute.fromAttribute(text) : text;
+    return Object.is(read, value) ? text : String(value);
   }
 
   fail(attribute: string, value: unknown, message: string): void {

@@ -3,6 +3,7 @@
 // and, for rigid ones, kinematic motion.
 import { property } from 'lit/decorators.js';
 import { BODY_MODELS } from '../engine/index.js';
+import { MAX_SPEED } from '../engine/validate.js';
 import { PhysicsBodyElement } from './body-element.js';
 import { Checker, numberAttribute, toRadians } from './checks.js';
 
@@ -17,11 +18,14 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
    * and nothing pushes it. Rigid model only; not with `static`. Toggling it on a running scene keeps the body where it is.
    */
   @property({ type: Boolean }) kinematic = false;
-  /** Initial velocity "vx vy" in world units per second (y grows downward). Changing it sets the body's velocity. */
+  /**
+   * Initial velocity "vx vy" in world units per second (y grows downward), each within ±1e9. Changing it sets the
+   * body's velocity.
+   */
   @property() velocity?: string;
   /**
-   * Initial angular velocity in degrees per second, clockwise on screen (as `angle`). Changing it sets the body's
-   * angular velocity.
+   * Initial angular velocity in degrees per second, clockwise on screen (as `angle`), within ±5.7e10 (1e9 radians).
+   * Changing it sets the body's angular velocity.
    */
   @property({ attribute: 'angular-velocity', type: Number, converter: numberAttribute }) angularVelocity?: number;
 
@@ -47,8 +51,10 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
     }
     const velocity = check.numbers('velocity', this.velocity);
     if (velocity && velocity.length !== 2) check.fail('velocity', this.velocity, `must be two numbers "vx vy", got ${velocity.length}`);
+    else if (velocity && velocity.some((v) => Math.abs(v) > MAX_SPEED)) check.fail('velocity', this.velocity, 'must be within ±1e9 (world units per second)');
     else if (velocity) [out.vx, out.vy] = velocity;
     const spin = check.number('angular-velocity', this.angularVelocity);
-    if (spin !== undefined) out.angularVelocity = toRadians(spin);
+    if (spin !== undefined && Math.abs(toRadians(spin)) > MAX_SPEED) check.fail('angular-velocity', this.angularVelocity, 'must be within ±5.7e10 (degrees per second: 1e9 radians)');
+    else if (spin !== undefined) out.angularVelocity = toRadians(spin);
   }
 }

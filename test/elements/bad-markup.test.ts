@@ -143,6 +143,26 @@ describe('<physics-scene> bad markup', () => {
     expect(errors.every((e) => e.attribute !== 'worker'), 'the worker did not die').to.equal(true);
   });
 
+  it('a bad value set from script is reported as set, not as the attribute text it replaced', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount('width="12" height="10" paused', `<physics-box id="b1" x="4" y="2" width="1" height="1"></physics-box>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    const box = scene.querySelector<PhysicsBoxElement>('#b1')!;
+    box.x = NaN;
+    box.width = -1;
+    scene.width = 0;
+    await waitFor(() => errors.length >= 3, 'three reports');
+    expect(errors.map((e) => [e.attribute, e.value])).to.deep.include.members([['x', 'NaN'], ['width', '-1'], ['width', '0']]);
+    expect(warnings.join('\n')).to.contain('x="NaN"').and.contain('width="-1"');
+    // An attribute written blank is still reported as written.
+    box.setAttribute('y', '');
+    await waitFor(() => errors.some((e) => e.attribute === 'y'), 'the blank y');
+    expect(errors.find((e) => e.attribute === 'y')!.value).to.equal('');
+  });
+
   it('an attribute value never reaches the DOM as markup', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
