@@ -55,7 +55,8 @@ export abstract class PhysicsBodyElement extends LitElement {
   private _angle?: number;
 
   /**
-   * Horizontal position in world units. Reads the live position while simulated; setting it moves the body.
+   * Horizontal position in world units. Reads the live position while simulated; setting it moves the body (a rope
+   * is placed by x1, y1, x2, y2 instead: its x and y only read its centroid).
    * @attr x
    */
   @property({ type: Number, converter: numberAttribute, noAccessor: true })
