@@ -43,6 +43,8 @@ export class EngineHost implements EngineApi {
   constructor(publisher: Publisher, output: HostOutput, clock?: Clock) {
     this.#publisher = publisher;
     this.#output = output;
+    // A frame skipped for want of a transfer buffer is written when one comes back: step(n) waits for its state.
+    publisher.onFree = () => this.#publish();
     this.#bindings = new Bindings(this.#settings, () => this.#frames.invalidate());
     this.#frames = new FrameEncoder(this.#bindings, publisher, output);
     this.#loop = new StepLoop(

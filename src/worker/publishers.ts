@@ -13,6 +13,11 @@ export interface Publisher {
   commit(): void;
   /** Buffers allocated so far. */
   readonly allocated: number;
+  /**
+   * Called when a frame that found no buffer (begin() gave null) could now be written: the host publishes its
+   * current state then, so the newest state reaches the page even when nothing steps after it (a paused scene).
+   */
+  onFree?: (() => void) | null;
   dispose(): void;
 }
 
@@ -60,6 +65,9 @@ export class TransferPublisher implements Publisher {
   /** Buffers of the current capacity in existence (pooled or lent out). */
   private live = 0;
   private current: ArrayBuffer | null = null;
+  /** A frame was skipped for want of a buffer since one last came back. */
+  private starved = false;
+  onFree: (() => void) | null = null;
 
   constructor(private readonly post: (buffer: ArrayBuffer) => void) {}
 
@@ -71,7 +79,10 @@ export class TransferPublisher implements Publisher {
     }
     let buffer = this.pool.pop();
     if (!buffer) {
-      if (this.live >= POOL) return null;
+      if (this.live >= POOL) {
+        this.starved = true;
+        return null;
+      }
       buffer = new ArrayBuffer(this.capacity * 8);
       this.live++;
       this.allocated++;
@@ -89,9 +100,14 @@ export class TransferPublisher implements Publisher {
   /** A buffer back from the page. Buffers of an outgrown size are dropped. */
   recycle(buffer: ArrayBuffer): void {
     if (buffer.byteLength === this.capacity * 8 && this.pool.length < POOL) this.pool.push(buffer);
+    if (this.starved && this.pool.length > 0) {
+      this.starved = false;
+      this.onFree?.();
+    }
   }
 
   dispose(): void {
     this.pool.length = 0;
+    this.onFree = null;
   }
 }

@@ -4,7 +4,9 @@ import { expect } from 'chai';
 import { BODY_TYPES, RAGDOLL_JOINTS, World, type BodyDescription, type WorldSnapshot } from '../../../src/engine/index.js';
 import { AUTO_SUBSTEPS } from '../../../src/engine/settings.js';
 import type { FramePatch, KeyedLink } from '../../../src/worker/protocol.js';
-import { EVERY_TYPE, decode, makeHost } from './harness.js';
+import { EngineHost } from '../../../src/worker/engine-host.js';
+import { TransferPublisher } from '../../../src/worker/publishers.js';
+import { EVERY_TYPE, FakeClock, decode, makeHost } from './harness.js';
 
 const clone = <T>(v: T): T => structuredClone(v);
 
@@ -646,6 +648,26 @@ describe('EngineHost (no worker)', () => {
     h.host.reset();
     expect(h.topology.bodies[0].torn).to.equal(undefined);
     expect(h.host.diagnostics().brokenLinks).to.equal(0);
+  });
+
+  it('with transferred buffers all lent out, the skipped frame is written as soon as the page hands one back', () => {
+    // The page holds the four buffers (markup edits published them) and has not handed any back yet.
+    const posted: ArrayBuffer[] = [];
+    const publisher = new TransferPublisher((buffer) => posted.push(buffer));
+    const host = new EngineHost(publisher, { topology: () => {}, events: () => {} }, new FakeClock());
+    host.load({ world: {}, bodies: clone(EVERY_TYPE).slice(0, 2), links: [] });
+    for (let k = 0; k < 3; k++) host.step(1);
+    expect(posted.length).to.equal(4);
+    host.step(10);
+    expect(host.diagnostics()).to.include({ skipped: 1, stepCount: 13 });
+    expect(decode(new Float64Array(posted.at(-1)!)).stepCount).to.equal(3);
+    // A paused scene publishes nothing more by itself: the returned buffer carries the state after the ten steps.
+    publisher.recycle(posted[0]);
+    expect(posted.length).to.equal(5);
+    expect(decode(new Float64Array(posted.at(-1)!)).stepCount).to.equal(13);
+    // Only once: a buffer back with nothing skipped writes nothing.
+    publisher.recycle(posted[1]);
+    expect(posted.length).to.equal(5);
   });
 
   it('counts frames the publisher had no buffer for, and stops publishing once disposed', () => {
