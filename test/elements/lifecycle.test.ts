@@ -195,4 +195,17 @@ describe('<physics-scene> lifecycle', () => {
       await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');
     }
   });
+
+  it('calls on a scene not in the page, never added or removed, fail at once with EngineStoppedError', async () => {
+    const never = document.createElement('physics-scene');
+    const removed = await mount('width="10" height="10" paused', CHILDREN);
+    unmount(removed);
+    for (const s of [never, removed]) {
+      for (const call of [() => s.step(1), () => s.reset(), () => s.stateHash(), () => s.diagnostics(), () => s.snapshot()]) {
+        const error = await call().then(() => null, (e: Error) => e);
+        expect(error?.name, String(call)).to.equal('EngineStoppedError');
+      }
+    }
+    await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');
+  });
 });

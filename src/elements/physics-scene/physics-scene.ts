@@ -349,7 +349,9 @@ export class PhysicsSceneElement extends LitElement {
 
   /**
    * Takes `n` fixed steps now (also while paused). Resolves to the step count once the page has the state after them:
-   * body elements' `x`, `y` and `angle` then read it (also of bodies a markup change rebuilt just before).
+   * body elements' `x`, `y` and `angle` then read it (also of bodies a markup change rebuilt just before). On a scene
+   * not in the page this and the other engine calls (reset, stateHash, diagnostics, snapshot, restore) reject with an
+   * `EngineStoppedError`.
    */
   async step(n = 1): Promise<number> {
     const engine = await this.session.whenReady();

@@ -167,8 +167,12 @@ export class EngineSession implements ReactiveController, EngineCommands {
     return !this.current && !this.starting;
   }
 
-  /** The engine once ready, or null when there is none (never started, given up). A start waiting to be near goes on. */
+  /**
+   * The engine once ready, or null when there is none (never started, given up). A start waiting to be near goes on.
+   * A scene not in the page has none coming: an EngineStoppedError (a call waiting for it would never settle).
+   */
   async whenReady(): Promise<Engine | null> {
+    if (!this.host.isConnected) throw new EngineStoppedError('<physics-scene> is not in the page: add it, then call');
     this.options.demand?.();
     await this.ready;
     return this.current;

@@ -134,7 +134,7 @@ describe('MarkupSync', () => {
     r.sync.reset();
   });
 
-  it('nothing is sent while no engine has the scene; poseOf reads the shown engine; impulses and velocities only when finite', async () => {
+  it('nothing is sent while no engine has the scene; poseOf reads the shown engine; impulses and velocities only when finite (bad ones throw)', async () => {
     const r = rig(`<physics-box id="a" x="1"></physics-box>`);
     container = r.container;
     await changes();
@@ -151,8 +151,9 @@ describe('MarkupSync', () => {
     expect(r.sync.poseOf(box)).to.deep.equal([7, 8, 0]);
     expect(box.x).to.equal(7);
     expect(r.sync.poseOf(document.createElement('physics-box'))).to.equal(null);
-    box.applyImpulse(1, NaN);
-    box.setVelocity(Infinity, 0);
+    // Bad numbers are refused where the call is made (RangeError), and nothing is sent.
+    expect(() => box.applyImpulse(1, NaN)).to.throw(RangeError, 'iy');
+    expect(() => box.setVelocity(Infinity, 0)).to.throw(RangeError, 'vx');
     box.applyImpulse(1, 2);
     box.setVelocity(3, 4);
     expect(r.sent).to.deep.equal([['applyImpulse', [key, 1, 2]], ['setVelocity', [key, 3, 4]]]);
