@@ -75,6 +75,12 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     return 'Cloth simulation: drag the cloth to pull it';
   }
 
+  /** Rebuilds the scene at time 0 as a fresh load starts it: in the wind of time 0, not of the last gust. */
+  override async reset(): Promise<void> {
+    this.tick(0);
+    await super.reset();
+  }
+
   protected override updated(changed: Map<string, unknown>): void {
     super.updated(changed);
     // Wind 0 turns the ticks off: the push must go now, not at the next tick.

@@ -69,7 +69,7 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
 
   /** Per ragdoll: where it was last seen moving, and since when (simulated seconds) it has stayed there. */
   // Weak: a doll removed from the markup (count changed, re-rendered) must not stay alive through this table.
-  private readonly still = new WeakMap<Element, { x: number; y: number; since: number }>();
+  private still = new WeakMap<Element, { x: number; y: number; since: number }>();
 
   constructor() {
     super();
@@ -77,6 +77,14 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
     this.addEventListener('physics-ready', () => {
       for (const doll of this.dolls()) this.push(doll);
     });
+  }
+
+  /** Rebuilds the scene at time 0 as a fresh load starts it: the dolls pushed off the top step, no respawns yet. */
+  override async reset(): Promise<void> {
+    await super.reset();
+    this.respawned = 0;
+    this.still = new WeakMap();
+    for (const doll of this.dolls()) this.push(doll);
   }
 
   private dolls(): PhysicsRagdollElement[] {

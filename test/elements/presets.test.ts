@@ -106,6 +106,17 @@ describe('<cloth-sim>', () => {
     }
   });
 
+  it('reset() starts over as a fresh load does, in the wind of time 0 (not of the last gust)', async () => {
+    sim = await mountSim<ClothSimElement>('cloth-sim', 'paused');
+    const atLoad = await sim.stateHash();
+    await sim.step(90);
+    const first = await sim.stateHash();
+    await sim.reset();
+    expect(await sim.stateHash()).to.equal(atLoad);
+    await sim.step(90);
+    expect(await sim.stateHash()).to.equal(first);
+  });
+
   it('wind pushes the cloth downwind; with no wind it hangs still', async () => {
     sim = await mountSim<ClothSimElement>('cloth-sim', 'columns="8" rows="6" pins="top" wind="0"');
     const cloth = clothOf(sim);
@@ -173,6 +184,15 @@ describe('<ragdoll-sim>', () => {
     sim.obstacles = 'none';
     sim.count = 4;
     await waitFor(async () => (await sim!.diagnostics()).bodyCount === 4, 'four ragdolls and no obstacles');
+  });
+
+  it('reset() starts over as a fresh load does: the same state after the same steps (the dolls pushed again)', async () => {
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'paused respawn="off"');
+    await sim.step(60);
+    const first = await sim.stateHash();
+    await sim.reset();
+    await sim.step(60);
+    expect(await sim.stateHash()).to.equal(first);
   });
 
   it('respawn puts a ragdoll that lies still back at the top', async () => {
