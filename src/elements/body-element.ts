@@ -132,10 +132,10 @@ export abstract class PhysicsBodyElement extends LitElement {
 
   /** The scene running this body; asked of the parent scene when this element was added in the current task. */
   private host(): SceneHost | null {
-    // The parent, or the scene around the paragraph a CMS wrapped this element's line in (markup.ts, isWrapper).
-    const parent = this.parentElement;
-    const scene = parent?.localName === 'p' ? parent.parentElement : parent;
-    return this._scene ?? (scene as Partial<SceneParent> | null)?._hostOf?.(this) ?? null;
+    // The parent, or the one above it (a paragraph a CMS wrapped the line in: the scene decides, markup.ts isWrapper).
+    const parent = this.parentElement as (Element & Partial<SceneParent>) | null;
+    const scene = parent?._hostOf ? parent : (parent?.parentElement as (Element & Partial<SceneParent>) | null);
+    return this._scene ?? scene?._hostOf?.(this) ?? null;
   }
 
   /** The body as plain data for the engine, or null with problems when the markup cannot make one. @internal */

@@ -92,7 +92,6 @@ export function centroid(p: ParticleStore, particles: Int32Array): Vec2 {
   return { x: sx / particles.length, y: sy / particles.length };
 }
 
-/** Changes the velocity of the movable particles by impulse / (their total mass). */
 /** The mass of the movable particles among `particles` (0 when none moves). */
 export function bodyMass(p: ParticleStore, particles: Int32Array): number {
   let mass = 0;
@@ -100,6 +99,7 @@ export function bodyMass(p: ParticleStore, particles: Int32Array): number {
   return mass;
 }
 
+/** Changes the velocity of the movable particles by impulse / (their total mass). */
 export function applyImpulseByMass(p: ParticleStore, particles: Int32Array, jx: number, jy: number): void {
   const mass = bodyMass(p, particles);
   if (mass === 0) return;

@@ -50,6 +50,19 @@ export function speed(name: string, value: unknown): number {
   return v;
 }
 
+/** What the speed checks of an impulse, and of a force over a step, call their components. */
+export const IMPULSE_SPEED = ['ix / mass', 'iy / mass'] as const;
+export const FORCE_SPEED = ['fx · timestep / mass', 'fy · timestep / mass'] as const;
+
+/**
+ * The speed a push (jx, jy) gives a body of inverse mass `invMass` at once (an impulse, `seconds` 1) or over `seconds`
+ * (a force over a step), within ±MAX_SPEED in each direction; names[k] names component k ('ix / mass').
+ */
+export function pushSpeed(names: readonly [string, string], jx: number, jy: number, invMass: number, seconds = 1): void {
+  speed(names[0], jx * invMass * seconds);
+  speed(names[1], jy * invMass * seconds);
+}
+
 /** A finite number > 0. */
 export function positive(name: string, value: unknown): number {
   const v = finite(name, value);

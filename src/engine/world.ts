@@ -32,7 +32,7 @@ import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive, speed } from './validate.js';
+import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -308,10 +308,7 @@ export class World {
   applyForce(handle: Handle, fx: number, fy: number): void {
     const i = this.particleIndex(handle);
     const [gx, gy] = [finite('fx', fx), finite('fy', fy)];
-    // The speed it adds over a step.
-    const perStep = this.particles.invMass[i] * this.settings.timestep;
-    speed('fx · timestep / mass', gx * perStep);
-    speed('fy · timestep / mass', gy * perStep);
+    pushSpeed(FORCE_SPEED, gx, gy, this.particles.invMass[i], this.settings.timestep);
     wakeParticle(this.ctx, i);
     this.particles.fx[i] += gx;
     this.particles.fy[i] += gy;
@@ -322,9 +319,7 @@ export class World {
     const i = this.particleIndex(handle);
     const w = this.particles.invMass[i];
     const [jx, jy] = [finite('ix', ix), finite('iy', iy)];
-    // The speed it adds (a heavy body may take a large impulse).
-    speed('ix / mass', jx * w);
-    speed('iy / mass', jy * w);
+    pushSpeed(IMPULSE_SPEED, jx, jy, w);
     wakeParticle(this.ctx, i);
     this.particles.vx[i] += jx * w;
     this.particles.vy[i] += jy * w;
@@ -578,8 +573,7 @@ export class World {
     const jy = finite('iy', iy);
     if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) return api.pushBody(this.ctx, handle, jx, jy, x, y, true);
     const mass = bodyMass(this.particles, idx);
-    speed('ix / mass', mass > 0 ? jx / mass : 0);
-    speed('iy / mass', mass > 0 ? jy / mass : 0);
+    pushSpeed(IMPULSE_SPEED, jx, jy, mass > 0 ? 1 / mass : 0);
     this.wake(handle);
     applyImpulseByMass(this.particles, idx, jx, jy);
   }

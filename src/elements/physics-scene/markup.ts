@@ -139,8 +139,10 @@ export class MarkupSync implements SceneHost {
     this.keys = new WeakMap();
   }
 
-  /** The page's colour scheme changed: every body's style again (its default colours may differ; its problems were
-   * reported when it was described). */
+  /**
+   * The page's colour scheme changed: every body's style again (its default colours may differ; its problems were
+   * reported when it was described).
+   */
   restyle(): void {
     for (const [key, entry] of this.entries) {
       if (entry.kind === 'body') this.options.styles.setStyle(key, (entry.element as PhysicsBodyElement).styleOf(new Checker(entry.element), this.scheme()));

@@ -39,8 +39,8 @@ const TYPE_NAMES: Partial<Record<TopologyBody['type'], string>> = { softbody: 's
  * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
  * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable: Space
  * toggles pause, Tab picks the bodies one by one, the arrow keys push the picked body, Escape lets go (the Tab after it
- * leaves the scene), R resets (told to screen readers in a live region); it gets `role="group"`, `aria-label`, `aria-keyshortcuts="Space R"` and
- * `aria-description` unless the page sets them. A touch where no body is drawn scrolls or zooms the page; a touch on a
+ * leaves the scene), R resets (told to screen readers in a live region); it gets `role="group"`, `aria-label`,
+ * `aria-keyshortcuts="Space R"` and `aria-description` unless the page sets them. A touch where no body is drawn scrolls or zooms the page; a touch on a
  * body drags it. Before the script runs, a page reserves the element's box with `style="display:block;
  * aspect-ratio:16/9;overflow:hidden"` (its view's width / height), so nothing moves when it starts.
  *

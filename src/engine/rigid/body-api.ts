@@ -6,7 +6,7 @@ import { positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
-import { coordinate, finite, oneOf, speed } from '../validate.js';
+import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushSpeed, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
 import type { JointSide } from './joint-setup.js';
 import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
@@ -84,11 +84,9 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const [jx, jy] = [finite(names[0], fx), finite(names[1], fy)];
   const [px, py] = [x === undefined ? p.x[r.i] : coordinate('x', x), y === undefined ? p.y[r.i] : coordinate('y', y)];
   // The speeds it adds, along and around (a heavy body may take a large push): at once, or over a step.
-  const over = impulse ? 1 : ctx.settings.timestep;
-  const per = impulse ? ' / mass' : ' · timestep / mass';
-  speed(names[0] + per, jx * p.invMass[r.i] * over);
-  speed(names[1] + per, jy * p.invMass[r.i] * over);
-  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * p.invInertia[r.i] * over);
+  const seconds = impulse ? 1 : ctx.settings.timestep;
+  pushSpeed(impulse ? IMPULSE_SPEED : FORCE_SPEED, jx, jy, p.invMass[r.i], seconds);
+  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * p.invInertia[r.i] * seconds);
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);
