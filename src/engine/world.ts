@@ -119,17 +119,26 @@ export class World {
   }
   /** Acceleration of gravity, a copy (set it, or call setGravity(), which also wakes every body; both check it). */
   get gravity(): Vec2 { return { ...this.settings.gravity }; }
-  set gravity(v: Vec2) { this.settings.gravity = CHECK.gravity(v); }
+  set gravity(v: Vec2) {
+    const gravity = CHECK.gravity(v);
+    this.keepingVelocities(() => (this.settings.gravity = gravity));
+  }
   /** A box the particles cannot leave, or null (checked when set, as by setBounds()). */
   get bounds(): Bounds | null { return this.settings.bounds; }
   set bounds(v: Bounds | null) { this.settings.bounds = CHECK.bounds(v); }
   get variableStep(): boolean { return this.settings.variableStep; }
   set variableStep(v: boolean) { this.settings.variableStep = CHECK.variableStep(v); }
   get timestep(): number { return this.settings.timestep; }
-  set timestep(v: number) { this.settings.timestep = CHECK.timestep(v); }
+  set timestep(v: number) {
+    const timestep = CHECK.timestep(v);
+    this.keepingVelocities(() => (this.settings.timestep = timestep));
+  }
   /** The substeps option: a count, or 'auto' (see WorldOptions.substeps; substepCount is the count it gives now). */
   get substeps(): SubstepChoice { return this.settings.substeps; }
-  set substeps(v: SubstepChoice) { this.settings.substeps = CHECK.substeps(v); }
+  set substeps(v: SubstepChoice) {
+    const substeps = CHECK.substeps(v);
+    this.keepingVelocities(() => (this.settings.substeps = substeps));
+  }
   /** The substeps the next step takes: the count set, or under 'auto' AUTO_SUBSTEPS.rigid (6) for a world of rigid bodies, else AUTO_SUBSTEPS.particles (10). */
   get substepCount(): number {
     ensureTopology(this.ctx);
@@ -140,7 +149,10 @@ export class World {
   get damping(): number { return this.settings.damping; }
   set damping(v: number) { this.settings.damping = CHECK.damping(v); }
   get integrator(): Integrator { return this.settings.integrator; }
-  set integrator(v: Integrator) { this.settings.integrator = CHECK.integrator(v); }
+  set integrator(v: Integrator) {
+    const integrator = CHECK.integrator(v);
+    this.keepingVelocities(() => (this.settings.integrator = integrator));
+  }
   get boundsFriction(): number { return this.settings.boundsFriction; }
   set boundsFriction(v: number) { this.settings.boundsFriction = CHECK.boundsFriction(v); }
   get maxCatchUpSteps(): number { return this.settings.maxCatchUpSteps; }
@@ -151,8 +163,9 @@ export class World {
   set contactSlop(v: number) { this.settings.contactSlop = CHECK.contactSlop(v); }
 
   setGravity(x: number, y: number): void {
-    this.settings.gravity = CHECK.gravity({ x, y });
+    const gravity = CHECK.gravity({ x, y });
     wakeAll(this.ctx);
+    this.keepingVelocities(() => (this.settings.gravity = gravity));
   }
   setBounds(bounds: Bounds | null): void {
     this.settings.bounds = CHECK.bounds(bounds);
@@ -341,6 +354,36 @@ export class World {
     const half = this.settings.integrator === 'verlet' && p.invMass[i] !== 0 ? (0.5 * this.settings.timestep) / this.substepsWith(i) : 0;
     p.vx[i] = vx - this.settings.gravity.x * half;
     p.vy[i] = vy - this.settings.gravity.y * half;
+  }
+
+  /**
+   * A particle's stored velocity is v − ½·g·h under the gravity, substep and integrator of the moment (writeVelocity),
+   * so a change of any of them shifts the stored velocity of every movable particle by the difference of that term:
+   * without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once gravity was switched
+   * off. Rigid rows store v itself, and a sleeping body's rows are at rest (invMass 0 while parked: they wake under the
+   * new settings as a fresh body would).
+   */
+  private keepingVelocities(change: () => void): void {
+    const before = this.velocityOffset();
+    change();
+    const after = this.velocityOffset();
+    const dx = before.x - after.x;
+    const dy = before.y - after.y;
+    if (dx === 0 && dy === 0) return;
+    const p = this.particles;
+    for (let i = 0; i < p.count; i++) {
+      if (!p.alive[i] || p.invMass[i] === 0 || p.flags[i] & ParticleFlag.Rigid) continue;
+      p.vx[i] += dx;
+      p.vy[i] += dy;
+    }
+  }
+
+  /** ½·g·h, the part of a particle's velocity that its stored value leaves out (0 under the Euler integrators). */
+  private velocityOffset(): Vec2 {
+    const s = this.settings;
+    if (s.integrator !== 'verlet') return { x: 0, y: 0 };
+    const half = (0.5 * s.timestep) / (s.substeps === 'auto' ? substepCount(s, 1) : this.substepCount);
+    return { x: s.gravity.x * half, y: s.gravity.y * half };
   }
 
   /**

@@ -14,6 +14,56 @@ describe('integrators', () => {
     expect(pos.y).to.be.closeTo(2 - 4 * t + 0.5 * 9.81 * t * t, 1e-9);
   });
 
+  it('a particle at rest in the air stays there when gravity is switched off (setter and setGravity)', () => {
+    for (const change of ['setGravity', 'setter'] as const) {
+      const world = new World({ gravity: { x: 0, y: 9.81 } });
+      const p = world.addParticle({ x: 1, y: 2 });
+      if (change === 'setGravity') world.setGravity(0, 0);
+      else world.gravity = { x: 0, y: 0 };
+      for (let k = 0; k < 600; k++) world.step();
+      // It drifted by ½·g·h·t = 0.5 · 9.81 · (1/600) · 10 ≈ 0.08 before the stored velocity was shifted.
+      expect(world.getPosition(p).y, change).to.be.closeTo(2, 1e-9);
+      expect(world.getPosition(p).x, change).to.be.closeTo(1, 1e-12);
+    }
+  });
+
+  it('position Verlet follows the exact path when gravity changes in flight', () => {
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    const p = world.addParticle({ x: 0, y: 0, vx: 2, vy: -5 });
+    for (let k = 0; k < 30; k++) world.step();
+    const t1 = world.time;
+    const y1 = -5 * t1 + 0.5 * 9.81 * t1 * t1;
+    const vy1 = -5 + 9.81 * t1;
+    world.setGravity(3, -2);
+    for (let k = 0; k < 60; k++) world.step();
+    const t = world.time - t1;
+    const pos = world.getPosition(p);
+    expect(pos.x).to.be.closeTo(2 * (t1 + t) + 0.5 * 3 * t * t, 1e-9);
+    expect(pos.y).to.be.closeTo(y1 + vy1 * t - 0.5 * 2 * t * t, 1e-9);
+  });
+
+  it('a falling particle keeps to ½·g·t² when the timestep or the substeps change, and reads g·t on leaving Verlet', () => {
+    const changes: [string, (w: World) => void][] = [
+      ['substeps 10 → 3', (w) => (w.substeps = 3)],
+      ['substeps auto → 25', (w) => (w.substeps = 25)],
+      ['timestep 1/60 → 1/90', (w) => (w.timestep = 1 / 90)],
+    ];
+    for (const [name, change] of changes) {
+      const world = new World({ gravity: { x: 0, y: 9.81 }, substeps: name.startsWith('substeps 10') ? 10 : 'auto' });
+      const p = world.addParticle({ x: 0, y: 0 });
+      for (let k = 0; k < 30; k++) world.step();
+      change(world);
+      for (let k = 0; k < 45; k++) world.step();
+      const t = world.time;
+      expect(world.getPosition(p).y, name).to.be.closeTo(0.5 * 9.81 * t * t, 1e-9);
+    }
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    const p = world.addParticle({ x: 0, y: 0 });
+    for (let k = 0; k < 30; k++) world.step();
+    world.integrator = 'semi-implicit-euler';
+    expect(world.getVelocity(p).y).to.be.closeTo(9.81 * world.time, 1e-9);
+  });
+
   it('the Euler variants drift from the analytic free fall by O(h), Verlet does not', () => {
     const errors = INTEGRATORS.map((integrator) => {
       const world = new World({ gravity: { x: 0, y: 10 }, integrator, substeps: 1 });
