@@ -41,23 +41,25 @@ export interface SceneDescription {
 /** Adds one described body to the world. */
 export function buildBody(world: World, d: BodyDescription): Built {
   if (d == null || typeof d !== 'object') throw new TypeError(`a body description must be an object, got ${describeValue(d)}`);
-  switch (d.type) {
+  // The builder gets the description without the fields every description may carry (it refuses names it does not take).
+  const { type, id: _id, fill: _fill, stroke: _stroke, ...options } = d;
+  switch (type) {
     case 'box':
-      return createBox(world, d);
+      return createBox(world, options as BoxOptions);
     case 'circle':
-      return createCircle(world, d);
+      return createCircle(world, options as CircleOptions);
     case 'polygon':
-      return createPolygon(world, d);
+      return createPolygon(world, options as PolygonOptions);
     case 'rope':
-      return createRope(world, d);
+      return createRope(world, options as RopeOptions);
     case 'cloth':
-      return createCloth(world, d);
+      return createCloth(world, options as ClothOptions);
     case 'softbody':
-      return createSoftBody(world, d);
+      return createSoftBody(world, options as SoftBodyOptions);
     case 'ragdoll':
-      return createRagdoll(world, d);
+      return createRagdoll(world, options as RagdollOptions);
     default:
-      throw new RangeError(`type must be one of ${BODY_TYPES.join(', ')}, got ${describeValue((d as { type: unknown }).type)}`);
+      throw new RangeError(`type must be one of ${BODY_TYPES.join(', ')}, got ${describeValue(type)}`);
   }
 }
 

@@ -57,6 +57,52 @@ describe('bad input', () => {
     expect(() => new World(undefined)).not.to.throw();
   });
 
+  it('builders refuse option names they do not take, naming the name and the one meant, and leave the world as it was', () => {
+    const w = new World();
+    const cases: [string, () => unknown, string[]][] = [
+      ['box', () => createBox(w, { x: 0, y: 0, width: 1, height: 1, density: 5 } as never), ['unknown box option "density"', 'mass']],
+      ['circle', () => createCircle(w, { x: 0, y: 0, radius: 1, restitiution: 0.5 } as never), ['"restitiution"', 'did you mean restitution?']],
+      ['polygon', () => createPolygon(w, { points: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }], angel: 1 } as never), ['"angel"', 'did you mean angle?']],
+      ['rope', () => createRope(w, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 }, pinned: true } as never), ['unknown rope option "pinned"']],
+      ['cloth', () => createCloth(w, { origin: { x: 0, y: 0 }, columns: 3, rows: 3, spacing: 1, colums: 4 } as never), ['"colums"', 'did you mean columns?']],
+      ['soft body', () => createSoftBody(w, { center: { x: 0, y: 0 }, radius: 1, presure: 2 } as never), ['unknown soft body option "presure"', 'did you mean pressure?']],
+      ['ragdoll', () => createRagdoll(w, { x: 0, y: 0, heigth: 2 } as never), ['"heigth"', 'did you mean height?']],
+      ['not an object', () => createBox(w, 'big' as never), ['box options must be an object', '"big"']],
+    ];
+    for (const [, build, words] of cases) throwsNaming(build, TypeError, ...words);
+    expect(w.particleCount).to.equal(0);
+    // Every name each options type has is taken.
+    const material = { static: false, collide: true, friction: 0.3, restitution: 0.1, category: 1, mask: 0xffff, group: 0 };
+    const motion = { ...material, kinematic: false, vx: 1, vy: 0, angularVelocity: 0 };
+    expect(() => createBox(w, { ...motion, model: 'rigid', x: 0, y: 0, width: 1, height: 1, angle: 0, mass: 1, compliance: 0 })).not.to.throw();
+    expect(() => createCircle(w, { ...motion, model: 'rigid', x: 3, y: 0, radius: 1, angle: 1, mass: 1 })).not.to.throw();
+    expect(() => createPolygon(w, { ...motion, model: 'particles', points: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }], x: 6, y: 0, angle: 0, mass: 1, compliance: 0 })).not.to.throw();
+    const rope = { ...material, from: { x: 0, y: -5 }, to: { x: 2, y: -5 }, segments: 4, mass: 1, slack: 1, ropeLike: true, pinStart: true, pinEnd: false, compliance: 0, radius: 0.1, tethers: true };
+    expect(() => createRope(w, rope)).not.to.throw();
+    const cloth = { ...material, origin: { x: 0, y: -9 }, columns: 3, rows: 3, spacing: 1, mass: 1, structural: 0, shear: null, bend: null, pins: 'top' as const, radius: 0, tethers: true, tear: 0.5 };
+    expect(() => createCloth(w, cloth)).not.to.throw();
+    const soft = { ...material, center: { x: 9, y: 0 }, radius: 1, segments: 8, mass: 1, model: 'springs' as const, pressure: 1, compliance: 0, areaCompliance: 0, stiffness: 10, damping: 1 };
+    expect(() => createSoftBody(w, soft)).not.to.throw();
+    expect(() => createRagdoll(w, { ...material, x: 12, y: 0, height: 1.8, mass: 70, jointCompliance: 0 })).not.to.throw();
+  });
+
+  it('a particle frame starts with its vx, vy and angularVelocity, as a rigid body would', () => {
+    const w = new World({ gravity: { x: 0, y: 0 } });
+    const frame = createBox(w, { model: 'particles', x: 0, y: 0, width: 2, height: 2, vx: 3, vy: -1, angularVelocity: 2 });
+    const rigid = createBox(w, { x: 10, y: 0, width: 2, height: 2, vx: 3, vy: -1, angularVelocity: 2 });
+    for (let k = 0; k < 60; k++) w.step();
+    const c = w.bodyCentroid(frame.body);
+    const r = w.bodyPose(rigid.body);
+    expect(c.x).to.be.closeTo(3, 1e-6);
+    expect(c.y).to.be.closeTo(-1, 1e-6);
+    expect(r.x - 10).to.be.closeTo(c.x, 1e-6);
+    // The frame turned by about ω·t = 2 rad, as the rigid box did (its sticks hold the corners' distance).
+    const [p0, p1] = [w.getPosition(frame.particles[0]), w.getPosition(frame.particles[1])];
+    const turned = Math.atan2(p1.y - p0.y, p1.x - p0.x);
+    expect(turned).to.be.closeTo(r.angle, 0.05);
+    expect(r.angle).to.be.closeTo(2, 1e-9);
+  });
+
   it('settings set as properties are checked as the options are; a timestep over 1 s is refused as a step is', () => {
     const w = new World();
     const p = w.addParticle({ x: 0, y: 0 });

@@ -1,18 +1,23 @@
 import type { World } from '../world.js';
 import { coordinate, positive } from '../validate.js';
-import { colliderOf, transactional, type Built } from './common.js';
-import { createRigid, modelOf, type RigidOptions } from './rigid.js';
+import { builderOptions, optionNames, colliderOf, transactional, type Built } from './common.js';
+import { createRigid, modelOf, RIGID_OPTIONS, type RigidOptions } from './rigid.js';
 
 export interface CircleOptions extends RigidOptions {
   x: number;
   y: number;
   radius: number;
+  /** Initial angle, radians (a rigid disc turns, and is drawn with a mark that shows it). Default 0. */
+  angle?: number;
   /** Default: the disc's area (density 1). */
   mass?: number;
 }
 
+const CIRCLE_OPTIONS = optionNames<CircleOptions>({ ...RIGID_OPTIONS, x: true, y: true, radius: true, angle: true, mass: true });
+
 /** A ball: a rigid disc that spins and rolls, or (model 'particles') one particle colliding as a circle. */
 export function createCircle(world: World, o: CircleOptions): Built {
+  builderOptions('circle', o, CIRCLE_OPTIONS);
   const radius = coordinate('radius', positive('radius', o?.radius));
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, undefined, radius);
   const mass = o.static ? Infinity : positive('mass', o.mass ?? Math.PI * radius * radius);

@@ -1,5 +1,5 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { coordinate, nonNegative, positive } from '../validate.js';
+import { coordinate, describeValue, knownOptions, nonNegative, positive } from '../validate.js';
 
 /** What every builder returns: the body and the handles of what it made. */
 export interface Built {
@@ -29,6 +29,26 @@ export interface BodyOptions {
   category?: number;
   mask?: number;
   group?: number;
+}
+
+/**
+ * The names an options type takes, from an object with one key per name: the compiler insists on every key of T, so
+ * the list cannot fall behind the type.
+ */
+export function optionNames<T>(keys: Record<keyof T, true>): readonly string[] {
+  return Object.keys(keys);
+}
+
+export const BODY_OPTIONS = { static: true, collide: true, friction: true, restitution: true, category: true, mask: true, group: true } as const;
+
+/**
+ * A builder's options: an object whose every name the builder takes. A misspelt or foreign name (`density` for a box,
+ * which takes `mass`) is a TypeError naming it, as `new World()` does, instead of an option silently ignored.
+ */
+export function builderOptions<T extends object>(what: string, o: T, names: readonly string[]): T {
+  if (o == null || typeof o !== 'object') throw new TypeError(`${what} options must be an object, got ${describeValue(o)}`);
+  knownOptions(`${what} option`, o, names);
+  return o;
 }
 
 /** The collision options of a body's options, passed on as they are (a box's frame, a rigid body). */

@@ -1,6 +1,6 @@
 import type { Handle, World } from '../world.js';
 import { coordinate, positive } from '../validate.js';
-import { colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
+import { BODY_OPTIONS, builderOptions, optionNames, colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RagdollOptions extends BodyOptions {
   /** Pelvis position. */
@@ -53,11 +53,14 @@ const LIMITS: [number, number, number, number, number][] = [
   [2, 9, 10, 0, 2.3], // knee R, mirrored
 ];
 
+const RAGDOLL_OPTIONS = optionNames<RagdollOptions>({ ...BODY_OPTIONS, x: true, y: true, height: true, mass: true, jointCompliance: true });
+
 /**
  * A stick-figure ragdoll (seed 2.6): 11 particles, 10 bones as sticks, joints as shared particles and angle limits
  * at the neck, shoulders, elbows, hips and knees.
  */
 export function createRagdoll(world: World, o: RagdollOptions): Built {
+  builderOptions('ragdoll', o, RAGDOLL_OPTIONS);
   const x = coordinate('x', o?.x);
   const y = coordinate('y', o.y);
   const height = coordinate('height', positive('height', o.height ?? RAGDOLL_HEIGHT));

@@ -1,6 +1,6 @@
-import type { World } from '../world.js';
-import { coordinate, finite, oneOf, positive } from '../validate.js';
-import { BODY_MODELS, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
+import type { Handle, World } from '../world.js';
+import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
+import { BODY_MODELS, BODY_OPTIONS, builderOptions, optionNames, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
 
 /** What a rigid box, polygon or circle takes besides its shape. */
@@ -41,11 +41,16 @@ export interface BoxOptions extends RigidOptions {
   compliance?: number;
 }
 
+export const RIGID_OPTIONS = { ...BODY_OPTIONS, model: true, kinematic: true, vx: true, vy: true, angularVelocity: true } as const;
+const POLYGON_OPTIONS = optionNames<PolygonOptions>({ ...RIGID_OPTIONS, points: true, x: true, y: true, angle: true, mass: true, compliance: true });
+const BOX_OPTIONS = optionNames<BoxOptions>({ ...RIGID_OPTIONS, x: true, y: true, width: true, height: true, angle: true, mass: true, compliance: true });
+
 /**
  * A rigid polygon as perimeter particles braced by sticks (seed 2.3): the n perimeter links plus a fan of
  * n − 3 diagonals from vertex 0, which is 2n − 3 links, exactly what fixes a planar frame of n points.
  */
 export function createPolygon(world: World, o: PolygonOptions): Built {
+  builderOptions('polygon', o, POLYGON_OPTIONS);
   if (modelOf(o) === 'rigid') return createRigid(world, o, o?.points);
   return createFrame(world, o, []);
 }
@@ -106,12 +111,15 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     if (extraBraces.length === 0) constraints.push(world.addAreaConstraint(particles.slice(), { compliance }));
     // A concave outline (seed 2.8) collides as convex parts: indices into the outline, i.e. into `particles`.
     const parts = isConvex(local) ? undefined : decompose(local);
-    return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true, parts));
+    const body = world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true, parts));
+    if (!o.static) startMoving(world, body, o);
+    return body;
   });
 }
 
 /** A box centred on (x, y): a rigid body, or (model 'particles') 4 corner particles, 4 edges and 2 diagonals. */
 export function createBox(world: World, o: BoxOptions): Built {
+  builderOptions('box', o, BOX_OPTIONS);
   const w = coordinate('width', positive('width', o?.width)) / 2;
   const h = coordinate('height', positive('height', o.height)) / 2;
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);
@@ -131,10 +139,26 @@ export function createBox(world: World, o: BoxOptions): Built {
     mass: o.mass ?? 4 * w * h,
     compliance: o.compliance,
     static: o.static,
+    vx: o.vx,
+    vy: o.vy,
+    angularVelocity: o.angularVelocity,
     ...collisionOptions(o),
     },
     [[1, 3]],
   );
+}
+
+/** A particle frame's vx, vy and angularVelocity: each particle moves as a point of a rigid body turning about their mean. */
+function startMoving(world: World, body: Handle, o: RigidOptions): void {
+  const vx = speed('vx', o.vx ?? 0);
+  const vy = speed('vy', o.vy ?? 0);
+  const w = finite('angularVelocity', o.angularVelocity ?? 0);
+  if (vx === 0 && vy === 0 && w === 0) return;
+  const c = world.bodyCentroid(body);
+  for (const h of world.bodyParticleHandles(body)) {
+    const p = world.getPosition(h);
+    world.setVelocity(h, vx - w * (p.y - c.y), vy + w * (p.x - c.x));
+  }
 }
 
 /** Whether a counter-clockwise outline turns left (or goes straight) at every vertex. */

@@ -268,7 +268,6 @@ export class Bindings {
       this.#keys.set(built.body, r.key);
       r.rigid = rigidFacts(this.world, built.body, r.desc, descriptor);
       const idx = this.world.bodyParticleIndices(built.body);
-      if (!r.rigid) this.#startMoving(built.body, idx, r.desc as Motion);
       const { x, y } = this.world.particles;
       r.basis = measurePose(descriptor.pose, r.desc, idx, x, y);
       return null;
@@ -277,18 +276,6 @@ export class Bindings {
       r.rigid = null;
       return errorOf(r.key, error);
     }
-  }
-
-  /**
-   * A body built of particles with a described velocity and angular velocity (a particle frame's builder takes
-   * neither): each particle moves as a point of a rigid body turning about the particles' mean.
-   */
-  #startMoving(body: Handle, idx: Int32Array, m: Motion): void {
-    const w = m.angularVelocity ?? 0;
-    if (m.static || (!m.vx && !m.vy && !w)) return;
-    const p = this.world.particles;
-    const c = this.world.bodyCentroid(body);
-    for (const i of idx) this.world.setVelocity(this.world.particleHandle(i), (m.vx ?? 0) - w * (p.y[i] - c.y), (m.vy ?? 0) + w * (p.x[i] - c.x));
   }
 
   #unbuild(r: BodyRecord): void {
