@@ -1,24 +1,38 @@
-import { buildScene, catalogue, World, type SceneName } from '../../../src/engine/index.js';
+import { buildScene, catalogue, World, type BodyDescription, type Handle, type SceneName, type Vec2 } from '../../../src/engine/index.js';
 
-/** Builds a catalogue scene with optional world overrides. */
+/** Builds a catalogue scene with optional world overrides; `description` is what it was built from. */
 export function scene(name: SceneName, world: Record<string, unknown> = {}) {
   const description = catalogue[name].make();
   description.world = { ...description.world, ...world };
-  return buildScene(description);
+  return { ...buildScene(description), description };
 }
 
 /**
- * Deepest penetration of any body vertex into another polygon body (its distance inside the outline), by brute
- * force over all pairs. Bodies are given by their particle index lists (convex outlines, counter-clockwise).
+ * A box's outline in world coordinates, counter-clockwise in the engine's y-down frame as the particle frames are:
+ * from its rigid pose and its described size, or from its corner particles when it is a frame of particles.
  */
-export function deepestPenetration(world: World, outlines: Int32Array[]): number {
+export function boxOutline(world: World, body: Handle, d: BodyDescription): Vec2[] {
+  if (d.type !== 'box') throw new TypeError(`boxOutline takes boxes, got ${d.type}`);
+  const idx = world.bodyParticleIndices(body);
   const { x, y } = world.particles;
+  if (idx.length === 4) return [...idx].map((i) => ({ x: x[i], y: y[i] }));
+  const pose = world.bodyPose(body);
+  const [c, s] = [Math.cos(pose.angle), Math.sin(pose.angle)];
+  const [w, h] = [d.width / 2, d.height / 2];
+  return [[-w, -h], [w, -h], [w, h], [-w, h]].map(([lx, ly]) => ({ x: pose.x + lx * c - ly * s, y: pose.y + lx * s + ly * c }));
+}
+
+/**
+ * Deepest penetration of any body vertex into another convex outline (its distance inside the outline), by brute
+ * force over all pairs. Outlines are world-space vertex lists in the frames' winding (boxOutline).
+ */
+export function deepestPenetration(outlines: Vec2[][]): number {
   // Bounds prefilter keeps this O(n²) in pairs but cheap per pair.
-  const bounds = outlines.map((idx) => {
+  const bounds = outlines.map((points) => {
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-    for (const i of idx) {
-      minX = Math.min(minX, x[i]); maxX = Math.max(maxX, x[i]);
-      minY = Math.min(minY, y[i]); maxY = Math.max(maxY, y[i]);
+    for (const p of points) {
+      minX = Math.min(minX, p.x); maxX = Math.max(maxX, p.x);
+      minY = Math.min(minY, p.y); maxY = Math.max(maxY, p.y);
     }
     return [minX, minY, maxX, maxY];
   });
@@ -33,12 +47,12 @@ export function deepestPenetration(world: World, outlines: Int32Array[]): number
       for (const v of outlines[b]) {
         let inside = Infinity;
         for (let k = 0; k < A.length; k++) {
-          const i0 = A[k];
-          const i1 = A[(k + 1) % A.length];
-          const ex = x[i1] - x[i0];
-          const ey = y[i1] - y[i0];
+          const p0 = A[k];
+          const p1 = A[(k + 1) % A.length];
+          const ex = p1.x - p0.x;
+          const ey = p1.y - p0.y;
           // Distance inside the edge (positive inside a counter-clockwise outline).
-          inside = Math.min(inside, -((x[v] - x[i0]) * ey - (y[v] - y[i0]) * ex) / Math.sqrt(ex * ex + ey * ey));
+          inside = Math.min(inside, -((v.x - p0.x) * ey - (v.y - p0.y) * ex) / Math.sqrt(ex * ex + ey * ey));
         }
         worst = Math.max(worst, inside);
       }
