@@ -508,6 +508,7 @@ export class SceneRenderer {
     if (this.debug) this.drawDebug(ctx, t, f);
     if (this.hook) {
       ctx.save();
+      forgetCachedStyles(s);
       try {
         const v = (this.view ??= { p: s, ctx, positions: this.positions, poses: this.poses, topology: t, frame: f, scale: 1, offsetX: 0, offsetY: 0, alpha, requestDraw: () => this.requestDraw() });
         v.ctx = ctx;
@@ -699,4 +700,18 @@ export class SceneRenderer {
     ctx.fillStyle = '#d00';
     ctx.fill();
   }
+}
+
+/**
+ * p5 2.x skips setting the context's fillStyle/strokeStyle when the colour asked for equals the one it set last
+ * (Renderer2D's _cachedFillStyle/_cachedStrokeStyle). The bodies are drawn on the context directly and the hook's
+ * own state is restored after it, so from the second frame on a hook's p.fill('#c0392b') matched p5's cache and
+ * drew in the last body's colour. Forgetting the cache before each hook makes p5 set the colours again. A no-op if
+ * a later p5 keeps them elsewhere (test/render: the hook's colours on the canvas, frame after frame, catch that).
+ */
+function forgetCachedStyles(s: p5): void {
+  const states = (s as unknown as { _renderer?: { states?: { setValue?: (key: string, value: unknown) => void } } })._renderer?.states;
+  if (typeof states?.setValue !== 'function') return;
+  states.setValue('_cachedFillStyle', undefined);
+  states.setValue('_cachedStrokeStyle', undefined);
 }

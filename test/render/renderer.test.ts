@@ -217,6 +217,35 @@ describe('SceneRenderer draws only what changes', () => {
     await waitFor(() => hooked.includes(30), 'the hook given the new frame');
   });
 
+  it("a hook's p5 fill and stroke colours are drawn in every frame, not only the first (p5 caches the colour it set last)", async () => {
+    const frames = new FrameStore();
+    frames.accept(frame(1, 0, false, [5, 5], 1));
+    const r = await start(frames);
+    r.setStyle(1, { fill: '#00ff00', stroke: '#0000ff', lineWidth: 1 });
+    // No push()/pop(): p5's pop() puts back the colour cache it had, which hid the stale cache.
+    r.hook = ({ p }) => {
+      p.resetMatrix();
+      p.noStroke();
+      p.fill('#ff0000');
+      p.rect(0, 0, 10, 10);
+      p.noFill();
+      p.stroke('#ff00ff');
+      p.strokeWeight(4);
+      p.line(0, 30, 40, 30);
+    };
+    const ctx = r.canvas!.getContext('2d')!;
+    const density = r.canvas!.width / r.canvas!.getBoundingClientRect().width;
+    const at = (x: number, y: number) => Array.from(ctx.getImageData(Math.floor(x * density), Math.floor(y * density), 1, 1).data).slice(0, 3);
+    // Each new frame moves the disc (drawn green with a blue outline, on the context directly) and draws the hook again.
+    for (let k = 2; k < 6; k++) {
+      const drawn = r.drawn;
+      frames.accept(frame(k, k / 60, false, [5, 5 + k / 10], 1));
+      await waitFor(() => r.drawn > drawn, `frame ${k} drawn`);
+      expect(at(3, 3), `the hook's fill in frame ${k}`).to.deep.equal([255, 0, 0]);
+      expect(at(20, 30), `the hook's stroke in frame ${k}`).to.deep.equal([255, 0, 255]);
+    }
+  });
+
   it('far from the viewport gives its pixels back (0 × 0, same CSS box); near again draws the newest frame at once, context state kept', async () => {
     const frames = new FrameStore();
     frames.accept(frame(1, 0, false, [5, 5], 1));
