@@ -88,7 +88,28 @@ export function generate(manifest) {
       out.push('');
       out.push(...describeApi(family.base, classes, { inheritedNote: null }));
     }
+    // Shared base classes between the family's base and its tags (the shapes' one: boxes, polygons and balls), each
+    // written once, under the tags that share it.
+    const ancestors = (decl) => {
+      const list = [];
+      for (let up = superOf(decl); up && up !== family.base; up = superOf(up)) list.push(up);
+      return list;
+    };
+    const shared = new Map();
+    for (const tag of family.tags) for (const up of ancestors(tag)) if (!up.tagName) shared.set(up.name, up);
+    const sharedBy = (decl) => family.tags.filter((t) => ancestors(t).includes(decl));
+    const tagList = (list) => {
+      const names = list.map((t) => `\`<${t.tagName}>\``);
+      return names.length > 1 ? `${names.slice(0, -1).join(', ')} and ${names.at(-1)}` : names.join('');
+    };
+    const sharedOrder = [...shared.values()].sort((a, b) => byCodePoint(a.name, b.name));
     for (const tag of family.tags) {
+      // A shared base's section comes just before the first tag that shares it.
+      for (const decl of sharedOrder.filter((d) => sharedBy(d)[0] === tag)) {
+        out.push(`### Common to ${tagList(sharedBy(decl))}`);
+        out.push('');
+        out.push(...describeApi(decl, classes, { inheritedNote: null }));
+      }
       out.push(`<a id="${tag.tagName}"></a>`);
       out.push('');
       out.push(`### \`<${tag.tagName}>\``);
@@ -98,10 +119,13 @@ export function generate(manifest) {
       out.push('');
       const parentTag = nearestTagAncestor(tag, classes);
       let inheritedNote = null;
+      const sharedBases = ancestors(tag).filter((up) => !up.tagName);
+      const also = sharedBases.map((up) => ` and to ${tagList(sharedBy(up))}`).join('');
       if (parentTag) {
-        inheritedNote = `Also every attribute, property, method, event and CSS part of [\`<${parentTag.tagName}>\`](#${parentTag.tagName}), except where listed here.`;
+        const common = sharedBases.length ? `, and what is common to ${tagList(sharedBy(sharedBases[0]))} (above)` : '';
+        inheritedNote = `Also every attribute, property, method, event and CSS part of [\`<${parentTag.tagName}>\`](#${parentTag.tagName})${common}, except where listed here.`;
       } else if (!family.base.tagName && tag !== family.base) {
-        inheritedNote = `Also the attributes, properties and methods common to ${common} (above).`;
+        inheritedNote = `Also the attributes, properties and methods common to ${common}${also} (above).`;
       }
       out.push(...describeApi(tag, classes, { inheritedNote }));
     }

@@ -21,5 +21,7 @@ export { ClothSimElement } from './elements/cloth-sim.js';
 export { RagdollSimElement } from './elements/ragdoll-sim.js';
 
 export type { DrawHook, DrawView, BodyStyle } from './render/renderer.js';
+// What an engine call on a scene that is not in the page (or was removed) rejects with: `e instanceof EngineStoppedError`.
+export { EngineStoppedError } from './worker/client.js';
 // What the public API above names: diagnostics(), snapshot()/restore(), physics-ready's transport, DrawView's topology.
 export type { Diagnostics, HostSnapshot, Topology, TopologyBody, Transport } from './worker/protocol.js';

@@ -11,9 +11,13 @@ import { SCHEME_COLOURS, type ColourScheme } from './physics-scene/scheme.js';
  * @fires physics-error - A bad attribute value (detail: element, attribute, value, message); bubbles to the scene.
  */
 export class PhysicsRopeElement extends PhysicsBodyElement {
+  /** The first end's x (pinned with the default `pin="start"`). Default 0. */
   @property({ type: Number, converter: numberAttribute }) x1?: number;
+  /** The first end's y. Default 0. */
   @property({ type: Number, converter: numberAttribute }) y1?: number;
+  /** The second end's x. Default x1 + 4. */
   @property({ type: Number, converter: numberAttribute }) x2?: number;
+  /** The second end's y. Default y1. */
   @property({ type: Number, converter: numberAttribute }) y2?: number;
   /** Number of links (whole number 1..10000). Default 20. */
   @property({ type: Number, converter: numberAttribute }) segments?: number;

@@ -2,7 +2,7 @@
 // connect/disconnect cycles leave no worker, timer, frame callback, listener, observer or p5 sketch behind.
 import { expect } from '@open-wc/testing';
 import p5 from 'p5';
-import type { PhysicsSceneElement } from '../../src/index.js';
+import { EngineStoppedError, type PhysicsSceneElement } from '../../src/index.js';
 import { liveResources } from '../../src/worker/resources.js';
 import { frames, mount, unmount, waitFor } from './helpers.js';
 
@@ -204,6 +204,8 @@ describe('<physics-scene> lifecycle', () => {
       for (const call of [() => s.step(1), () => s.reset(), () => s.stateHash(), () => s.diagnostics(), () => s.snapshot()]) {
         const error = await call().then(() => null, (e: Error) => e);
         expect(error?.name, String(call)).to.equal('EngineStoppedError');
+        // The class the package exports, for `instanceof`.
+        expect(error, String(call)).to.be.instanceOf(EngineStoppedError);
       }
     }
     await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');

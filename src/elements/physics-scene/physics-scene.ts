@@ -100,7 +100,10 @@ export class PhysicsSceneElement extends LitElement {
    * `diagnostics().substepCount` reads the count the engine takes.
    */
   @property({ converter: substepsAttribute }) substeps: number | 'auto' = 'auto';
-  /** Fixed step in seconds. Default 1/60. */
+  /**
+   * Fixed step in seconds. Default 1/60.
+   * @type {number}
+   */
   @property({ type: Number }) timestep = 1 / 60;
   /** Starts (and stays) paused. */
   @property({ type: Boolean, reflect: true }) paused = false;
