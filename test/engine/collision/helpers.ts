@@ -148,6 +148,11 @@ export function bruteSignedDistance(a: Shape, b: Shape): number {
   const eb = coreEdges(b);
   for (const x of ea) for (const y of eb) if (segmentsCross(x, y)) return -Infinity;
   if (pts(a).some((q) => insideCore(b, q.x, q.y)) || pts(b).some((q) => insideCore(a, q.x, q.y))) return -Infinity;
+  // Two equal polygons (or one inside the other along shared edges) neither cross nor hold a vertex strictly inside:
+  // a core's centre strictly inside the other tells that they overlap.
+  const centre = (s: Shape) => pts(s).reduce((c, q, _k, all) => ({ x: c.x + q.x / all.length, y: c.y + q.y / all.length }), { x: 0, y: 0 });
+  const [ca, cb] = [centre(a), centre(b)];
+  if (insideCore(b, ca.x, ca.y) || insideCore(a, cb.x, cb.y)) return -Infinity;
   let d = Infinity;
   for (const q of pts(a)) for (const e of eb) d = Math.min(d, segDist(q.x, q.y, e[0], e[1], e[2], e[3]));
   for (const q of pts(b)) for (const e of ea) d = Math.min(d, segDist(q.x, q.y, e[0], e[1], e[2], e[3]));
