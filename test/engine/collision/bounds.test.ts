@@ -96,14 +96,25 @@ describe('bounding volumes', () => {
       // Tight: some point touches each side of the AABB and each slab of the 8-DOP.
       const touches = (f: (p: P) => number, v: number) => o.some((p) => Math.abs(f(p) - v) <= 1e-6 * size + 1e-12);
       if (s.type !== ShapeType.Circle) {
-        if (!touches((p) => p.x, box.minX) || !touches((p) => p.y, box.maxY)) fail.add('AABB not tight');
-        if (!touches((p) => p.x + p.y, dop.max[2]) || !touches((p) => p.x - p.y, dop.min[3])) fail.add('8-DOP not tight');
+        const sides: [string, (p: P) => number, number][] = [['minX', (p) => p.x, box.minX], ['maxX', (p) => p.x, box.maxX], ['minY', (p) => p.y, box.minY], ['maxY', (p) => p.y, box.maxY]];
+        for (const [side, f, v] of sides) if (!touches(f, v)) fail.add(`AABB not tight at ${side}`);
+        const axes: ((p: P) => number)[] = [(p) => p.x, (p) => p.y, (p) => p.x + p.y, (p) => p.x - p.y];
+        for (let k = 0; k < 4; k++) {
+          if (!touches(axes[k], dop.min[k]) || !touches(axes[k], dop.max[k])) fail.add(`8-DOP not tight on slab ${k}`);
+        }
         // OBB: no larger than the AABB, and some point on each of its four sides.
         if (4 * obb.hu * obb.hv > aabbArea(box) * (1 + 1e-12) + tol) fail.add(`OBB area ${4 * obb.hu * obb.hv} > AABB ${aabbArea(box)}`);
         const u = (p: P) => (p.x - obb.cx) * obb.ux + (p.y - obb.cy) * obb.uy;
         const v = (p: P) => -(p.x - obb.cx) * obb.uy + (p.y - obb.cy) * obb.ux;
         if (!touches(u, obb.hu) || !touches(u, -obb.hu) || !touches(v, obb.hv) || !touches(v, -obb.hv)) fail.add('OBB not tight');
-      } else if (Math.abs(circ.r - s.radius) > tol) fail.add('circle bound of a circle');
+      } else {
+        if (Math.abs(circ.r - s.radius) > tol) fail.add('circle bound of a circle');
+        // A circle's box and slabs are its centre's ± r (± r·√2 on the diagonals' unnormalized axes).
+        const r = s.radius;
+        const r2 = r * Math.SQRT2;
+        if (Math.abs(box.maxX - box.minX - 2 * r) > tol || Math.abs(box.maxY - box.minY - 2 * r) > tol) fail.add('AABB of a circle not 2r wide');
+        if (Math.abs(dop.max[2] - dop.min[2] - 2 * r2) > 2 * tol || Math.abs(dop.max[3] - dop.min[3] - 2 * r2) > 2 * tol) fail.add('8-DOP of a circle not tight');
+      }
     }
     fail.check();
   });
