@@ -129,6 +129,8 @@ export class SceneRenderer {
   /** 'over': the hook draws on top of the default drawing; 'replace': instead of it. */
   drawMode: 'over' | 'replace' = 'over';
   hook: DrawHook | null = null;
+  /** The clock interpolation reads, on performance.now()'s scale (frames are stamped with it on arrival); tests set it. */
+  now: () => number = () => performance.now();
   /** Frames drawn (for tests and diagnostics). */
   drawn = 0;
 
@@ -544,7 +546,7 @@ export class SceneRenderer {
     let alpha = 1;
     const interval = (f[F.time] - prev[F.time]) * 1000;
     if (frames.received > 1 && prev[F.topology] === f[F.topology] && prev[F.particles] === n && interval > 0 && f[F.running]) {
-      alpha = Math.min(1, Math.max(0, (performance.now() - frames.currAt) / interval));
+      alpha = Math.min(1, Math.max(0, (this.now() - frames.currAt) / interval));
     }
     if (alpha >= 1) {
       for (let i = 0; i < 2 * n; i++) pos[i] = f[HEADER + i];

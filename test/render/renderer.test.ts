@@ -99,14 +99,21 @@ describe('SceneRenderer', () => {
     renderer.viewWidth = 10;
     renderer.viewHeight = 10;
     renderer.hook = (v: DrawView) => views.push({ x: v.positions[0], alpha: v.alpha });
-    await waitFor(() => views.some((v) => v.alpha === 1), 'a frame drawn at the newest state');
-    // A second of simulated time between the two frames: the draws of that second fall in between, x = 10 · alpha.
-    const between = views.filter((v) => v.alpha < 1);
-    expect(between.length).to.be.greaterThan(0);
-    for (const v of between) {
-      expect(v.alpha).to.be.greaterThan(0);
-      expect(v.x).to.be.closeTo(10 * v.alpha, 1e-9);
+    // A second of simulated time between the two frames: a draw a quarter of a second after the newest frame arrived
+    // shows a quarter of the way from the previous one (x = 10 · alpha), on a clock the test holds.
+    let elapsed = 250;
+    renderer.now = () => frames.currAt + elapsed;
+    await waitFor(() => views.length > 0, 'a frame drawn');
+    for (const v of views) {
+      expect(v.alpha).to.equal(0.25);
+      expect(v.x).to.be.closeTo(2.5, 1e-9);
     }
+    elapsed = 600;
+    await waitFor(() => views.at(-1)!.alpha !== 0.25, 'a draw later in the second');
+    expect(views.at(-1)!.alpha).to.equal(0.6);
+    expect(views.at(-1)!.x).to.be.closeTo(6, 1e-9);
+    elapsed = 1500;
+    await waitFor(() => views.at(-1)!.alpha === 1, 'a frame drawn at the newest state');
     expect(views.at(-1)!.x).to.equal(10);
     // Paused frames are drawn as they are, once.
     views.length = 0;

@@ -79,15 +79,15 @@ describe('engine worker', () => {
   it('a worker script that fails to load gives physics-error and the scene runs on the main thread', async () => {
     PhysicsSceneElement.workerFactory = () => new Worker(new URL('./no-such-worker.js', import.meta.url), { type: 'module' });
     const errors: PhysicsErrorDetail[] = [];
-    const t0 = performance.now();
     const scene = await mount('gravity="0 10"', `<physics-circle x="5" y="1" radius="0.5"></physics-circle>`, {
       before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
     });
     scenes.push(scene);
-    expect(performance.now() - t0).to.be.below(PhysicsSceneElement.callTimeout);
     expect(errors.length).to.equal(1);
+    // Found by the worker's error event, not by a call left unanswered for callTimeout.
+    expect(errors[0].message).not.to.match(/did not answer/);
     expect(errors[0].attribute).to.equal('worker');
-    expect(errors[0].message).to.match(/worker/);
+    expect(errors[0].message).to.match(/^engine worker failed, running on the main thread instead: /);
     expect(scene.mode).to.equal('main');
     const ball = scene.querySelector('physics-circle')!;
     await waitFor(() => ball.y > 1.5, 'the ball to fall');
