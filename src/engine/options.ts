@@ -285,3 +285,27 @@ export function checkBounds(b: Bounds): Bounds {
   if (!(out.minX < out.maxX && out.minY < out.maxY)) throw new RangeError(`bounds must have minX < maxX and minY < maxY, got ${JSON.stringify(b)}`);
   return out;
 }
+
+/**
+ * The names each options object of the World's methods takes (the compiler holds each list to its type), so that a
+ * misspelt name is a TypeError naming it (validate.ts knownNames) instead of an option silently ignored.
+ */
+export const OPTION_NAMES = {
+  particle: { x: true, y: true, mass: true, radius: true, vx: true, vy: true } satisfies Record<keyof ParticleOptions, true>,
+  distance: { length: true, minLength: true, maxLength: true, compliance: true, breakStrain: true } satisfies Record<keyof DistanceOptions, true>,
+  angle: { min: true, max: true, compliance: true } satisfies Record<keyof AngleOptions, true>,
+  spring: { length: true, stiffness: true, damping: true } satisfies Record<keyof SpringOptions, true>,
+  pin: { x: true, y: true, compliance: true } satisfies Record<keyof PinOptions, true>,
+  area: { pressure: true, compliance: true } satisfies Record<keyof AreaOptions, true>,
+  grab: { stiffness: true, pickRadius: true } satisfies Record<keyof GrabOptions, true>,
+  collider: { shape: true, parts: true, friction: true, restitution: true, category: true, mask: true, group: true } satisfies Record<keyof ColliderOptions, true>,
+  rigidBody: {
+    points: true, radius: true, outlines: true, x: true, y: true, angle: true, vx: true, vy: true, angularVelocity: true, type: true,
+    density: true, mass: true, collide: true, friction: true, restitution: true, category: true, mask: true, group: true,
+  } satisfies Record<keyof RigidBodyOptions, true>,
+  joint: {
+    type: true, a: true, b: true, particleA: true, particleB: true, anchor: true, anchorA: true, anchorB: true, axis: true, lowerAngle: true,
+    upperAngle: true, motorSpeed: true, maxMotorTorque: true, lower: true, upper: true, length: true, stiffness: true, damping: true,
+    compliance: true, collideConnected: true,
+  } satisfies Record<keyof JointOptions, true>,
+};

@@ -144,3 +144,17 @@ export function knownOptions(what: string, options: object, known: readonly stri
     throw new TypeError(`unknown ${what} ${JSON.stringify(name)}${hint}: the ${what}s are ${known.join(', ')}`);
   }
 }
+
+/**
+ * knownOptions() for the calls a builder makes thousands of times (addParticle, addDistance): the names as an object's
+ * keys, looked up without making a list of the options' names; the message is knownOptions()'s.
+ */
+export function knownNames(what: string, options: object, known: Readonly<Record<string, true>>): void {
+  for (const name in options) if (known[name] !== true) knownOptions(what, { [name]: true }, Object.keys(known));
+}
+
+/** An options argument: an object, or a TypeError naming it and what it was. */
+export function objectOf<T>(what: string, value: T): T & object {
+  if (value == null || typeof value !== 'object') throw new TypeError(`${what} must be an object, got ${show(value)}`);
+  return value as T & object;
+}

@@ -22,7 +22,7 @@ import { ensureTopology, topologyChanged, wakeAll, wakeParticle } from './pipeli
 import { pickGrabPoint } from './pipeline/pick.js';
 import { Kind } from './constraint-registry.js';
 import { applyImpulseByMass, bodyMass, centroid, softRingLength } from './body-registry.js';
-import { BODY_KINDS, DEFAULT_LIMITS, resolveCollider, type ResolvedCollider } from './options.js';
+import { BODY_KINDS, DEFAULT_LIMITS, OPTION_NAMES, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, substepCount, type StepSettings } from './settings.js';
@@ -32,7 +32,7 @@ import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { coordinate, describeValue, finite, integer, knownOptions, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
+import { coordinate, describeValue, finite, integer, knownNames, knownOptions, objectOf, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -241,6 +241,7 @@ export class World {
 
   addParticle(options: ParticleOptions): Handle {
     if (options == null || typeof options !== 'object') throw new TypeError(`particle options must be an object, got ${String(options)}`);
+    knownNames('particle option', options, OPTION_NAMES.particle);
     const x = coordinate('x', options.x);
     const y = coordinate('y', options.y);
     const mass = options.mass === undefined ? 1 : options.mass;
@@ -400,6 +401,7 @@ export class World {
 
   /** A distance constraint (stick, slack rope link or minimum distance) between particles a and b. */
   addDistance(a: Handle, b: Handle, options: DistanceOptions = {}): Handle {
+    knownNames('distance option', objectOf('distance options', options), OPTION_NAMES.distance);
     const [ia, ib] = this.pair(a, b);
     const p = this.particles;
     const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
@@ -422,6 +424,7 @@ export class World {
     const [, ic] = this.pair(b, c, 'b', 'c');
     if (ia === ic) throw new RangeError(`a and c must be different particles, got ${a} twice`);
     if (options == null) throw new TypeError('angle options {min, max} are required');
+    knownNames('angle limit option', objectOf('angle limit options', options), OPTION_NAMES.angle);
     const min = finite('min', options.min);
     const max = finite('max', options.max);
     if (!(min <= max && max - min <= 2 * Math.PI)) throw new RangeError(`angle limits must satisfy min <= max <= min + 2π, got min ${min}, max ${max}`);
@@ -441,6 +444,7 @@ export class World {
   addSpring(a: Handle, b: Handle, options: SpringOptions): Handle {
     const [ia, ib] = this.pair(a, b);
     if (options == null) throw new TypeError('spring options {stiffness} are required');
+    knownNames('spring option', objectOf('spring options', options), OPTION_NAMES.spring);
     const p = this.particles;
     const current = Math.sqrt((p.x[ib] - p.x[ia]) ** 2 + (p.y[ib] - p.y[ia]) ** 2);
     const restLength = options.length === undefined ? current : coordinate('length', nonNegative('length', options.length));
@@ -452,6 +456,7 @@ export class World {
   /** Pins a particle to a world point (its current position by default). */
   addPin(particle: Handle, options: PinOptions = {}): Handle {
     const i = this.particleIndex(particle);
+    knownNames('pin option', objectOf('pin options', options), OPTION_NAMES.pin);
     const p = this.particles;
     if (p.flags[i] & ParticleFlag.Pinned) throw new RangeError(`particle ${particle} is already rigidly pinned`);
     const tx = options.x === undefined ? p.x[i] : coordinate('x', options.x);
@@ -483,6 +488,7 @@ export class World {
     if (!Array.isArray(loop) || loop.length < 3) throw new RangeError(`an area constraint needs a loop of at least 3 particles, got ${Array.isArray(loop) ? loop.length : String(loop)}`);
     const slots = loop.map((h, k) => this.ctx.particleIds.slotOf(h, `loop[${k}]`));
     if (new Set(slots).size !== slots.length) throw new RangeError('an area constraint loop must not repeat a particle');
+    knownNames('area option', objectOf('area options', options), OPTION_NAMES.area);
     const pressure = positive('pressure', options.pressure ?? 1);
     const t = this.areas;
     const compliance = nonNegative('compliance', options.compliance ?? 0);
@@ -542,6 +548,7 @@ export class World {
     if (!Array.isArray(particles) || particles.length === 0) throw new RangeError(`a body needs at least one particle, got ${String(particles)}`);
     const slots = Int32Array.from(particles, (h, k) => this.ctx.particleIds.slotOf(h, `particles[${k}]`));
     constraints.forEach((h, k) => this.ctx.constraints.ids.slotOf(h, `constraints[${k}]`));
+    knownNames('collider option', objectOf('collider options', collider), OPTION_NAMES.collider);
     const resolved = resolveCollider(collider, slots.length);
     const handle = this.ctx.bodies.add(kind, slots, constraints);
     this.writeCollider(handleSlot(handle), resolved);
@@ -553,6 +560,7 @@ export class World {
   setCollider(body: Handle, options: ColliderOptions): void {
     const { bodies, colliders } = this.ctx;
     const slot = bodies.slotOf(body);
+    knownNames('collider option', objectOf('collider options', options), OPTION_NAMES.collider);
     this.writeCollider(slot, resolveCollider({ ...colliders.optionsOf(slot, bodies.parts[slot]), ...options }, bodies.particles[slot].length));
   }
 
@@ -668,6 +676,7 @@ export class World {
   /** A joint between two bodies, a body and the world, or a body and a particle (see JointOptions). */
   addJoint(o: JointOptions): Handle {
     if (o == null || typeof o !== 'object') throw new TypeError(`joint options must be an object, got ${String(o)}`);
+    knownNames('joint option', o, OPTION_NAMES.joint);
     const A = api.jointSide(this.ctx, o.a, o.particleA, 'a', 'particleA');
     const B = api.jointSide(this.ctx, o.b, o.particleB, 'b', 'particleB');
     if (A.row < 0) throw new TypeError('a joint needs side a: a body (a) or a particle (particleA)');
@@ -684,6 +693,7 @@ export class World {
    */
   grab(x: number, y: number, options: GrabOptions = {}): Handle | null {
     this.query(['x', 'y'], x, y);
+    knownNames('grab option', objectOf('grab options', options), OPTION_NAMES.grab);
     const stiffness = positive('stiffness', options.stiffness ?? 2000);
     const pickRadius = coordinate('pickRadius', nonNegative('pickRadius', options.pickRadius ?? 0.5));
     const g = pickGrabPoint(this.ctx, x, y, pickRadius);

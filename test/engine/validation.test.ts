@@ -86,6 +86,31 @@ describe('bad input', () => {
     expect(() => createRagdoll(w, { ...material, x: 12, y: 0, height: 1.8, mass: 70, jointCompliance: 0 })).not.to.throw();
   });
 
+  it("the World's methods refuse option names they do not take, naming the name and the one meant", () => {
+    const w = new World();
+    const [p, q, r] = [w.addParticle({ x: 0, y: 0 }), w.addParticle({ x: 1, y: 0 }), w.addParticle({ x: 1, y: 1 })];
+    const box = createBox(w, { x: 5, y: 5, width: 1, height: 1 }).body;
+    const cases: [() => unknown, string[]][] = [
+      [() => w.addParticle({ x: 0, y: 0, radus: 1 } as never), ['unknown particle option "radus"', 'did you mean radius?']],
+      [() => w.addDistance(p, q, { stiffness: 5 } as never), ['unknown distance option "stiffness"', 'the distance options are length']],
+      [() => w.addDistance(p, q, 7 as never), ['distance options must be an object', '7']],
+      [() => w.addAngleLimit(p, q, r, { min: 0, max: 1, compliace: 0 } as never), ['"compliace"', 'did you mean compliance?']],
+      [() => w.addSpring(p, q, { stiffness: 1, dampng: 1 } as never), ['unknown spring option "dampng"', 'did you mean damping?']],
+      [() => w.addPin(p, { X: 1 } as never), ['unknown pin option "X"', 'did you mean x?']],
+      [() => w.addAreaConstraint([p, q, r], { presure: 1 } as never), ['"presure"', 'did you mean pressure?']],
+      [() => w.addBody('particle', [p], [], { shape: 'none', frictoin: 1 } as never), ['unknown collider option "frictoin"', 'did you mean friction?']],
+      [() => w.setCollider(box, { restitutoin: 1 } as never), ['"restitutoin"', 'did you mean restitution?']],
+      [() => w.addRigidBody({ x: 0, y: 0, radius: 1, angularVelocty: 1 } as never), ['unknown rigid body option "angularVelocty"', 'did you mean angularVelocity?']],
+      [() => w.addJoint({ type: 'revolute', a: box, anchr: { x: 5, y: 5 } } as never), ['unknown joint option "anchr"', 'did you mean anchor?']],
+      [() => w.grab(5, 5, { stifness: 10 } as never), ['unknown grab option "stifness"', 'did you mean stiffness?']],
+    ];
+    const before = [w.particleCount, w.constraintCount];
+    for (const [call, words] of cases) throwsNaming(call, TypeError, ...words);
+    expect([w.particleCount, w.constraintCount]).to.deep.equal(before);
+    for (let k = 0; k < 10; k++) w.step();
+    expect(allFinite(w)).to.equal(true);
+  });
+
   it('a particle frame starts with its vx, vy and angularVelocity, as a rigid body would', () => {
     const w = new World({ gravity: { x: 0, y: 0 } });
     const frame = createBox(w, { model: 'particles', x: 0, y: 0, width: 2, height: 2, vx: 3, vy: -1, angularVelocity: 2 });
