@@ -120,11 +120,11 @@ export function generate(manifest) {
       const parentTag = nearestTagAncestor(tag, classes);
       let inheritedNote = null;
       const sharedBases = ancestors(tag).filter((up) => !up.tagName);
-      const also = sharedBases.map((up) => ` and to ${tagList(sharedBy(up))}`).join('');
       if (parentTag) {
-        const common = sharedBases.length ? `, and what is common to ${tagList(sharedBy(sharedBases[0]))} (above)` : '';
-        inheritedNote = `Also every attribute, property, method, event and CSS part of [\`<${parentTag.tagName}>\`](#${parentTag.tagName})${common}, except where listed here.`;
+        const shared = sharedBases.map((up) => `, and what is common to ${tagList(sharedBy(up))} (above)`).join('');
+        inheritedNote = `Also every attribute, property, method, event and CSS part of [\`<${parentTag.tagName}>\`](#${parentTag.tagName})${shared}, except where listed here.`;
       } else if (!family.base.tagName && tag !== family.base) {
+        const also = sharedBases.map((up) => ` and to ${tagList(sharedBy(up))}`).join('');
         inheritedNote = `Also the attributes, properties and methods common to ${common}${also} (above).`;
       }
       out.push(...describeApi(tag, classes, { inheritedNote }));

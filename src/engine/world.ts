@@ -247,8 +247,8 @@ export class World {
     const mass = options.mass === undefined ? 1 : options.mass;
     if (mass !== Infinity) positive('mass', mass);
     const radius = coordinate('radius', nonNegative('radius', options.radius ?? 0));
-    const vx = finite('vx', options.vx ?? 0);
-    const vy = finite('vy', options.vy ?? 0);
+    const vx = speed('vx', options.vx ?? 0);
+    const vy = speed('vy', options.vy ?? 0);
 
     const handle = this.ctx.particleIds.allocate();
     const slot = handleSlot(handle);
@@ -348,13 +348,24 @@ export class World {
 
   /**
    * Position Verlet's velocity is the mean over a substep, i.e. the velocity half a substep earlier than the
-   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly.
+   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly. A rigid row's velocity is
+   * semi-implicit Euler's, stored as it is.
    */
   private writeVelocity(i: number, vx: number, vy: number): void {
     const p = this.particles;
-    const half = this.settings.integrator === 'verlet' && p.invMass[i] !== 0 ? (0.5 * this.settings.timestep) / this.substepsWith(i) : 0;
+    const half = p.invMass[i] !== 0 && !(p.flags[i] & ParticleFlag.Rigid) ? this.verletHalfStep() : 0;
     p.vx[i] = vx - this.settings.gravity.x * half;
     p.vy[i] = vy - this.settings.gravity.y * half;
+  }
+
+  /**
+   * ½·h of a substep of the particles under position Verlet, 0 under the Euler integrators. A moving particle that
+   * is not a rigid body makes 'auto' take the particle count, known without rebuilding the topology: builders write a
+   * velocity for every particle they add, and a rebuild per particle made building a cloth quadratic in its size.
+   */
+  private verletHalfStep(): number {
+    const s = this.settings;
+    return s.integrator === 'verlet' ? (0.5 * s.timestep) / substepCount(s, 1) : 0;
   }
 
   /**
@@ -365,11 +376,13 @@ export class World {
    * new settings as a fresh body would).
    */
   private keepingVelocities(change: () => void): void {
-    const before = this.velocityOffset();
+    const { gravity: g0 } = this.settings;
+    const h0 = this.verletHalfStep();
     change();
-    const after = this.velocityOffset();
-    const dx = before.x - after.x;
-    const dy = before.y - after.y;
+    const { gravity: g1 } = this.settings;
+    const h1 = this.verletHalfStep();
+    const dx = g0.x * h0 - g1.x * h1;
+    const dy = g0.y * h0 - g1.y * h1;
     if (dx === 0 && dy === 0) return;
     const p = this.particles;
     for (let i = 0; i < p.count; i++) {
@@ -377,24 +390,6 @@ export class World {
       p.vx[i] += dx;
       p.vy[i] += dy;
     }
-  }
-
-  /** ½·g·h, the part of a particle's velocity that its stored value leaves out (0 under the Euler integrators). */
-  private velocityOffset(): Vec2 {
-    const s = this.settings;
-    if (s.integrator !== 'verlet') return { x: 0, y: 0 };
-    const half = (0.5 * s.timestep) / (s.substeps === 'auto' ? substepCount(s, 1) : this.substepCount);
-    return { x: s.gravity.x * half, y: s.gravity.y * half };
-  }
-
-  /**
-   * The substep count of a world that holds movable row i. A moving particle that is not a rigid body makes 'auto'
-   * take the particle count, known without rebuilding the topology: builders write a velocity for every particle they
-   * add, and a rebuild per particle made building a cloth quadratic in its size.
-   */
-  private substepsWith(i: number): number {
-    if (this.settings.substeps !== 'auto' || this.particles.flags[i] & ParticleFlag.Rigid) return this.substepCount;
-    return substepCount(this.settings, 1);
   }
 
   // ---- constraints -------------------------------------------------------------------------------------------

@@ -170,6 +170,7 @@ describe('constraints', () => {
     // The impulse's first steps stretch a bone by 3-5% (JS, WebAssembly kernel); at rest the bones are at length.
     expect(world.maxStrain()).to.be.below(0.01);
     expect(RAGDOLL_JOINTS.length).to.equal(doll.particles.length);
+    for (const i of world.bodyParticleIndices(doll.body)) expect(world.particles.y[i]).to.be.at.most(2); // the floor
   });
 
   it('a pressure soft body keeps its area; a particle-frame box keeps its shape', () => {

@@ -27,6 +27,42 @@ describe('integrators', () => {
     }
   });
 
+  it('a gravity change leaves rigid bodies, pins and sleeping bodies as they are, and keeps a velocity across Euler → Verlet', () => {
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    const ball = world.addRigidBody({ x: 0, y: 0, radius: 0.5 });
+    const pinned = world.addParticle({ x: 5, y: 0 });
+    world.addPin(pinned);
+    const free = world.addParticle({ x: 10, y: 0 });
+    for (let k = 0; k < 30; k++) world.step();
+    world.setGravity(0, 0);
+    const [ballAt, freeAt] = [world.bodyPose(ball).y, world.getPosition(free).y];
+    for (let k = 0; k < 30; k++) world.step();
+    // The rigid ball keeps the g·t it had when gravity went (semi-implicit Euler stores v itself: no shift), and goes
+    // on at that speed, as the free particle does.
+    expect(world.bodyVelocity(ball).y).to.be.closeTo(9.81 * 0.5, 1e-9);
+    expect(world.bodyPose(ball).y - ballAt).to.be.closeTo(9.81 * 0.5 * 0.5, 1e-9);
+    expect(world.getPosition(free).y - freeAt).to.be.closeTo(9.81 * 0.5 * 0.5, 1e-9);
+    expect(world.getPosition(pinned)).to.deep.equal({ x: 5, y: 0 });
+    expect(world.getVelocity(pinned)).to.deep.equal({ x: 0, y: 0 });
+    // A particle set moving under semi-implicit Euler keeps that velocity on the switch to Verlet.
+    const euler = new World({ gravity: { x: 0, y: 9.81 }, integrator: 'semi-implicit-euler' });
+    const p = euler.addParticle({ x: 0, y: 0, vx: 2 });
+    euler.integrator = 'verlet';
+    for (let k = 0; k < 60; k++) euler.step();
+    expect(euler.getPosition(p).x).to.be.closeTo(2, 1e-9);
+    expect(euler.getPosition(p).y).to.be.closeTo(0.5 * 9.81, 1e-9);
+    // A sleeping body's rows hold no velocity: set without waking it, the new gravity leaves them at rest.
+    const pile = new World({ gravity: { x: 0, y: 9.81 }, bounds: { minX: -5, minY: -10, maxX: 5, maxY: 0 } });
+    const rest = pile.addParticle({ x: 0, y: -0.5, radius: 0.5 });
+    pile.addBody('particle', [rest], [], { shape: 'particles' });
+    for (let k = 0; k < 600; k++) pile.step();
+    const before = pile.getPosition(rest);
+    pile.gravity = { x: 0, y: -9.81 };
+    expect(pile.getVelocity(rest)).to.deep.equal({ x: 0, y: 0 });
+    pile.step();
+    expect(pile.getPosition(rest)).to.deep.equal(before);
+  });
+
   it('position Verlet follows the exact path when gravity changes in flight', () => {
     const world = new World({ gravity: { x: 0, y: 9.81 } });
     const p = world.addParticle({ x: 0, y: 0, vx: 2, vy: -5 });

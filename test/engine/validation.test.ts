@@ -111,6 +111,19 @@ describe('bad input', () => {
     expect(allFinite(w)).to.equal(true);
   });
 
+  it('a particle frame spun past the speed limit is refused before anything is built', () => {
+    const w = new World();
+    const before = [w.particleCount, w.constraintCount];
+    throwsNaming(() => createBox(w, { x: 0, y: 0, width: 4, height: 4, model: 'particles', angularVelocity: 6e8 }), RangeError, 'within ±1e9');
+    throwsNaming(() => createBox(w, { x: 0, y: 0, width: 1, height: 1, vx: 5e9 }), RangeError, 'vx', '5000000000');
+    throwsNaming(() => w.addParticle({ x: 0, y: 0, vy: -2e9 }), RangeError, 'vy');
+    expect([w.particleCount, w.constraintCount]).to.deep.equal(before);
+    const frame = createBox(w, { x: 0, y: 0, width: 1, height: 1, model: 'particles' });
+    // The frame that follows has its own four particles and is the only body (no orphan of the refused one).
+    expect(w.bodyParticleIndices(frame.body).length).to.equal(4);
+    expect([...w.bodies()]).to.deep.equal([frame.body]);
+  });
+
   it('a particle frame starts with its vx, vy and angularVelocity, as a rigid body would', () => {
     const w = new World({ gravity: { x: 0, y: 0 } });
     const frame = createBox(w, { model: 'particles', x: 0, y: 0, width: 2, height: 2, vx: 3, vy: -1, angularVelocity: 2 });

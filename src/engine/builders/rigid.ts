@@ -1,4 +1,4 @@
-import type { Handle, World } from '../world.js';
+import type { Vec2, World } from '../world.js';
 import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
 import { BODY_MODELS, BODY_OPTIONS, builderOptions, optionNames, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
@@ -99,8 +99,10 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   const compliance = complianceOf('compliance', o.compliance);
   const cos = Math.cos(angle);
   const sin = Math.sin(angle);
+  const corners = local.map((p) => ({ x: ox + p.x * cos - p.y * sin, y: oy + p.x * sin + p.y * cos }));
+  const velocities = o.static ? corners.map(() => ({ x: 0, y: 0 })) : frameVelocities(corners, o);
   return transactional(world, (particles, constraints) => {
-    for (const p of local) particles.push(world.addParticle({ x: ox + p.x * cos - p.y * sin, y: oy + p.x * sin + p.y * cos, mass: each }));
+    corners.forEach((c, k) => particles.push(world.addParticle({ x: c.x, y: c.y, mass: each, vx: velocities[k].x, vy: velocities[k].y })));
     const n = particles.length;
     for (let k = 0; k < n; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % n], { compliance }));
     for (let k = 2; k < n - 1; k++) constraints.push(world.addDistance(particles[0], particles[k], { compliance }));
@@ -111,9 +113,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     if (extraBraces.length === 0) constraints.push(world.addAreaConstraint(particles.slice(), { compliance }));
     // A concave outline (seed 2.8) collides as convex parts: indices into the outline, i.e. into `particles`.
     const parts = isConvex(local) ? undefined : decompose(local);
-    const body = world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true, parts));
-    if (!o.static) startMoving(world, body, o);
-    return body;
+    return world.addBody('rigid', particles, constraints, colliderOf(o, 'polygon', true, parts));
   });
 }
 
@@ -148,17 +148,17 @@ export function createBox(world: World, o: BoxOptions): Built {
   );
 }
 
-/** A particle frame's vx, vy and angularVelocity: each particle moves as a point of a rigid body turning about their mean. */
-function startMoving(world: World, body: Handle, o: RigidOptions): void {
+/**
+ * A particle frame's vx, vy and angularVelocity as each corner's start velocity: a point of a rigid body turning about
+ * the corners' mean, v + ω × r. Checked before anything is built, so a speed past the limit leaves nothing behind.
+ */
+function frameVelocities(corners: Vec2[], o: RigidOptions): Vec2[] {
   const vx = speed('vx', o.vx ?? 0);
   const vy = speed('vy', o.vy ?? 0);
   const w = finite('angularVelocity', o.angularVelocity ?? 0);
-  if (vx === 0 && vy === 0 && w === 0) return;
-  const c = world.bodyCentroid(body);
-  for (const h of world.bodyParticleHandles(body)) {
-    const p = world.getPosition(h);
-    world.setVelocity(h, vx - w * (p.y - c.y), vy + w * (p.x - c.x));
-  }
+  const cx = corners.reduce((sum, c) => sum + c.x, 0) / corners.length;
+  const cy = corners.reduce((sum, c) => sum + c.y, 0) / corners.length;
+  return corners.map((c) => ({ x: speed('vx', vx - w * (c.y - cy)), y: speed('vy', vy + w * (c.x - cx)) }));
 }
 
 /** Whether a counter-clockwise outline turns left (or goes straight) at every vertex. */

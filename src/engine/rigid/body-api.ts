@@ -29,9 +29,9 @@ export function rigidBodyPlan(o: RigidBodyOptions): {
     x: coordinate('x', o.x),
     y: coordinate('y', o.y),
     angle: finite('angle', o.angle ?? 0),
-    vx: finite('vx', o.vx ?? 0),
-    vy: finite('vy', o.vy ?? 0),
-    w: finite('angularVelocity', o.angularVelocity ?? 0),
+    vx: speed('vx', o.vx ?? 0),
+    vy: speed('vy', o.vy ?? 0),
+    w: speed('angularVelocity', o.angularVelocity ?? 0),
   };
 }
 

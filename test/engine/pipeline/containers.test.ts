@@ -12,7 +12,7 @@ function escaped(world: import('../../../src/engine/index.js').World, handles: n
 }
 
 describe('pipeline: containers', () => {
-  it('1000 boxes dropped into a U container: none escapes; deepest penetration < 4% after settling (2.6% today)', () => {
+  it('1000 boxes dropped into a U container: none escapes; deepest penetration < 4% after settling', () => {
     const { world, bodies, description } = scene('boxes');
     const boxes = bodies.slice(3).map((b) => b.body);
     for (let k = 0; k < 900; k++) world.step();

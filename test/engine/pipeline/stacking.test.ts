@@ -30,7 +30,7 @@ describe('pipeline: stacking', () => {
     expect(Math.abs(end.y - start.y)).to.be.below(0.05);
   });
 
-  it('a base-20 pyramid (210 boxes) stands 10 s: top drift < 0.1, deepest penetration < 1% of a box (0.2% today)', () => {
+  it('a base-20 pyramid (210 boxes) stands 10 s: top drift < 0.1, deepest penetration < 1% of a box', () => {
     const { world, bodies, description } = scene('pyramid', { sleeping: false });
     const top = bodies[bodies.length - 1].body;
     const start = world.bodyCentroid(top);
