@@ -7,7 +7,7 @@ import {
   ShapeType, sat, gjkIntersect, gjkEpa, gjkDistance, polygonManifold, raycast, pointInShape,
   Penetration, ClosestPoints, Manifold, RayHit, type Shape,
 } from '../../../src/engine/collision/index.js';
-import { bruteSignedDistance, make, rng } from './helpers.js';
+import { bruteCoreDepth, bruteSignedDistance, make, rng } from './helpers.js';
 
 const pen = new Penetration();
 const epaPen = new Penetration();
@@ -98,12 +98,11 @@ describe('collision: adversarial geometry', () => {
         for (let k = 0; k < manifold.count; k++) expect(finiteAll(manifold.depth[k], manifold.pointX[k], manifold.pointY[k], manifold.alpha[k]), `${label}: manifold`).to.equal(true);
       }
       // Agreement: outside the tolerance band every routine gives the brute-force oracle's yes/no, and EPA's depth
-      // matches SAT's. The band is decided by the oracle, not by SAT's answer (a SAT miss of an overlap has distance 0,
-      // so it fell in the band and was never compared). Crossing cores the oracle knows to overlap without a depth:
-      // those are in the band only when no routine finds them deeper than the tolerance.
+      // matches SAT's. The band is decided by the oracles (the signed distance, or for crossing cores the depth over
+      // every edge normal), not by SAT's answer: a SAT miss of an overlap has distance 0, so it fell in the band and
+      // was never compared.
       const brute = bruteSignedDistance(a, b);
-      const deepest = Math.max(satHit ? pen.depth : 0, epaHit ? epaPen.depth : 0);
-      if (brute === -Infinity ? deepest > tolerance : Math.abs(brute) > tolerance) {
+      if (Math.abs(brute === -Infinity ? bruteCoreDepth(a, b) : brute) > tolerance) {
         compared++;
         if (brute < 0) overlapping++;
         if (satHit !== brute < 0 || satHit !== gjkHit || satHit !== epaHit) disagreements++;

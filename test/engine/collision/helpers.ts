@@ -159,6 +159,32 @@ export function bruteSignedDistance(a: Shape, b: Shape): number {
   return d - a.radius - b.radius;
 }
 
+/**
+ * Brute force: how deep two shapes whose cores overlap are (bruteSignedDistance's −Infinity), the least overlap of
+ * their projections over every edge normal of both cores (the face normals of the cores' Minkowski difference), plus
+ * the radii. Two point cores (circles) overlap by the radii less their distance.
+ */
+export function bruteCoreDepth(a: Shape, b: Shape): number {
+  const [pa, pb] = [pts(a), pts(b)];
+  const normals: [number, number][] = [];
+  for (const p of [pa, pb]) {
+    for (let k = 0; k < (p.length === 2 ? 1 : p.length); k++) {
+      const [u, v] = [p[k], p[(k + 1) % p.length]];
+      const length = Math.hypot(v.x - u.x, v.y - u.y);
+      if (p.length > 1 && length > 0) normals.push([-(v.y - u.y) / length, (v.x - u.x) / length]);
+    }
+  }
+  if (normals.length === 0) return a.radius + b.radius - Math.hypot(pb[0].x - pa[0].x, pb[0].y - pa[0].y);
+  let depth = Infinity;
+  for (const [nx, ny] of normals) {
+    const project = (p: { x: number; y: number }[]) => p.map((q) => q.x * nx + q.y * ny);
+    const [sa, sb] = [project(pa), project(pb)];
+    const overlap = Math.min(Math.max(...sa) - Math.min(...sb), Math.max(...sb) - Math.min(...sa));
+    depth = Math.min(depth, overlap + a.radius + b.radius);
+  }
+  return depth;
+}
+
 /** Distance from (x, y) to the outline of a shape (a circle's circumference, a polygon's edges, a segment). */
 export function boundaryDistance(s: Shape, x: number, y: number): number {
   if (s.type === ShapeType.Circle) {
