@@ -240,8 +240,7 @@ export class World {
   // ---- particles ---------------------------------------------------------------------------------------------
 
   addParticle(options: ParticleOptions): Handle {
-    if (options == null || typeof options !== 'object') throw new TypeError(`particle options must be an object, got ${String(options)}`);
-    knownNames('particle option', options, OPTION_NAMES.particle);
+    knownNames('particle option', objectOf('particle options', options), OPTION_NAMES.particle);
     const x = coordinate('x', options.x);
     const y = coordinate('y', options.y);
     const mass = options.mass === undefined ? 1 : options.mass;
@@ -670,8 +669,7 @@ export class World {
 
   /** A joint between two bodies, a body and the world, or a body and a particle (see JointOptions). */
   addJoint(o: JointOptions): Handle {
-    if (o == null || typeof o !== 'object') throw new TypeError(`joint options must be an object, got ${String(o)}`);
-    knownNames('joint option', o, OPTION_NAMES.joint);
+    knownNames('joint option', objectOf('joint options', o), OPTION_NAMES.joint);
     const A = api.jointSide(this.ctx, o.a, o.particleA, 'a', 'particleA');
     const B = api.jointSide(this.ctx, o.b, o.particleB, 'b', 'particleB');
     if (A.row < 0) throw new TypeError('a joint needs side a: a body (a) or a particle (particleA)');

@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, positive } from '../validate.js';
-import { builderOptions, optionNames, colliderOf, transactional, type Built } from './common.js';
+import { builderOptions, colliderOf, transactional, type Built } from './common.js';
 import { createRigid, modelOf, RIGID_OPTIONS, type RigidOptions } from './rigid.js';
 
 export interface CircleOptions extends RigidOptions {
@@ -13,12 +13,12 @@ export interface CircleOptions extends RigidOptions {
   mass?: number;
 }
 
-const CIRCLE_OPTIONS = optionNames<CircleOptions>({ ...RIGID_OPTIONS, x: true, y: true, radius: true, angle: true, mass: true });
+const CIRCLE_OPTIONS = { ...RIGID_OPTIONS, x: true, y: true, radius: true, angle: true, mass: true } satisfies Record<keyof CircleOptions, true>;
 
 /** A ball: a rigid disc that spins and rolls, or (model 'particles') one particle colliding as a circle. */
 export function createCircle(world: World, o: CircleOptions): Built {
   builderOptions('circle', o, CIRCLE_OPTIONS);
-  const radius = coordinate('radius', positive('radius', o?.radius));
+  const radius = coordinate('radius', positive('radius', o.radius));
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, undefined, radius);
   const mass = o.static ? Infinity : positive('mass', o.mass ?? Math.PI * radius * radius);
   const x = coordinate('x', o.x);

@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, integer, MAX_WORLD_COORDINATE, nonNegative, positive } from '../validate.js';
-import { addTethers, BODY_OPTIONS, builderOptions, optionNames, colliderOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { addTethers, BODY_OPTIONS, builderOptions, colliderOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 /** Which particles of the top row are pinned: every one, the two corners, none, or a list of column indices. */
 export type ClothPins = 'top' | 'corners' | 'none' | number[];
@@ -30,14 +30,14 @@ export interface ClothOptions extends BodyOptions {
   tear?: number;
 }
 
-const CLOTH_OPTIONS = optionNames<ClothOptions>({
+const CLOTH_OPTIONS = {
   ...BODY_OPTIONS, origin: true, columns: true, rows: true, spacing: true, mass: true, structural: true, shear: true, bend: true, pins: true, radius: true, tethers: true, tear: true,
-});
+} satisfies Record<keyof ClothOptions, true>;
 
 /** A rectangular cloth of columns × rows particles, row-major from the top-left corner. */
 export function createCloth(world: World, o: ClothOptions): Built {
   builderOptions('cloth', o, CLOTH_OPTIONS);
-  const origin = point('origin', o?.origin);
+  const origin = point('origin', o.origin);
   const columns = integer('columns', o.columns, 2, 4096);
   const rows = integer('rows', o.rows, 2, 4096);
   const spacing = coordinate('spacing', positive('spacing', o.spacing));

@@ -1,5 +1,5 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { coordinate, describeValue, knownOptions, nonNegative, positive } from '../validate.js';
+import { coordinate, knownNames, nonNegative, objectOf, positive } from '../validate.js';
 
 /** What every builder returns: the body and the handles of what it made. */
 export interface Built {
@@ -32,23 +32,18 @@ export interface BodyOptions {
 }
 
 /**
- * The names an options type takes, from an object with one key per name: the compiler insists on every key of T, so
- * the list cannot fall behind the type.
+ * The option names every builder takes. Each builder's record of names (`satisfies Record<keyof T, true>`) holds it
+ * to its options type, as OPTION_NAMES does for the World's methods.
  */
-export function optionNames<T>(keys: Record<keyof T, true>): readonly string[] {
-  return Object.keys(keys);
-}
-
-export const BODY_OPTIONS = { static: true, collide: true, friction: true, restitution: true, category: true, mask: true, group: true } as const;
+export const BODY_OPTIONS = { static: true, collide: true, friction: true, restitution: true, category: true, mask: true, group: true } satisfies Record<keyof BodyOptions, true>;
 
 /**
  * A builder's options: an object whose every name the builder takes. A misspelt or foreign name (`density` for a box,
  * which takes `mass`) is a TypeError naming it, as `new World()` does, instead of an option silently ignored.
  */
-export function builderOptions<T extends object>(what: string, o: T, names: readonly string[]): T {
-  if (o == null || typeof o !== 'object') throw new TypeError(`${what} options must be an object, got ${describeValue(o)}`);
-  knownOptions(`${what} option`, o, names);
-  return o;
+export function builderOptions<T>(what: string, o: T, names: Readonly<Record<string, true>>): T & object {
+  knownNames(`${what} option`, objectOf(`${what} options`, o), names);
+  return o as T & object;
 }
 
 /** The collision options of a body's options, passed on as they are (a box's frame, a rigid body). */

@@ -1,6 +1,6 @@
 import type { Handle, World } from '../world.js';
 import { coordinate, positive } from '../validate.js';
-import { BODY_OPTIONS, builderOptions, optionNames, colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
+import { BODY_OPTIONS, builderOptions, colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RagdollOptions extends BodyOptions {
   /** Pelvis position. */
@@ -53,7 +53,7 @@ const LIMITS: [number, number, number, number, number][] = [
   [2, 9, 10, 0, 2.3], // knee R, mirrored
 ];
 
-const RAGDOLL_OPTIONS = optionNames<RagdollOptions>({ ...BODY_OPTIONS, x: true, y: true, height: true, mass: true, jointCompliance: true });
+const RAGDOLL_OPTIONS = { ...BODY_OPTIONS, x: true, y: true, height: true, mass: true, jointCompliance: true } satisfies Record<keyof RagdollOptions, true>;
 
 /**
  * A stick-figure ragdoll (seed 2.6): 11 particles, 10 bones as sticks, joints as shared particles and angle limits
@@ -61,7 +61,7 @@ const RAGDOLL_OPTIONS = optionNames<RagdollOptions>({ ...BODY_OPTIONS, x: true, 
  */
 export function createRagdoll(world: World, o: RagdollOptions): Built {
   builderOptions('ragdoll', o, RAGDOLL_OPTIONS);
-  const x = coordinate('x', o?.x);
+  const x = coordinate('x', o.x);
   const y = coordinate('y', o.y);
   const height = coordinate('height', positive('height', o.height ?? RAGDOLL_HEIGHT));
   const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70);

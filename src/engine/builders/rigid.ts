@@ -1,6 +1,6 @@
 import type { Vec2, World } from '../world.js';
 import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
-import { BODY_MODELS, BODY_OPTIONS, builderOptions, optionNames, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
+import { BODY_MODELS, BODY_OPTIONS, builderOptions, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
 
 /** What a rigid box, polygon or circle takes besides its shape. */
@@ -41,9 +41,9 @@ export interface BoxOptions extends RigidOptions {
   compliance?: number;
 }
 
-export const RIGID_OPTIONS = { ...BODY_OPTIONS, model: true, kinematic: true, vx: true, vy: true, angularVelocity: true } as const;
-const POLYGON_OPTIONS = optionNames<PolygonOptions>({ ...RIGID_OPTIONS, points: true, x: true, y: true, angle: true, mass: true, compliance: true });
-const BOX_OPTIONS = optionNames<BoxOptions>({ ...RIGID_OPTIONS, x: true, y: true, width: true, height: true, angle: true, mass: true, compliance: true });
+export const RIGID_OPTIONS = { ...BODY_OPTIONS, model: true, kinematic: true, vx: true, vy: true, angularVelocity: true } satisfies Record<keyof RigidOptions, true>;
+const POLYGON_OPTIONS = { ...RIGID_OPTIONS, points: true, x: true, y: true, angle: true, mass: true, compliance: true } satisfies Record<keyof PolygonOptions, true>;
+const BOX_OPTIONS = { ...RIGID_OPTIONS, x: true, y: true, width: true, height: true, angle: true, mass: true, compliance: true } satisfies Record<keyof BoxOptions, true>;
 
 /**
  * A rigid polygon as perimeter particles braced by sticks (seed 2.3): the n perimeter links plus a fan of
@@ -51,7 +51,7 @@ const BOX_OPTIONS = optionNames<BoxOptions>({ ...RIGID_OPTIONS, x: true, y: true
  */
 export function createPolygon(world: World, o: PolygonOptions): Built {
   builderOptions('polygon', o, POLYGON_OPTIONS);
-  if (modelOf(o) === 'rigid') return createRigid(world, o, o?.points);
+  if (modelOf(o) === 'rigid') return createRigid(world, o, o.points);
   return createFrame(world, o, []);
 }
 
@@ -64,7 +64,6 @@ export function modelOf(o: RigidOptions | undefined): BodyModel {
 
 /** The rigid model of a box, polygon or circle: one rigid body (World.addRigidBody) and its one particle. */
 export function createRigid(world: World, o: RigidOptions & { x?: number; y?: number; angle?: number; mass?: number }, points?: { x: number; y: number }[], radius?: number): Built {
-  if (o == null || typeof o !== 'object') throw new TypeError(`options must be an object, got ${String(o)}`);
   if (o.static && o.kinematic) throw new TypeError('a body is either static or kinematic, not both');
   const body = world.addRigidBody({
     points,
@@ -84,8 +83,8 @@ export function createRigid(world: World, o: RigidOptions & { x?: number; y?: nu
 
 /** createPolygon plus extra bracing links between the given vertex pairs. */
 function createFrame(world: World, o: PolygonOptions, extraBraces: [number, number][]): Built {
-  if (!o || !Array.isArray(o.points) || o.points.length < 3) {
-    throw new RangeError(`points must be a list of at least 3 points, got ${o && Array.isArray(o.points) ? o.points.length : String(o?.points)}`);
+  if (!Array.isArray(o.points) || o.points.length < 3) {
+    throw new RangeError(`points must be a list of at least 3 points, got ${Array.isArray(o.points) ? o.points.length : String(o.points)}`);
   }
   let local = o.points.map((p, k) => point(`points[${k}]`, p));
   // Parts and edge normals assume counter-clockwise order (positive area): reverse a clockwise outline.
@@ -120,7 +119,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
 /** A box centred on (x, y): a rigid body, or (model 'particles') 4 corner particles, 4 edges and 2 diagonals. */
 export function createBox(world: World, o: BoxOptions): Built {
   builderOptions('box', o, BOX_OPTIONS);
-  const w = coordinate('width', positive('width', o?.width)) / 2;
+  const w = coordinate('width', positive('width', o.width)) / 2;
   const h = coordinate('height', positive('height', o.height)) / 2;
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);
   // The fan gives one diagonal; the second keeps the frame square under large loads as well.

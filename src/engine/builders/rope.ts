@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, integer, nonNegative } from '../validate.js';
-import { addTethers, BODY_OPTIONS, builderOptions, optionNames, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { addTethers, BODY_OPTIONS, builderOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RopeOptions extends BodyOptions {
   from: { x: number; y: number };
@@ -21,15 +21,15 @@ export interface RopeOptions extends BodyOptions {
   tethers?: boolean;
 }
 
-const ROPE_OPTIONS = optionNames<RopeOptions>({
+const ROPE_OPTIONS = {
   ...BODY_OPTIONS, from: true, to: true, segments: true, mass: true, slack: true, ropeLike: true, pinStart: true, pinEnd: true, compliance: true, radius: true, tethers: true,
-});
+} satisfies Record<keyof RopeOptions, true>;
 
 /** A rope or chain: a line of particles joined by distance links. */
 export function createRope(world: World, o: RopeOptions): Built {
   builderOptions('rope', o, ROPE_OPTIONS);
-  const from = point('from', o?.from);
-  const to = point('to', o?.to);
+  const from = point('from', o.from);
+  const to = point('to', o.to);
   const segments = integer('segments', o.segments ?? 20, 1, 100000);
   const each = massEach('mass', o.mass, segments + 1, 1);
   const slack = nonNegative('slack', o.slack ?? 1);

@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, integer, nonNegative, oneOf, positive } from '../validate.js';
-import { BODY_OPTIONS, builderOptions, optionNames, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { BODY_OPTIONS, builderOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface SoftBodyOptions extends BodyOptions {
   center: { x: number; y: number };
@@ -24,14 +24,14 @@ export interface SoftBodyOptions extends BodyOptions {
   damping?: number;
 }
 
-const SOFT_BODY_OPTIONS = optionNames<SoftBodyOptions>({
+const SOFT_BODY_OPTIONS = {
   ...BODY_OPTIONS, center: true, radius: true, segments: true, mass: true, model: true, pressure: true, compliance: true, areaCompliance: true, stiffness: true, damping: true,
-});
+} satisfies Record<keyof SoftBodyOptions, true>;
 
 /** A deformable ring (seed 2.3/2.4). */
 export function createSoftBody(world: World, o: SoftBodyOptions): Built {
   builderOptions('soft body', o, SOFT_BODY_OPTIONS);
-  const c = point('center', o?.center);
+  const c = point('center', o.center);
   const radius = coordinate('radius', positive('radius', o.radius));
   const segments = integer('segments', o.segments ?? 16, 3, 4096);
   const model = oneOf('model', o.model ?? 'pressure', ['pressure', 'springs'] as const);

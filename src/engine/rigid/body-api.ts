@@ -2,7 +2,7 @@
 // and reads or writes the row (rigid/bodies.ts); anything it does to a body wakes it.
 import type { Handle } from '../handles.js';
 import { OPTION_NAMES, resolveCollider, type MassInfo, type Pose, type ResolvedCollider, type RigidBodyOptions, type Vec2 } from '../options.js';
-import { knownNames, positive } from '../validate.js';
+import { knownNames, objectOf, positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
@@ -15,8 +15,7 @@ import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } f
 export function rigidBodyPlan(o: RigidBodyOptions): {
   source: RigidShapeSource; type: BodyType; collider: ResolvedCollider; x: number; y: number; angle: number; vx: number; vy: number; w: number;
 } {
-  if (o == null || typeof o !== 'object') throw new TypeError(`rigid body options must be an object, got ${String(o)}`);
-  knownNames('rigid body option', o, OPTION_NAMES.rigidBody);
+  knownNames('rigid body option', objectOf('rigid body options', o), OPTION_NAMES.rigidBody);
   if ([o.points, o.radius, o.outlines].filter((v) => v !== undefined).length !== 1) throw new TypeError('a rigid body needs one of points (an outline), radius (a disc) or outlines');
   const shape = o.points !== undefined ? polygonShape(o.points) : o.outlines !== undefined ? compoundShape(o.outlines) : circleShape(o.radius as number);
   const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
