@@ -1,4 +1,4 @@
-import type { ParticleStore } from './particles.js';
+import { ParticleFlag, type ParticleStore } from './particles.js';
 
 /** The integrators the seed compares (2.5). Position Verlet is the default. */
 export type Integrator = 'verlet' | 'semi-implicit-euler' | 'explicit-euler';
@@ -76,5 +76,28 @@ export function updateVelocities(p: ParticleStore, h: number, integrator: Integr
   for (let i = 0; i < n; i++) {
     vx[i] = (x[i] - px[i]) * inv;
     vy[i] = (y[i] - py[i]) * inv;
+  }
+}
+
+/**
+ * ½·h of a substep of length h under position Verlet, 0 under the Euler integrators: a particle's stored velocity is
+ * v − ½·g·h (the mean over the substep to come), so that a thrown particle follows x0 + v0·t + ½·g·t² exactly.
+ */
+export function verletHalfSubstep(integrator: Integrator, h: number): number {
+  return integrator === 'verlet' ? 0.5 * h : 0;
+}
+
+/**
+ * Adds (dx, dy) to the stored velocity of every movable particle that is not a rigid body's row: how the v − ½·g·h
+ * of position Verlet follows a change of g or h. Rigid rows store v itself, and a sleeping body's rows are at rest
+ * (invMass 0 while parked: they wake as a fresh body would).
+ */
+export function shiftVerletVelocities(p: ParticleStore, dx: number, dy: number): void {
+  if (dx === 0 && dy === 0) return;
+  const { vx, vy, invMass, alive, flags } = p;
+  for (let i = 0, n = p.count; i < n; i++) {
+    if (alive[i] === 0 || invMass[i] === 0 || flags[i] & ParticleFlag.Rigid) continue;
+    vx[i] += dx;
+    vy[i] += dy;
   }
 }

@@ -7,7 +7,7 @@ import { stretchOf, type DistanceConstraints } from './constraints/distance.js';
 import type { PinConstraints } from './constraints/pin.js';
 import type { Springs } from './constraints/spring.js';
 import { grabLag, type GrabConstraints } from './constraints/grab.js';
-import type { Integrator } from './integrate.js';
+import { shiftVerletVelocities, verletHalfSubstep, type Integrator } from './integrate.js';
 import type { Bounds } from './bounds.js';
 import { hashColumns } from './hash.js';
 import { GridBroadPhase, makeBroadPhase, type PairList } from './pipeline/broadphase.js';
@@ -364,7 +364,7 @@ export class World {
    */
   private verletHalfStep(): number {
     const s = this.settings;
-    return s.integrator === 'verlet' ? (0.5 * s.timestep) / substepCount(s, 1) : 0;
+    return verletHalfSubstep(s.integrator, s.timestep / substepCount(s, 1));
   }
 
   /**
@@ -380,15 +380,7 @@ export class World {
     change();
     const { gravity: g1 } = this.settings;
     const h1 = this.verletHalfStep();
-    const dx = g0.x * h0 - g1.x * h1;
-    const dy = g0.y * h0 - g1.y * h1;
-    if (dx === 0 && dy === 0) return;
-    const p = this.particles;
-    for (let i = 0; i < p.count; i++) {
-      if (!p.alive[i] || p.invMass[i] === 0 || p.flags[i] & ParticleFlag.Rigid) continue;
-      p.vx[i] += dx;
-      p.vy[i] += dy;
-    }
+    shiftVerletVelocities(this.particles, g0.x * h0 - g1.x * h1, g0.y * h0 - g1.y * h1);
   }
 
   // ---- constraints -------------------------------------------------------------------------------------------

@@ -100,6 +100,32 @@ describe('integrators', () => {
     expect(world.getVelocity(p).y).to.be.closeTo(9.81 * world.time, 1e-9);
   });
 
+  it('a thrown particle keeps to its parabola through steps of varying length (variableStep, step(dt))', () => {
+    // Frame times of a page that stutters: from 1/120 to 1/24 of a second.
+    const lengths = [1 / 60, 1 / 30, 1 / 120, 1 / 45, 1 / 60, 1 / 24, 1 / 90, 1 / 60];
+    const runs: [string, (w: World, dt: number) => void][] = [
+      ['variableStep advance()', (w, dt) => w.advance(dt)],
+      ['step(dt)', (w, dt) => w.step(dt)],
+    ];
+    for (const [name, take] of runs) {
+      const world = new World({ gravity: { x: 1, y: 10 }, variableStep: true, sleeping: false });
+      const p = world.addParticle({ x: 0, y: 0, vx: 3, vy: -20 });
+      let t = 0;
+      for (let k = 0; k < 80; k++) {
+        const dt = lengths[k % lengths.length];
+        take(world, dt);
+        t += dt;
+      }
+      const at = world.getPosition(p);
+      expect(at.x, name).to.be.closeTo(3 * t + 0.5 * t * t, 1e-9);
+      expect(at.y, name).to.be.closeTo(-20 * t + 5 * t * t, 1e-9);
+      // Back on the fixed step, it goes on along the same parabola.
+      for (let k = 0; k < 30; k++) world.step();
+      const t2 = t + 30 / 60;
+      expect(world.getPosition(p).y, name).to.be.closeTo(-20 * t2 + 5 * t2 * t2, 1e-9);
+    }
+  });
+
   it('the Euler variants drift from the analytic free fall by O(h), Verlet does not', () => {
     const errors = INTEGRATORS.map((integrator) => {
       const world = new World({ gravity: { x: 0, y: 10 }, integrator, substeps: 1 });

@@ -23,7 +23,7 @@ import { placeRigidPins, solveSoftPins } from '../constraints/pin.js';
 import { solveAreas } from '../constraints/area.js';
 import { accumulateSprings } from '../constraints/spring.js';
 import { aimGrabs, beginGrabStep, solveGrabs } from '../constraints/grab.js';
-import { integrate, updateVelocities } from '../integrate.js';
+import { integrate, shiftVerletVelocities, updateVelocities, verletHalfSubstep } from '../integrate.js';
 import { keepInBounds } from '../bounds.js';
 import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
@@ -56,7 +56,13 @@ export function step(ctx: StepContext, dt: number): void {
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (ctx.constraints.springs.count === 0 && !fusedAccelerations(ctx)) accelerate(ctx, h);
   if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
+  // Between steps a particle's stored velocity is v − ½·g·h for the timestep's substeps; a step of another length
+  // (variableStep, World.step(dt)) holds it for its own substeps meanwhile, so a thrown particle keeps to its parabola
+  // through steps of any lengths.
+  const timestepSubstep = ctx.settings.timestep / n;
+  if (h !== timestepSubstep) shiftVerletOffsets(ctx, timestepSubstep, h);
   for (let s = 0; s < n; s++) substep(ctx, h);
+  if (h !== timestepSubstep) shiftVerletOffsets(ctx, h, timestepSubstep);
   if (ctx.kernel?.rigidLanes) ctx.kernel.endRigid(ctx.rigidContacts);
   if (ctx.measureTimings) {
     ctx.timings.detect = t1 - t0;
@@ -121,6 +127,13 @@ export function substep(ctx: StepContext, h: number): void {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidVelocities();
     else solveRigidContactVelocities(rigid, particles, h);
   }
+}
+
+/** Position Verlet's stored v − ½·g·h made for substeps of length `to` instead of `from`. */
+function shiftVerletOffsets(ctx: StepContext, from: number, to: number): void {
+  const { gravity, integrator } = ctx.settings;
+  const d = verletHalfSubstep(integrator, from) - verletHalfSubstep(integrator, to);
+  if (d !== 0) shiftVerletVelocities(ctx.particles, gravity.x * d, gravity.y * d);
 }
 
 /** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */
