@@ -3,7 +3,7 @@
 import type { Bounds } from './bounds.js';
 import { INTEGRATORS, type Integrator } from './integrate.js';
 import { checkBounds, type SubstepChoice, type Vec2, type WorldOptions } from './options.js';
-import { describeValue, finite, integer, nonNegative, oneOf, positive } from './validate.js';
+import { describeValue, finite, flag, integer, MAX_SPEED, nonNegative, oneOf, positive } from './validate.js';
 
 /** See WorldOptions for what each setting does. */
 export interface StepSettings {
@@ -50,13 +50,29 @@ export const NARROW_PHASES = ['sat', 'gjk'] as const;
  */
 export const MAX_STEP_SECONDS = 1;
 
+/**
+ * The shortest step World.step() takes, and the shortest `timestep`, in seconds (a microsecond): a shorter one's
+ * substeps make 1/h and compliance/h² overflow to Infinity, and the state NaN. variableStep's advance() gathers
+ * shorter elapsed times until they make one.
+ */
+export const MIN_STEP_SECONDS = 1e-6;
+
+/** A step's length in seconds, from MIN_STEP_SECONDS to MAX_STEP_SECONDS (`name`: what the caller calls it). */
+export function stepLength(name: string, v: unknown, hint = ''): number {
+  const seconds = positive(name, v);
+  if (seconds < MIN_STEP_SECONDS || seconds > MAX_STEP_SECONDS) {
+    throw new RangeError(`${name} must be from 1e-6 to ${MAX_STEP_SECONDS} (seconds), got ${describeValue(v)}${hint}`);
+  }
+  return seconds;
+}
+
 /** Each setting's check: returns the value to store or throws a TypeError/RangeError naming the setting. */
 export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K]) => StepSettings[K] } = {
-  gravity: (g) => ({ x: finite('gravity.x', g?.x), y: finite('gravity.y', g?.y) }),
-  timestep: (v) => {
-    if (positive('timestep', v) > MAX_STEP_SECONDS) throw new RangeError(`timestep must be at most ${MAX_STEP_SECONDS} (seconds), got ${describeValue(v)}`);
-    return v;
+  gravity: (g) => {
+    if (g == null || typeof g !== 'object') throw new TypeError(`gravity must be a vector {x, y}, got ${describeValue(g)}`);
+    return { x: acceleration('gravity.x', g.x), y: acceleration('gravity.y', g.y) };
   },
+  timestep: (v) => stepLength('timestep', v),
   substeps: (v) => (v === 'auto' ? 'auto' : substepCountOption(v)),
   iterations: (v) => integer('iterations', v, 1, 1000),
   damping: (v) => nonNegative('damping', v),
@@ -64,10 +80,20 @@ export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K
   bounds: (b) => (b == null ? null : checkBounds(b)),
   boundsFriction: (v) => nonNegative('boundsFriction', v),
   maxCatchUpSteps: (v) => integer('maxCatchUpSteps', v, 1, 1000),
-  variableStep: (v) => Boolean(v),
+  variableStep: (v) => flag('variableStep', v),
   contactSlop: (v) => nonNegative('contactSlop', v),
   maxPushSpeed: (v) => positive('maxPushSpeed', v),
 };
+
+/**
+ * A gravity component, within ±MAX_SPEED a second per second: a body falls at most MAX_SPEED faster each second (a
+ * larger one overflows a step's bounding boxes and positions to Infinity).
+ */
+function acceleration(name: string, v: unknown): number {
+  const a = finite(name, v);
+  if (a > MAX_SPEED || a < -MAX_SPEED) throw new RangeError(`${name} must be within ±1e9 (world units per second²), got ${describeValue(v)}`);
+  return a;
+}
 
 /** `substeps` when not 'auto': a whole number from 1 to 1000 (the error says 'auto' is allowed too). */
 function substepCountOption(v: unknown): number {

@@ -3,6 +3,7 @@
 // A test enumerates a fresh world's fields and fails on any field that is in neither list, so a new field cannot be
 // forgotten silently; the lists drive the code below, so a renamed field fails that test instead of restoring nothing.
 import type { Bounds } from './bounds.js';
+import type { ParticleStore } from './particles.js';
 import type { RegistrySnapshot } from './handles.js';
 import type { Column } from './table.js';
 import type { BodiesSnapshot } from './body-registry.js';
@@ -170,6 +171,16 @@ export interface WorldSnapshot extends Record<Snapshotted, unknown> {
   rigidAnchors: ReturnType<RigidAnchorCache['snapshot']>;
 }
 
+/** Refuses a table holding NaN or ±Infinity in any row (a snapshot edited or damaged on its way). */
+function finiteColumns(what: string, table: ParticleStore): void {
+  for (const name of table.columns) {
+    const column = table[name];
+    for (let i = 0; i < table.count; i++) {
+      if (!Number.isFinite(column[i])) throw new RangeError(`${what}.${name}[${i}] must be a finite number, got ${describeValue(column[i])}`);
+    }
+  }
+}
+
 export function snapshotContext(ctx: StepContext): WorldSnapshot {
   // The sleep bookkeeping (awake count) is derived when the topology is rebuilt; a snapshot taken before that (before
   // the first step, right after an edit) would restore a stale count and freeze the world. Rebuild it now.
@@ -214,6 +225,7 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   ctx.stepCount = integer('snapshot stepCount', s.stepCount, 0);
   ctx.accumulator = nonNegative('snapshot accumulator', s.accumulator);
   ctx.particles.restore(s.particles.columns, s.particles.count);
+  finiteColumns('snapshot particles', ctx.particles);
   ctx.particleIds.restore(s.particleIds);
   ctx.constraints.restore(s.constraints);
   ctx.bodies.restore(s.bodies);

@@ -70,6 +70,46 @@ export function positive(name: string, value: unknown): number {
   return v;
 }
 
+/**
+ * The softest compliance a constraint may have (world units per unit of force): softer than anything a step can show,
+ * and beyond it compliance / h² (h down to 1e-9 s) overflows to Infinity in the solver, and the state to NaN.
+ */
+export const MAX_COMPLIANCE = 1e9;
+
+/** A compliance: a number from 0 (rigid) to MAX_COMPLIANCE. */
+export function compliance(name: string, value: unknown): number {
+  const v = nonNegative(name, value);
+  if (v > MAX_COMPLIANCE) throw new RangeError(`${name} must be from 0 (rigid) to 1e9 (softer than anything a step shows), got ${show(value)}`);
+  return v;
+}
+
+/** A stiffness the solver turns into the compliance 1/stiffness: at least 1/MAX_COMPLIANCE. */
+export function stiffness(name: string, value: unknown): number {
+  const v = positive(name, value);
+  if (v < 1 / MAX_COMPLIANCE) throw new RangeError(`${name} must be at least 1e-9 (its compliance 1/${name} at most 1e9), got ${show(value)}`);
+  return v;
+}
+
+/**
+ * The lightest a movable particle or body may be: its inverse mass (and a rigid body's inverse inertia, at most
+ * 1/MIN_INERTIA) must stay far from overflowing, or one step makes its state NaN.
+ */
+export const MIN_MASS = 1e-12;
+export const MIN_INERTIA = 1e-30;
+
+/** A mass of a movable particle or body: a finite number of at least MIN_MASS (`from`: how it was found, if not given). */
+export function mass(name: string, value: unknown, from = ''): number {
+  const v = finite(name, value);
+  if (!(v >= MIN_MASS)) throw new RangeError(`${name} must be at least 1e-12${from ? `; ${from} gives` : ', got'} ${show(value)}`);
+  return v;
+}
+
+/** true or false (a string such as "false" is a TypeError, not a truthy value). */
+export function flag(name: string, value: unknown): boolean {
+  if (typeof value !== 'boolean') throw new TypeError(`${name} must be true or false, got ${show(value)}`);
+  return value;
+}
+
 /** A finite number >= 0. */
 export function nonNegative(name: string, value: unknown): number {
   const v = finite(name, value);

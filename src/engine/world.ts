@@ -21,18 +21,18 @@ import { advance, isSettled, step } from './pipeline/step.js';
 import { ensureTopology, topologyChanged, wakeAll, wakeParticle } from './pipeline/topology.js';
 import { pickGrabPoint } from './pipeline/pick.js';
 import { Kind } from './constraint-registry.js';
-import { applyImpulseByMass, bodyMass, centroid, softRingLength } from './body-registry.js';
+import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js';
 import { BODY_KINDS, DEFAULT_LIMITS, OPTION_NAMES, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
-import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, substepCount, type StepSettings } from './settings.js';
+import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, stepLength, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { KernelDiagnostics, KernelOptions } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { coordinate, describeValue, finite, integer, knownNames, knownOptions, objectOf, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
+import { compliance as complianceOf, flag, mass as massOf, coordinate, describeValue, stiffness as stiffnessOf, finite, integer, knownNames, knownOptions, objectOf, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, unit, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -43,7 +43,10 @@ export type { RigidBodyOptions, Pose, MassInfo, JointOptions, JointType } from '
 export type { DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions, BodyKind, ConstraintKind } from './options.js';
 export { BODY_KINDS, COLLIDER_SHAPES, DEFAULT_LIMITS } from './options.js';
 
-export { MAX_STEP_SECONDS } from './settings.js';
+export { MAX_STEP_SECONDS, MIN_STEP_SECONDS } from './settings.js';
+
+/** The largest `pressure` of an area constraint (a multiple of the rest area): beyond, areas overflow. */
+const MAX_PRESSURE = 1e6;
 
 /** The names `new World(options)` takes: the settings, their limits and the solver kernel. */
 const WORLD_OPTIONS = [...Object.keys(DEFAULTS), 'limits', 'kernel'];
@@ -64,12 +67,12 @@ export class World {
     if (typeof options !== 'object') throw new TypeError(`options must be an object, got ${describeValue(options)}`);
     options ??= {};
     knownOptions('World option', options, WORLD_OPTIONS);
-    if (options.limits != null) knownOptions('limits option', options.limits, Object.keys(DEFAULT_LIMITS));
+    if (options.limits != null) knownOptions('limits option', objectOf('limits', options.limits), Object.keys(DEFAULT_LIMITS));
     const o = { ...DEFAULTS, ...options };
     const settings = checkedSettings(o);
     const ctx = new StepContext(settings, makeBroadPhase(oneOf('broadphase', o.broadphase, BROAD_PHASES), nonNegative('cellSize', o.cellSize)), options.kernel);
     ctx.narrowPhase.mode = oneOf('narrowphase', o.narrowphase, NARROW_PHASES);
-    ctx.sleep.enabled = Boolean(o.sleeping);
+    ctx.sleep.enabled = flag('sleeping', o.sleeping);
     const limits = { ...DEFAULT_LIMITS, ...options.limits };
     ctx.particleIds.limit = integer('limits.particles', limits.particles, 1, MAX_SLOTS);
     ctx.constraints.ids.limit = integer('limits.constraints', limits.constraints, 1, MAX_SLOTS);
@@ -104,13 +107,13 @@ export class World {
 
   /** Simulated seconds. */
   get time(): number { return this.ctx.time; }
-  set time(v: number) { this.ctx.time = v; }
+  set time(v: number) { this.ctx.time = nonNegative('time', v); }
   /** Steps taken. */
   get stepCount(): number { return this.ctx.stepCount; }
-  set stepCount(v: number) { this.ctx.stepCount = v; }
+  set stepCount(v: number) { this.ctx.stepCount = integer('stepCount', v, 0); }
   /** Fraction of a step left in the accumulator after advance(): blend the two newest states by it to render. */
   get alpha(): number { return this.ctx.alpha; }
-  set alpha(v: number) { this.ctx.alpha = v; }
+  set alpha(v: number) { this.ctx.alpha = unit('alpha', v); }
 
   // ---- settings (validated) ----------------------------------------------------------------------------------
 
@@ -213,7 +216,7 @@ export class World {
     return this.ctx.sleep.enabled;
   }
   set sleeping(v: boolean) {
-    this.ctx.sleep.enabled = Boolean(v);
+    this.ctx.sleep.enabled = flag('sleeping', v);
     if (!v) this.wakeAll();
   }
 
@@ -244,7 +247,7 @@ export class World {
     const x = coordinate('x', options.x);
     const y = coordinate('y', options.y);
     const mass = options.mass === undefined ? 1 : options.mass;
-    if (mass !== Infinity) positive('mass', mass);
+    if (mass !== Infinity) massOf('mass', mass);
     const radius = coordinate('radius', nonNegative('radius', options.radius ?? 0));
     const vx = speed('vx', options.vx ?? 0);
     const vy = speed('vy', options.vy ?? 0);
@@ -270,6 +273,20 @@ export class World {
   removeParticle(handle: Handle): void {
     const { ctx } = this;
     const slot = ctx.particleIds.slotOf(handle, 'particle');
+    // A body keeps its particles by storage index (a rigid body's row, a frame's corners, its parts): one removed
+    // alone would leave the body holding whatever particle takes the slot next.
+    const bodies = ctx.bodies;
+    for (let b = 0; b < bodies.ids.high; b++) {
+      if (bodies.ids.alive[b] === 1 && bodies.particles[b].includes(slot)) {
+        throw new RangeError(`particle ${handle} belongs to body ${bodies.ids.handleOf(b)}: remove the body (removeBody) instead`);
+      }
+    }
+    this.releaseParticle(handle, slot);
+  }
+
+  /** Removes a live particle and the constraints that use it (its body, if any, is being removed). */
+  private releaseParticle(handle: Handle, slot: number): void {
+    const { ctx } = this;
     topologyChanged(ctx);
     for (const c of ctx.constraints.using(slot)) this.removeConstraint(c);
     const p = ctx.particles;
@@ -283,7 +300,11 @@ export class World {
   /** The storage index of a live particle handle (index into world.particles' arrays). */
   particleIndex(handle: Handle): number { return this.ctx.particleIds.slotOf(handle, 'particle'); }
   /** The handle of the particle stored at `index`. */
-  particleHandle(index: number): Handle { return this.ctx.particleIds.handleOf(index); }
+  particleHandle(index: number): Handle {
+    const i = integer('index', index, 0);
+    if (i >= this.particles.count || this.particles.alive[i] === 0) throw new RangeError(`index ${i} holds no live particle`);
+    return this.ctx.particleIds.handleOf(i);
+  }
   /** Live particle count. */
   get particleCount(): number { return this.particles.alive.subarray(0, this.particles.count).reduce((n, a) => n + a, 0); }
 
@@ -295,9 +316,9 @@ export class World {
   /** Moves a particle (teleport: its velocity is kept). */
   setPosition(handle: Handle, x: number, y: number): void {
     const i = this.particleIndex(handle);
-    wakeParticle(this.ctx, i);
     const nx = coordinate('x', x);
     const ny = coordinate('y', y);
+    wakeParticle(this.ctx, i);
     const p = this.particles;
     p.px[i] += nx - p.x[i];
     p.py[i] += ny - p.y[i];
@@ -313,15 +334,17 @@ export class World {
 
   setVelocity(handle: Handle, vx: number, vy: number): void {
     const i = this.particleIndex(handle);
+    const [sx, sy] = [speed('vx', vx), speed('vy', vy)];
     wakeParticle(this.ctx, i);
-    this.writeVelocity(i, speed('vx', vx), speed('vy', vy));
+    this.writeVelocity(i, sx, sy);
   }
 
   /** Adds a force for the next step (cleared after it). */
   applyForce(handle: Handle, fx: number, fy: number): void {
     const i = this.particleIndex(handle);
     const [gx, gy] = [finite('fx', fx), finite('fy', fy)];
-    pushSpeed(FORCE_SPEED, gx, gy, this.particles.invMass[i], this.settings.timestep);
+    // A sleeping body's inverse mass is parked at 0: the speed is checked against the one it wakes with.
+    pushSpeed(FORCE_SPEED, gx, gy, this.ctx.sleep.awakeInvMass(i, this.particles), this.settings.timestep);
     wakeParticle(this.ctx, i);
     this.particles.fx[i] += gx;
     this.particles.fy[i] += gy;
@@ -330,10 +353,10 @@ export class World {
   /** Changes the velocity by impulse / mass at once. */
   applyImpulse(handle: Handle, ix: number, iy: number): void {
     const i = this.particleIndex(handle);
-    const w = this.particles.invMass[i];
     const [jx, jy] = [finite('ix', ix), finite('iy', iy)];
-    pushSpeed(IMPULSE_SPEED, jx, jy, w);
+    pushSpeed(IMPULSE_SPEED, jx, jy, this.ctx.sleep.awakeInvMass(i, this.particles));
     wakeParticle(this.ctx, i);
+    const w = this.particles.invMass[i];
     this.particles.vx[i] += jx * w;
     this.particles.vy[i] += jy * w;
   }
@@ -396,7 +419,7 @@ export class World {
     // An upper bound moves nothing (a particle only ever reaches it from within): any, as Infinity is.
     const maxLength = options.maxLength === undefined ? length : nonNegativeOrInfinity('maxLength', options.maxLength);
     if (minLength > maxLength) throw new RangeError(`minLength (${minLength}) must be <= maxLength (${maxLength})`);
-    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const compliance = complianceOf('compliance', options.compliance ?? 0);
     const breakStrain = options.breakStrain === undefined ? 0 : positive('breakStrain', options.breakStrain);
     if (breakStrain > 0 && !(maxLength > 0 && maxLength < Infinity)) throw new RangeError(`breakStrain needs a finite, positive maxLength, got ${maxLength}`);
     const handle = this.ctx.constraints.add(this.distances, { a: ia, b: ib, minLength, maxLength, compliance, breakStrain });
@@ -414,7 +437,7 @@ export class World {
     const min = finite('min', options.min);
     const max = finite('max', options.max);
     if (!(min <= max && max - min <= 2 * Math.PI)) throw new RangeError(`angle limits must satisfy min <= max <= min + 2π, got min ${min}, max ${max}`);
-    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const compliance = complianceOf('compliance', options.compliance ?? 0);
     return this.added(this.ctx.constraints.add(this.angles, { a: ia, b: ib, c: ic, min, max, compliance }));
   }
 
@@ -447,7 +470,7 @@ export class World {
     if (p.flags[i] & ParticleFlag.Pinned) throw new RangeError(`particle ${particle} is already rigidly pinned`);
     const tx = options.x === undefined ? p.x[i] : coordinate('x', options.x);
     const ty = options.y === undefined ? p.y[i] : coordinate('y', options.y);
-    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const compliance = complianceOf('compliance', options.compliance ?? 0);
     const rigid = compliance === 0;
     // A rigid pin makes the particle kinematic: its inverse mass is parked in the pin while the pin lives.
     const handle = this.ctx.constraints.add(this.pins, { p: i, tx, ty, compliance, savedInvMass: rigid ? p.invMass[i] : 0 });
@@ -476,8 +499,9 @@ export class World {
     if (new Set(slots).size !== slots.length) throw new RangeError('an area constraint loop must not repeat a particle');
     knownNames('area option', objectOf('area options', options), OPTION_NAMES.area);
     const pressure = positive('pressure', options.pressure ?? 1);
+    if (pressure > MAX_PRESSURE) throw new RangeError(`pressure must be at most ${MAX_PRESSURE} (times the rest area), got ${describeValue(pressure)}`);
     const t = this.areas;
-    const compliance = nonNegative('compliance', options.compliance ?? 0);
+    const compliance = complianceOf('compliance', options.compliance ?? 0);
     const start = t.appendLoop(slots);
     const restArea = loopArea(t.pool, start, slots.length, this.particles.x, this.particles.y) * pressure;
     return this.added(this.ctx.constraints.add(t, { start, length: slots.length, restArea, compliance }));
@@ -566,7 +590,7 @@ export class World {
     for (const c of ctx.bodies.constraints[slot]) if (ctx.constraints.ids.isValid(c)) this.removeConstraint(c);
     for (const i of ctx.bodies.particles[slot]) {
       const h = ctx.particleIds.handleOf(i);
-      if (ctx.particleIds.isValid(h)) this.removeParticle(h);
+      if (ctx.particleIds.isValid(h)) this.releaseParticle(h, i);
     }
     ctx.bodies.remove(handle);
     ctx.rigidShapes.clear(slot);
@@ -609,7 +633,12 @@ export class World {
     const jx = finite('ix', ix);
     const jy = finite('iy', iy);
     if (this.ctx.rigidShapes.source(this.ctx.bodies.slotOf(handle))) return api.pushBody(this.ctx, handle, jx, jy, x, y, true);
-    const mass = bodyMass(this.particles, idx);
+    let mass = 0;
+    for (const i of idx) {
+      // Checked against the masses the body wakes with (a sleeping body's are parked at infinity).
+      const w = this.ctx.sleep.awakeInvMass(i, this.particles);
+      if (w > 0) mass += 1 / w;
+    }
     pushSpeed(IMPULSE_SPEED, jx, jy, mass > 0 ? 1 / mass : 0);
     this.wake(handle);
     applyImpulseByMass(this.particles, idx, jx, jy);
@@ -679,7 +708,7 @@ export class World {
   grab(x: number, y: number, options: GrabOptions = {}): Handle | null {
     this.query(['x', 'y'], x, y);
     knownNames('grab option', objectOf('grab options', options), OPTION_NAMES.grab);
-    const stiffness = positive('stiffness', options.stiffness ?? 2000);
+    const stiffness = stiffnessOf('stiffness', options.stiffness ?? 2000);
     const pickRadius = coordinate('pickRadius', nonNegative('pickRadius', options.pickRadius ?? 0.5));
     const g = pickGrabPoint(this.ctx, x, y, pickRadius);
     if (!g) return null;
@@ -739,10 +768,7 @@ export class World {
    * step of a minute: refused, as any step longer than MAX_STEP_SECONDS).
    */
   step(dt: number = this.settings.timestep): void {
-    if (dt !== this.settings.timestep) {
-      positive('dt', dt);
-      if (dt > MAX_STEP_SECONDS) throw new RangeError(`dt is one step's length in seconds, at most ${MAX_STEP_SECONDS}, got ${describeValue(dt)}: for n steps, call step() n times`);
-    }
+    if (dt !== this.settings.timestep) stepLength('dt', dt, typeof dt === 'number' && dt > MAX_STEP_SECONDS ? ': one step\'s length; for n steps, call step() n times' : '');
     step(this.ctx, dt);
   }
 
@@ -773,6 +799,13 @@ export class World {
 
   /** Puts back a state from snapshot() (of this world or another); anything else is refused with a TypeError. */
   restore(s: WorldSnapshot): void {
-    restoreContext(this.ctx, s);
+    // All or nothing: a snapshot refused part-way through leaves the world as it was.
+    const before = snapshotContext(this.ctx);
+    try {
+      restoreContext(this.ctx, s);
+    } catch (error) {
+      restoreContext(this.ctx, before);
+      throw error;
+    }
   }
 }

@@ -47,7 +47,7 @@ describe('bad input', () => {
     // World.step takes a length: step(60), written as an element's step(60) (sixty steps), would be one 60 s step.
     const w = new World();
     const p = w.addParticle({ x: 0, y: 0 });
-    throwsNaming(() => w.step(60), RangeError, 'dt', 'at most 1', '60', 'call step() n times');
+    throwsNaming(() => w.step(60), RangeError, 'dt', 'from 1e-6 to 1', '60', 'call step() n times');
     w.step(1);
     expect(w.time).to.equal(1);
     expect(allFinite(w)).to.equal(true);
@@ -153,7 +153,7 @@ describe('bad input', () => {
     // The gravity read is a copy: changing it changes nothing unchecked.
     w.gravity.x = NaN;
     expect(w.gravity.x).to.equal(0);
-    throwsNaming(() => new World({ timestep: 100 }), RangeError, 'timestep', 'at most 1', '100');
+    throwsNaming(() => new World({ timestep: 100 }), RangeError, 'timestep', 'from 1e-6 to 1', '100');
     throwsNaming(() => (w.timestep = 5), RangeError, 'timestep', '5');
     w.gravity = { x: 1, y: 2 };
     for (let k = 0; k < 30; k++) w.step();
@@ -349,5 +349,169 @@ describe('limits', () => {
     world.step();
     expect(allFinite(world)).to.equal(true);
     throwsNaming(() => new World({ limits: { bodies: 0 } }), RangeError, 'limits.bodies', '0');
+  });
+});
+
+describe('values that used to overflow to NaN', () => {
+  /** A box on a floor, stepped: the world that each refused call below must leave able to step. */
+  function pile() {
+    const world = new World();
+    createBox(world, { x: 0, y: 10, width: 40, height: 1, static: true });
+    const box = createBox(world, { x: 0, y: 9, width: 1, height: 1 });
+    return { world, box };
+  }
+  function stepsOn(world: World, steps = 5) {
+    for (let k = 0; k < steps; k++) world.step();
+    expect(allFinite(world)).to.equal(true);
+    const p = world.particles;
+    for (let i = 0; i < p.count; i++) expect(Number.isFinite(p.angle[i]) && Number.isFinite(p.omega[i])).to.equal(true);
+  }
+
+  it('steps shorter than a microsecond are refused; variableStep gathers them into one', () => {
+    const { world } = pile();
+    throwsNaming(() => world.step(1e-308), RangeError, 'dt', 'from 1e-6', '1e-308');
+    throwsNaming(() => new World({ timestep: 1e-320 }), RangeError, 'timestep', '1e-320');
+    throwsNaming(() => (world.timestep = 1e-9), RangeError, 'timestep', '1e-9');
+    stepsOn(world);
+    world.step(1e-6); // the shortest step taken
+    stepsOn(world);
+    const v = new World({ variableStep: true });
+    const p = v.addParticle({ x: 0, y: 0 });
+    for (let k = 0; k < 1000; k++) expect(v.advance(1e-9)).to.equal(0);
+    expect(v.advance(1e-9)).to.equal(1); // 1001 ns make a step
+    expect(v.time).to.be.closeTo(1.001e-6, 1e-15);
+    expect(Number.isFinite(v.getPosition(p).y)).to.equal(true);
+  });
+
+  it('a sleeping body is held to the speed limit as an awake one is (its mass is parked while it sleeps)', () => {
+    const { world, box } = pile();
+    for (let k = 0; k < 200; k++) world.step();
+    expect(world.isAwake(box.body)).to.equal(false);
+    const hash = world.stateHash();
+    throwsNaming(() => world.applyBodyImpulse(box.body, 1.7e308, 0), RangeError, 'ix / mass', '±1e9');
+    throwsNaming(() => world.applyBodyForce(box.body, 0, 1e300), RangeError, 'fy · timestep / mass');
+    throwsNaming(() => world.applyBodyTorque(box.body, 1e300), RangeError, 'torque · timestep / inertia');
+    expect(world.stateHash()).to.equal(hash);
+    expect(world.isAwake(box.body)).to.equal(false);
+    const soft = new World({ bounds: { minX: -5, minY: -10, maxX: 5, maxY: 0 } });
+    const q = soft.addParticle({ x: 0, y: -0.5, radius: 0.5 });
+    const ball = soft.addBody('particle', [q], [], { shape: 'particles' });
+    for (let k = 0; k < 300; k++) soft.step();
+    expect(soft.isAwake(ball)).to.equal(false);
+    throwsNaming(() => soft.applyImpulse(q, 1e300, 0), RangeError, 'ix / mass');
+    throwsNaming(() => soft.applyForce(q, 1e300, 0), RangeError, 'fx · timestep / mass');
+    throwsNaming(() => soft.applyBodyImpulse(ball, 0, 1e300), RangeError, 'iy / mass');
+    stepsOn(soft);
+  });
+
+  it('compliance above 1e9, a stiffness below 1e-9 and pressure above 1e6 are refused, by every builder too', () => {
+    const world = new World();
+    const a = world.addParticle({ x: 0, y: 0, mass: Infinity });
+    const b = world.addParticle({ x: 1, y: 0 });
+    const c = world.addParticle({ x: 1, y: 1 });
+    throwsNaming(() => world.addDistance(a, b, { compliance: 1e303 }), RangeError, 'compliance', '1e+303');
+    throwsNaming(() => world.addAngleLimit(a, b, c, { min: 0, max: 1, compliance: 1e308 }), RangeError, 'compliance');
+    throwsNaming(() => world.addPin(b, { x: 0, y: 0, compliance: 1e308 }), RangeError, 'compliance');
+    throwsNaming(() => world.addAreaConstraint([a, b, c], { compliance: 1e308 }), RangeError, 'compliance');
+    throwsNaming(() => world.addAreaConstraint([a, b, c], { pressure: 1e308 }), RangeError, 'pressure', '1e+308');
+    throwsNaming(() => world.grab(1, 0, { stiffness: 1e-300 }), RangeError, 'stiffness', '1e-300');
+    const o = { x: 0, y: 0 };
+    throwsNaming(() => createCloth(world, { origin: o, columns: 3, rows: 3, spacing: 1, structural: 1e308 }), RangeError, 'structural');
+    throwsNaming(() => createCloth(world, { origin: o, columns: 3, rows: 3, spacing: 1, shear: 1e308 }), RangeError, 'shear');
+    throwsNaming(() => createCloth(world, { origin: o, columns: 3, rows: 3, spacing: 1, bend: 1e308 }), RangeError, 'bend');
+    throwsNaming(() => createRope(world, { from: o, to: { x: 1, y: 0 }, compliance: 1e308 }), RangeError, 'compliance');
+    throwsNaming(() => createSoftBody(world, { center: o, radius: 1, areaCompliance: 1e308 }), RangeError, 'areaCompliance');
+    throwsNaming(() => createSoftBody(world, { center: o, radius: 1, compliance: 1e308 }), RangeError, 'compliance');
+    throwsNaming(() => createRagdoll(world, { x: 0, y: 0, jointCompliance: 1e308 }), RangeError, 'jointCompliance');
+    throwsNaming(() => createBox(world, { x: 0, y: 0, width: 1, height: 1, model: 'particles', compliance: 1e308 }), RangeError, 'compliance');
+    const ground = createBox(world, { x: 0, y: 10, width: 40, height: 1, static: true }).body;
+    const box = createBox(world, { x: 0, y: 7, width: 1, height: 1 }).body;
+    throwsNaming(() => world.addJoint({ type: 'revolute', a: box, b: ground, anchor: { x: 0.5, y: 7.5 }, compliance: 1e303 }), RangeError, 'compliance');
+    throwsNaming(() => world.addJoint({ type: 'spring', a: box, b: ground, anchorA: { x: 0, y: 7 }, anchorB: { x: 0, y: 9 }, stiffness: 1e-310 }), RangeError, 'stiffness');
+    // At the limits, it steps on.
+    world.addDistance(a, b, { compliance: 1e9 });
+    world.addJoint({ type: 'spring', a: box, b: ground, anchorA: { x: 0, y: 7 }, anchorB: { x: 0, y: 9 }, stiffness: 1e-9 });
+    stepsOn(world, 20);
+  });
+
+  it('masses below 1e-12 and bodies too small for a finite inertia are refused, whoever computes the mass', () => {
+    const world = new World();
+    throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: 1e-310 }), RangeError, 'mass', '1e-310');
+    throwsNaming(() => createRope(world, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 }, mass: 1e-320 }), RangeError, 'mass');
+    throwsNaming(() => createCloth(world, { origin: { x: 0, y: 0 }, columns: 2, rows: 2, spacing: 1, mass: 1e-320 }), RangeError, 'mass');
+    throwsNaming(() => createRagdoll(world, { x: 0, y: 0, mass: 1e-320 }), RangeError, 'mass');
+    throwsNaming(() => createSoftBody(world, { center: { x: 0, y: 0 }, radius: 1e-300 }), RangeError, 'mass', 'π · radius²');
+    throwsNaming(() => createCircle(world, { x: 0, y: 0, radius: 1e-200, model: 'particles' }), RangeError, 'mass', 'π · radius²');
+    throwsNaming(() => createCircle(world, { x: 0, y: 0, radius: 1e-160 }), RangeError, 'mass', 'density × area');
+    throwsNaming(() => createBox(world, { x: 0, y: 0, width: 1e-100, height: 1e-100, mass: 1 }), RangeError, 'moment of inertia');
+    throwsNaming(() => createBox(world, { x: 0, y: 0, width: 1, height: 1, mass: 1e-320 }), RangeError, 'mass');
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: [{ x: 0, y: 0 }, { x: 1e-100, y: 0 }, { x: 0, y: 1e-100 }], mass: 1 }), RangeError);
+    expect(world.particleCount).to.equal(0);
+    createCircle(world, { x: 0, y: 0, radius: 1e-3 });
+    stepsOn(world);
+  });
+
+  it('gravity beyond ±1e9 is refused; a world whose box went NaN no longer breaks every later step', () => {
+    throwsNaming(() => new World({ gravity: { x: 0, y: 1e200 } }), RangeError, 'gravity.y', '1e+200');
+    throwsNaming(() => new World({ gravity: 0 as never }), TypeError, 'gravity', '0');
+    const { world, box } = pile();
+    throwsNaming(() => world.setGravity(-1e10, 0), RangeError, 'gravity.x');
+    // NaN put in by hand (no call lets it in): the broad phase pairs it with nothing instead of throwing.
+    const i = world.particleIndex(box.particles[0]);
+    world.particles.x[i] = NaN;
+    world.step();
+    world.step();
+    expect(world.stepCount).to.equal(2);
+  });
+
+  it("a body's particle is removed with its body only; restore() is all or nothing and refuses NaN", () => {
+    const world = new World();
+    const box = createBox(world, { x: 0, y: 0, width: 1, height: 1 });
+    throwsNaming(() => world.removeParticle(box.particles[0]), RangeError, `particle ${box.particles[0]}`, `body ${box.body}`, 'removeBody');
+    const frame = createBox(world, { x: 3, y: 0, width: 1, height: 1, model: 'particles' });
+    throwsNaming(() => world.removeParticle(frame.particles[2]), RangeError, 'removeBody');
+    expect(world.bodyPose(box.body)).to.deep.equal({ x: 0, y: 0, angle: 0 });
+    world.removeBody(frame.body);
+    expect(world.particleCount).to.equal(1);
+
+    const other = new World();
+    createRope(other, { from: { x: 0, y: 0 }, to: { x: 1, y: 0 } });
+    const damaged = other.snapshot();
+    (damaged.particles.columns[0] as Float64Array)[3] = NaN;
+    const hash = world.stateHash();
+    const gravity = world.gravity;
+    throwsNaming(() => world.restore(damaged), RangeError, 'snapshot particles.x[3]', 'NaN');
+    expect(world.stateHash()).to.equal(hash);
+    const early = other.snapshot();
+    early.time = -1;
+    early.settings.gravity = { x: 5, y: 5 };
+    throwsNaming(() => world.restore(early), RangeError, 'time');
+    expect(world.gravity).to.deep.equal(gravity);
+    expect(() => world.restore({ ...other.snapshot(), particleIds: {} } as never)).to.throw();
+    expect(world.stateHash()).to.equal(hash);
+    stepsOn(world);
+  });
+
+  it('a refused setter or argument changes nothing: time, stepCount, alpha, setPosition and setVelocity of a sleeping body', () => {
+    const { world, box } = pile();
+    throwsNaming(() => (world.time = NaN), RangeError, 'time', 'NaN');
+    throwsNaming(() => (world.time = -5), RangeError, 'time', '-5');
+    throwsNaming(() => (world.stepCount = 'x' as never), TypeError, 'stepCount', '"x"');
+    throwsNaming(() => (world.alpha = 2), RangeError, 'alpha', '2');
+    throwsNaming(() => new World({ sleeping: 'false' as never }), TypeError, 'sleeping', '"false"');
+    throwsNaming(() => new World({ variableStep: 1 as never }), TypeError, 'variableStep', '1');
+    throwsNaming(() => new World({ limits: 5 as never }), TypeError, 'limits', '5');
+    throwsNaming(() => world.particleHandle(-1), RangeError, 'index', '-1');
+    throwsNaming(() => world.particleHandle('3' as never), TypeError, 'index', '"3"');
+    // A twin that got none of the refused calls ends in the same state.
+    const twin = pile().world;
+    for (let k = 0; k < 200; k++) [world, twin].forEach((w) => w.step());
+    const p = box.particles[0];
+    throwsNaming(() => world.setPosition(p, NaN, 0), RangeError, 'x');
+    throwsNaming(() => world.setVelocity(p, 0, Infinity), RangeError, 'vy');
+    expect(world.isAwake(box.body)).to.equal(false);
+    for (let k = 0; k < 30; k++) [world, twin].forEach((w) => w.step());
+    expect(world.stateHash()).to.equal(twin.stateHash());
+    expect(world.time).to.equal(twin.time);
   });
 });

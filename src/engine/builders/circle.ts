@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, positive } from '../validate.js';
-import { builderOptions, colliderOf, transactional, type Built } from './common.js';
+import { builderOptions, colliderOf, massEach, transactional, type Built } from './common.js';
 import { createRigid, modelOf, RIGID_OPTIONS, type RigidOptions } from './rigid.js';
 
 export interface CircleOptions extends RigidOptions {
@@ -20,7 +20,7 @@ export function createCircle(world: World, o: CircleOptions): Built {
   builderOptions('circle', o, CIRCLE_OPTIONS);
   const radius = coordinate('radius', positive('radius', o.radius));
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, undefined, radius);
-  const mass = o.static ? Infinity : positive('mass', o.mass ?? Math.PI * radius * radius);
+  const mass = o.static ? Infinity : massEach('mass', o.mass, 1, Math.PI * radius * radius, 'π · radius²');
   const x = coordinate('x', o.x);
   const y = coordinate('y', o.y);
   return transactional(world, (particles) => {

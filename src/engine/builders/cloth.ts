@@ -1,6 +1,6 @@
 import type { World } from '../world.js';
 import { coordinate, integer, MAX_WORLD_COORDINATE, nonNegative, positive } from '../validate.js';
-import { addTethers, BODY_OPTIONS, builderOptions, colliderOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
+import { addTethers, BODY_OPTIONS, builderOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyOptions, type Built } from './common.js';
 
 /** Which particles of the top row are pinned: every one, the two corners, none, or a list of column indices. */
 export type ClothPins = 'top' | 'corners' | 'none' | number[];
@@ -41,10 +41,10 @@ export function createCloth(world: World, o: ClothOptions): Built {
   const columns = integer('columns', o.columns, 2, 4096);
   const rows = integer('rows', o.rows, 2, 4096);
   const spacing = coordinate('spacing', positive('spacing', o.spacing));
-  const each = massEach('mass', o.mass, columns * rows, (columns * rows) / 100);
-  const structural = nonNegative('structural', o.structural ?? 0);
-  const shear = o.shear == null ? null : nonNegative('shear', o.shear);
-  const bend = o.bend == null ? null : nonNegative('bend', o.bend);
+  const each = massEach('mass', o.mass, columns * rows, (columns * rows) / 100, 'columns · rows / 100');
+  const structural = complianceOf('structural', o.structural);
+  const shear = o.shear == null ? null : complianceOf('shear', o.shear);
+  const bend = o.bend == null ? null : complianceOf('bend', o.bend);
   const pinned = pinnedColumns(o.pins ?? 'top', columns);
   const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));
   const breakStrain = o.tear === undefined ? undefined : positive('tear', o.tear);

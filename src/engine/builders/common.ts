@@ -1,5 +1,5 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { coordinate, knownNames, nonNegative, objectOf, positive } from '../validate.js';
+import { compliance, coordinate, knownNames, mass, MIN_MASS, objectOf, positive } from '../validate.js';
 
 /** What every builder returns: the body and the handles of what it made. */
 export interface Built {
@@ -65,13 +65,17 @@ export function colliderOf(o: BodyOptions, shape: 'polygon' | 'particles', colli
   };
 }
 
-/** Per-particle mass from a total mass spread over n particles. */
-export function massEach(name: string, total: number | undefined, n: number, fallback: number): number {
-  return positive(name, total ?? fallback) / n;
+/** Per-particle mass from a total mass spread over n particles (`fallback`, found as `from` says, when not given). */
+export function massEach(name: string, total: number | undefined, n: number, fallback: number, from: string): number {
+  const each = (total === undefined ? fallback : positive(name, total)) / n;
+  // Each particle must be heavy enough that its inverse mass stays finite.
+  if (!(each >= MIN_MASS)) mass(`${name} / ${n} particles`, each, total === undefined ? `its default (${from})` : '');
+  return each;
 }
 
+/** A builder's compliance option (default 0: rigid), checked as the World's are. */
 export function complianceOf(name: string, value: number | undefined): number {
-  return nonNegative(name, value ?? 0);
+  return compliance(name, value ?? 0);
 }
 
 /** Runs `make` and removes what it made if it throws, so a failed build leaves the world untouched. */

@@ -64,7 +64,7 @@ export function createRagdoll(world: World, o: RagdollOptions): Built {
   const x = coordinate('x', o.x);
   const y = coordinate('y', o.y);
   const height = coordinate('height', positive('height', o.height ?? RAGDOLL_HEIGHT));
-  const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70);
+  const each = o.static ? Infinity : massEach('mass', o.mass, POSE.length, 70, '70');
   const compliance = complianceOf('jointCompliance', o.jointCompliance);
   return transactional(world, (particles, constraints) => {
     for (const [px, py] of POSE) particles.push(world.addParticle({ x: x + px * height, y: y + py * height, mass: each, radius: 0.04 * height }));

@@ -94,7 +94,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   const ox = coordinate('x', o.x ?? 0);
   const oy = coordinate('y', o.y ?? 0);
   const angle = finite('angle', o.angle ?? 0);
-  const each = o.static ? Infinity : massEach('mass', o.mass, local.length, area);
+  const each = o.static ? Infinity : massEach('mass', o.mass, local.length, area, 'the area');
   const compliance = complianceOf('compliance', o.compliance);
   const cos = Math.cos(angle);
   const sin = Math.sin(angle);

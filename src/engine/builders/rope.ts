@@ -31,7 +31,7 @@ export function createRope(world: World, o: RopeOptions): Built {
   const from = point('from', o.from);
   const to = point('to', o.to);
   const segments = integer('segments', o.segments ?? 20, 1, 100000);
-  const each = massEach('mass', o.mass, segments + 1, 1);
+  const each = massEach('mass', o.mass, segments + 1, 1, '1');
   const slack = nonNegative('slack', o.slack ?? 1);
   const compliance = complianceOf('compliance', o.compliance);
   const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));

@@ -35,10 +35,10 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
   const radius = coordinate('radius', positive('radius', o.radius));
   const segments = integer('segments', o.segments ?? 16, 3, 4096);
   const model = oneOf('model', o.model ?? 'pressure', ['pressure', 'springs'] as const);
-  const each = o.static ? Infinity : massEach('mass', o.mass, segments, Math.PI * radius * radius);
+  const each = o.static ? Infinity : massEach('mass', o.mass, segments, Math.PI * radius * radius, 'π · radius²');
   const compliance = complianceOf('compliance', o.compliance ?? 1e-4);
   const pressure = positive('pressure', o.pressure ?? 1);
-  const areaCompliance = nonNegative('areaCompliance', o.areaCompliance ?? 0);
+  const areaCompliance = complianceOf('areaCompliance', o.areaCompliance);
   const stiffness = nonNegative('stiffness', o.stiffness ?? 400);
   const damping = nonNegative('damping', o.damping ?? 2);
   return transactional(world, (particles, constraints) => {

@@ -169,7 +169,9 @@ export class GridBroadPhase implements BroadPhase {
       const x1 = span[4 * i + 2] - loX;
       const y1 = span[4 * i + 3] - loY;
       const cells = (x1 - x0 + 1) * (y1 - y0 + 1);
-      if (cells > this.maxCellsPerBody) {
+      // Not a number of cells (a box that is NaN, which no step should make): with the large ones, where every
+      // comparison with it fails, so it pairs with nothing instead of sizing the arrays.
+      if (!(cells <= this.maxCellsPerBody)) {
         this.large[largeCount++] = s;
         continue;
       }

@@ -236,4 +236,10 @@ export class Sleep {
     const s = this.particleBody[i];
     return s >= 0 && this.asleep[s] ? this.parkedInvMass[i] : p.invMass[i];
   }
+
+  /** Inverse moment of inertia a rigid body's row has when awake (its parked value while the body sleeps). */
+  awakeInvInertia(i: number, p: ParticleStore): number {
+    const s = this.particleBody[i];
+    return s >= 0 && this.asleep[s] ? this.parkedInvInertia[i] : p.invInertia[i];
+  }
 }

@@ -29,7 +29,7 @@ import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
-import { substepCount } from '../settings.js';
+import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount } from '../settings.js';
 import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { solveJoints } from '../rigid/joints.js';
 import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
@@ -164,8 +164,11 @@ function lanesKernel(ctx: StepContext) {
 export function advance(ctx: StepContext, elapsed: number, afterStep?: () => void): number {
   const { timestep, maxCatchUpSteps } = ctx.settings;
   if (ctx.settings.variableStep) {
-    if (elapsed === 0) return 0;
-    step(ctx, Math.min(elapsed, timestep * maxCatchUpSteps));
+    // Elapsed times shorter than a step can be are gathered until they make one.
+    ctx.accumulator += elapsed;
+    if (ctx.accumulator < MIN_STEP_SECONDS) return 0;
+    step(ctx, Math.min(ctx.accumulator, timestep * maxCatchUpSteps, MAX_STEP_SECONDS));
+    ctx.accumulator = 0;
     ctx.alpha = 1;
     afterStep?.();
     return 1;

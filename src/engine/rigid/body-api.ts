@@ -2,7 +2,7 @@
 // and reads or writes the row (rigid/bodies.ts); anything it does to a body wakes it.
 import type { Handle } from '../handles.js';
 import { OPTION_NAMES, resolveCollider, type MassInfo, type Pose, type ResolvedCollider, type RigidBodyOptions, type Vec2 } from '../options.js';
-import { knownNames, objectOf, positive } from '../validate.js';
+import { knownNames, mass as massOf, MIN_INERTIA, objectOf, positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
@@ -21,8 +21,13 @@ export function rigidBodyPlan(o: RigidBodyOptions): {
   const type = BODY_TYPES.indexOf(oneOf('type', o.type ?? 'dynamic', BODY_TYPES)) as BodyType;
   if (o.mass !== undefined && o.density !== undefined) throw new TypeError('give a rigid body either mass or density, not both');
   const density = o.mass !== undefined ? positive('mass', o.mass) / shape.source.mass : positive('density', o.density ?? 1);
+  const source = withDensity(shape, density);
+  // Heavy and large enough that the inverse mass and inertia stay finite (a tiny outline's inertia underflows to 0),
+  // whatever its type now (setBodyType may make it dynamic later).
+  massOf('mass', source.mass, o.mass === undefined ? 'density × area' : '');
+  if (!(source.inertia >= MIN_INERTIA)) throw new RangeError(`the body's moment of inertia must be at least 1e-30 (a larger outline or mass), got ${source.inertia}`);
   return {
-    source: withDensity(shape, density),
+    source,
     type,
     collider: resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3),
     x: coordinate('x', o.x),
@@ -85,8 +90,10 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const [px, py] = [x === undefined ? p.x[r.i] : coordinate('x', x), y === undefined ? p.y[r.i] : coordinate('y', y)];
   // The speeds it adds, along and around (a heavy body may take a large push): at once, or over a step.
   const seconds = impulse ? 1 : ctx.settings.timestep;
-  pushSpeed(impulse ? IMPULSE_SPEED : FORCE_SPEED, jx, jy, p.invMass[r.i], seconds);
-  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * p.invInertia[r.i] * seconds);
+  // Checked against what the body wakes with (a sleeping body's inverse mass and inertia are parked at 0).
+  const sleep = ctx.sleep;
+  pushSpeed(impulse ? IMPULSE_SPEED : FORCE_SPEED, jx, jy, sleep.awakeInvMass(r.i, p), seconds);
+  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * sleep.awakeInvInertia(r.i, p) * seconds);
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);
@@ -94,7 +101,9 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
 
 export function applyBodyTorque(ctx: StepContext, body: Handle, torque: number): void {
   const r = rigidOf(ctx, body);
-  ctx.particles.torque[r.i] += finite('torque', torque);
+  const t = finite('torque', torque);
+  speed('torque · timestep / inertia', t * ctx.sleep.awakeInvInertia(r.i, ctx.particles) * ctx.settings.timestep);
+  ctx.particles.torque[r.i] += t;
   wake(ctx, r.slot);
 }
 

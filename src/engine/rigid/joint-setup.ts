@@ -2,7 +2,7 @@
 // Setup-time code: it checks every option and names the one at fault.
 import type { ParticleStore } from '../particles.js';
 import type { JointOptions, Vec2 } from '../options.js';
-import { coordinate, finite, nonNegative, oneOf, positive } from '../validate.js';
+import { compliance, coordinate, finite, nonNegative, oneOf, stiffness } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
 import { JointKind } from './joints.js';
 
@@ -44,7 +44,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   const angleA = A.row < 0 ? 0 : p.angle[A.row];
   const angleB = B.row < 0 ? 0 : p.angle[B.row];
   const row: JointRow = {
-    kind: 0, a: A.row, b: B.row, rAx: 0, rAy: 0, rBx: 0, rBy: 0, compliance: nonNegative('compliance', o.compliance ?? 0), damping: 0,
+    kind: 0, a: A.row, b: B.row, rAx: 0, rAy: 0, rBx: 0, rBy: 0, compliance: compliance('compliance', o.compliance ?? 0), damping: 0,
     refAngle: angleA - angleB, lower: 0, upper: 0, limit: 0, motor: 0, motorSpeed: 0, maxMotorTorque: 0, axisX: 1, axisY: 0, bodyA: -1, bodyB: -1,
     collide: o.collideConnected ? 1 : 0,
   };
@@ -63,7 +63,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
     row.upper = o.upper === undefined ? length : o.upper === Infinity ? Infinity : nonNegative('upper', o.upper);
     if (row.lower > row.upper) throw new RangeError(`lower (${row.lower}) must be <= upper (${row.upper})`);
     if (type === 'spring') {
-      row.compliance = 1 / positive('stiffness', o.stiffness);
+      row.compliance = 1 / stiffness('stiffness', o.stiffness);
       row.damping = nonNegative('damping', o.damping ?? 0);
     }
     return row;
