@@ -39,10 +39,15 @@ export class HandleRegistry {
 
   constructor(readonly what: string, private readonly limitName = '', private readonly plural = `${what}s`) {}
 
-  allocate(): Handle {
-    if (this.live >= this.limit) {
+  /** Throws the limit's RangeError unless `n` more fit (checked before making what needs them). */
+  ensureRoom(n: number): void {
+    if (this.live + n > this.limit) {
       throw new RangeError(`too many ${this.plural}: the limit is ${this.limit}${this.limitName ? ` (world option limits.${this.limitName})` : ''}`);
     }
+  }
+
+  allocate(): Handle {
+    this.ensureRoom(1);
     this.live++;
     let slot: number;
     if (this.free.length > 0) slot = this.free.pop()!;

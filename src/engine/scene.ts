@@ -40,6 +40,7 @@ export interface SceneDescription {
 
 /** Adds one described body to the world. */
 export function buildBody(world: World, d: BodyDescription): Built {
+  if (!(world instanceof World)) throw new TypeError(`buildBody needs a World first, got ${describeValue(world)}`);
   if (d == null || typeof d !== 'object') throw new TypeError(`a body description must be an object, got ${describeValue(d)}`);
   // The builder gets the description without the fields every description may carry (it refuses names it does not take).
   const { type, id: _id, fill: _fill, stroke: _stroke, ...options } = d;
@@ -65,6 +66,8 @@ export function buildBody(world: World, d: BodyDescription): Built {
 
 /** A new world holding the scene. Returns the world and the bodies in description order. */
 export function buildScene(description: SceneDescription): { world: World; bodies: Built[]; byId: Map<string, Handle> } {
+  if (description == null || typeof description !== 'object') throw new TypeError(`a scene description must be an object {world?, bodies}, got ${describeValue(description)}`);
+  if (!Array.isArray(description.bodies)) throw new TypeError(`a scene description's bodies must be a list, got ${describeValue(description.bodies)}`);
   const world = new World(description.world);
   const bodies = description.bodies.map((d) => buildBody(world, d));
   const byId = new Map<string, Handle>();

@@ -557,6 +557,7 @@ export class World {
     oneOf('kind', kind, BODY_KINDS);
     if (!Array.isArray(particles) || particles.length === 0) throw new RangeError(`a body needs at least one particle, got ${String(particles)}`);
     const slots = Int32Array.from(particles, (h, k) => this.ctx.particleIds.slotOf(h, `particles[${k}]`));
+    if (!Array.isArray(constraints)) throw new TypeError(`constraints must be a list of constraint handles, got ${describeValue(constraints)}`);
     constraints.forEach((h, k) => this.ctx.constraints.ids.slotOf(h, `constraints[${k}]`));
     knownNames('collider option', objectOf('collider options', collider), OPTION_NAMES.collider);
     const resolved = resolveCollider(collider, slots.length);
@@ -658,6 +659,7 @@ export class World {
    */
   addRigidBody(o: RigidBodyOptions): Handle {
     const plan = api.rigidBodyPlan(o);
+    this.ensureBodyRoom();
     const particle = this.addParticle({ x: plan.x, y: plan.y });
     const i = this.particleIndex(particle);
     initRigidRow(this.particles, i, plan.source, plan.type, plan.x, plan.y, plan.angle);
@@ -666,6 +668,11 @@ export class World {
     this.writeCollider(handleSlot(body), plan.collider);
     if (plan.type !== BodyType.Static) [this.particles.vx[i], this.particles.vy[i], this.particles.omega[i]] = [plan.vx, plan.vy, plan.w];
     return body;
+  }
+
+  /** @internal Throws the `limits.bodies` RangeError now unless `n` more bodies fit (builders check before making anything). */
+  ensureBodyRoom(n = 1): void {
+    this.ctx.bodies.ids.ensureRoom(n);
   }
 
   /** A rigid body's origin (where its points were placed) and angle. */

@@ -1,5 +1,5 @@
 import { expect } from 'chai';
-import { World, createBox, createCircle, createCloth, createPolygon, createRagdoll, createRope, createSoftBody } from '../../src/engine/index.js';
+import { World, buildBody, buildScene, createBox, createCircle, createCloth, createPolygon, createRagdoll, createRope, createSoftBody } from '../../src/engine/index.js';
 import { allFinite } from './helpers.js';
 
 function throwsNaming(fn: () => unknown, type: typeof RangeError | typeof TypeError, ...words: string[]) {
@@ -513,5 +513,63 @@ describe('values that used to overflow to NaN', () => {
     for (let k = 0; k < 30; k++) [world, twin].forEach((w) => w.step());
     expect(world.stateHash()).to.equal(twin.stateHash());
     expect(world.time).to.equal(twin.time);
+  });
+});
+
+describe('builders check everything before they make anything', () => {
+  it('a refused collider option, switch or full body registry leaves the world exactly as it was (hash, handles, substeps)', () => {
+    const world = new World({ limits: { bodies: 1 } });
+    createBox(world, { x: 0, y: 0, width: 1, height: 1 });
+    const hash = world.stateHash();
+    const before = { particles: world.particles.count, substeps: world.substepCount };
+    throwsNaming(() => createBox(world, { x: 3, y: 0, width: 1, height: 1 }), RangeError, 'too many bodies', 'limits.bodies');
+    throwsNaming(() => world.addRigidBody({ x: 3, y: 0, radius: 1 }), RangeError, 'too many bodies');
+    throwsNaming(() => createRope(world, { from: { x: 0, y: 0 }, to: { x: 3, y: 0 } }), RangeError, 'too many bodies');
+    const roomy = new World();
+    const roomyHash = roomy.stateHash();
+    const from = { x: 0, y: 0 };
+    const to = { x: 3, y: 0 };
+    throwsNaming(() => createRope(roomy, { from, to, segments: 5, friction: -1 }), RangeError, 'friction', '-1');
+    throwsNaming(() => createCloth(roomy, { origin: from, columns: 3, rows: 3, spacing: 1, restitution: 2 }), RangeError, 'restitution');
+    throwsNaming(() => createSoftBody(roomy, { center: from, radius: 1, category: -1 }), RangeError, 'category');
+    throwsNaming(() => createBox(roomy, { x: 0, y: 0, width: 1, height: 1, static: 'false' as never }), TypeError, 'static', '"false"');
+    throwsNaming(() => createRope(roomy, { from, to, pinStart: 'no' as never }), TypeError, 'pinStart', '"no"');
+    throwsNaming(() => createCloth(roomy, { origin: from, columns: 3, rows: 3, spacing: 1, tethers: 1 as never }), TypeError, 'tethers');
+    expect(roomy.stateHash()).to.equal(roomyHash);
+    expect(roomy.particles.count).to.equal(0);
+    expect(roomy.addParticle({ x: 0, y: 0 })).to.equal(createRope(new World(), { from, to }).particles[0]); // the first handle, unspent
+    expect(world.stateHash()).to.equal(hash);
+    expect({ particles: world.particles.count, substeps: world.substepCount }).to.deep.equal(before);
+  });
+
+  it('a static rope or cloth does not move; a self-crossing outline is refused as the collision module refuses it', () => {
+    const world = new World();
+    const rope = createRope(world, { from: { x: 0, y: 0 }, to: { x: 4, y: 0 }, static: true });
+    const cloth = createCloth(world, { origin: { x: 10, y: 0 }, columns: 4, rows: 4, spacing: 0.5, static: true });
+    const at = [...rope.particles, ...cloth.particles].map((p) => world.getPosition(p));
+    for (let k = 0; k < 60; k++) world.step();
+    expect([...rope.particles, ...cloth.particles].map((p) => world.getPosition(p))).to.deep.equal(at);
+    // A pentagram: each point joined to the second next.
+    const star = [0, 2, 4, 1, 3].map((k) => ({ x: Math.cos((2 * Math.PI * k) / 5), y: Math.sin((2 * Math.PI * k) / 5) }));
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star }), RangeError, 'points', 'simple outline', 'cross');
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star, model: 'particles' }), RangeError, 'simple outline');
+    const bowTie = [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }];
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: bowTie }), RangeError, 'simple outline');
+    throwsNaming(() => world.addRigidBody({ x: 0, y: 0, points: bowTie }), RangeError, 'simple outline');
+    // A concave simple outline (an L) and the star's convex hull are still taken.
+    createPolygon(world, { x: 5, y: 5, points: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, { x: 0, y: 2 }] });
+    createPolygon(world, { x: 8, y: 5, points: [0, 1, 2, 3, 4].map((k) => ({ x: Math.cos((2 * Math.PI * k) / 5), y: Math.sin((2 * Math.PI * k) / 5) })) });
+  });
+
+  it('scene descriptions and bodies that are not objects or lists are TypeErrors naming what they are', () => {
+    throwsNaming(() => buildScene(undefined as never), TypeError, 'scene description', 'undefined');
+    throwsNaming(() => buildScene({} as never), TypeError, 'bodies', 'undefined');
+    throwsNaming(() => buildScene({ bodies: {} } as never), TypeError, 'bodies', '{}');
+    throwsNaming(() => buildBody(null as never, { type: 'box', x: 0, y: 0, width: 1, height: 1 }), TypeError, 'World', 'null');
+    throwsNaming(() => createBox(undefined as never, { x: 0, y: 0, width: 1, height: 1 }), TypeError, 'World', 'undefined');
+    const world = new World();
+    const p = world.addParticle({ x: 0, y: 0 });
+    throwsNaming(() => world.addBody('custom', [p], null as never), TypeError, 'constraints', 'null');
+    throwsNaming(() => world.addBody('custom', [p], 5 as never), TypeError, 'constraints', '5');
   });
 });

@@ -17,7 +17,7 @@ const CIRCLE_OPTIONS = { ...RIGID_OPTIONS, x: true, y: true, radius: true, angle
 
 /** A ball: a rigid disc that spins and rolls, or (model 'particles') one particle colliding as a circle. */
 export function createCircle(world: World, o: CircleOptions): Built {
-  builderOptions('circle', o, CIRCLE_OPTIONS);
+  builderOptions(world, 'circle', o, CIRCLE_OPTIONS);
   const radius = coordinate('radius', positive('radius', o.radius));
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, undefined, radius);
   const mass = o.static ? Infinity : massEach('mass', o.mass, 1, Math.PI * radius * radius, 'π · radius²');

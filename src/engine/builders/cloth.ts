@@ -36,16 +36,18 @@ const CLOTH_OPTIONS = {
 
 /** A rectangular cloth of columns × rows particles, row-major from the top-left corner. */
 export function createCloth(world: World, o: ClothOptions): Built {
-  builderOptions('cloth', o, CLOTH_OPTIONS);
+  builderOptions(world, 'cloth', o, CLOTH_OPTIONS);
   const origin = point('origin', o.origin);
   const columns = integer('columns', o.columns, 2, 4096);
   const rows = integer('rows', o.rows, 2, 4096);
   const spacing = coordinate('spacing', positive('spacing', o.spacing));
-  const each = massEach('mass', o.mass, columns * rows, (columns * rows) / 100, 'columns · rows / 100');
+  const each = o.static ? Infinity : massEach('mass', o.mass, columns * rows, (columns * rows) / 100, 'columns · rows / 100');
   const structural = complianceOf('structural', o.structural);
   const shear = o.shear == null ? null : complianceOf('shear', o.shear);
   const bend = o.bend == null ? null : complianceOf('bend', o.bend);
-  const pinned = pinnedColumns(o.pins ?? 'top', columns);
+  // A static cloth is immovable already: no pins (nor their tethers).
+  const pins = pinnedColumns(o.pins ?? 'top', columns);
+  const pinned = o.static ? [] : pins;
   const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));
   const breakStrain = o.tear === undefined ? undefined : positive('tear', o.tear);
   const far = { x: origin.x + (columns - 1) * spacing, y: origin.y + (rows - 1) * spacing };

@@ -1,5 +1,6 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { compliance, coordinate, knownNames, mass, MIN_MASS, objectOf, positive } from '../validate.js';
+import { compliance, coordinate, describeValue, flag, knownNames, mass, MIN_MASS, objectOf, positive } from '../validate.js';
+import { resolveCollider } from '../options.js';
 
 /** What every builder returns: the body and the handles of what it made. */
 export interface Built {
@@ -41,10 +42,19 @@ export const BODY_OPTIONS = { static: true, collide: true, friction: true, resti
  * A builder's options: an object whose every name the builder takes. A misspelt or foreign name (`density` for a box,
  * which takes `mass`) is a TypeError naming it, as `new World()` does, instead of an option silently ignored.
  */
-export function builderOptions<T>(what: string, o: T, names: Readonly<Record<string, true>>): T & object {
+export function builderOptions<T>(world: World, what: string, o: T, names: Readonly<Record<string, true>>): T & object {
+  if (world == null || typeof (world as Partial<World>).addParticle !== 'function') throw new TypeError(`a builder needs the World to build in first, got ${describeValue(world)}`);
   knownNames(`${what} option`, objectOf(`${what} options`, o), names);
+  // The options the body is made with last (its collider, true/false switches) are checked before anything is made,
+  // so a bad one leaves the world as it was, not a row or a handle spent.
+  const b = o as BodyOptions & Record<string, unknown>;
+  resolveCollider({ shape: 'none', friction: b.friction, restitution: b.restitution, category: b.category, mask: b.mask, group: b.group }, 0);
+  for (const name of SWITCHES) if (b[name] !== undefined) flag(name, b[name]);
   return o as T & object;
 }
+
+/** The builders' true/false options. */
+const SWITCHES = ['static', 'collide', 'kinematic', 'pinStart', 'pinEnd', 'ropeLike', 'tethers'] as const;
 
 /** The collision options of a body's options, passed on as they are (a box's frame, a rigid body). */
 export function collisionOptions(o: BodyOptions): Pick<BodyOptions, 'collide' | 'friction' | 'restitution' | 'category' | 'mask' | 'group'> {
@@ -82,6 +92,8 @@ export function complianceOf(name: string, value: number | undefined): number {
 export function transactional(world: World, make: (particles: Handle[], constraints: Handle[]) => Handle): Built {
   const particles: Handle[] = [];
   const constraints: Handle[] = [];
+  // The body is registered last: a full registry is found before its particles are made.
+  world.ensureBodyRoom();
   try {
     const body = make(particles, constraints);
     return { body, particles, constraints };

@@ -60,7 +60,7 @@ const RAGDOLL_OPTIONS = { ...BODY_OPTIONS, x: true, y: true, height: true, mass:
  * at the neck, shoulders, elbows, hips and knees.
  */
 export function createRagdoll(world: World, o: RagdollOptions): Built {
-  builderOptions('ragdoll', o, RAGDOLL_OPTIONS);
+  builderOptions(world, 'ragdoll', o, RAGDOLL_OPTIONS);
   const x = coordinate('x', o.x);
   const y = coordinate('y', o.y);
   const height = coordinate('height', positive('height', o.height ?? RAGDOLL_HEIGHT));

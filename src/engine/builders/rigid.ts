@@ -2,6 +2,7 @@ import type { Vec2, World } from '../world.js';
 import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
 import { BODY_MODELS, BODY_OPTIONS, builderOptions, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { decompose } from '../collision/decompose.js';
+import { simpleOutline } from '../rigid/outline.js';
 
 /** What a rigid box, polygon or circle takes besides its shape. */
 export interface RigidOptions extends BodyOptions {
@@ -50,7 +51,7 @@ const BOX_OPTIONS = { ...RIGID_OPTIONS, x: true, y: true, width: true, height: t
  * n − 3 diagonals from vertex 0, which is 2n − 3 links, exactly what fixes a planar frame of n points.
  */
 export function createPolygon(world: World, o: PolygonOptions): Built {
-  builderOptions('polygon', o, POLYGON_OPTIONS);
+  builderOptions(world, 'polygon', o, POLYGON_OPTIONS);
   if (modelOf(o) === 'rigid') return createRigid(world, o, o.points);
   return createFrame(world, o, []);
 }
@@ -87,6 +88,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     throw new RangeError(`points must be a list of at least 3 points, got ${Array.isArray(o.points) ? o.points.length : String(o.points)}`);
   }
   let local = o.points.map((p, k) => point(`points[${k}]`, p));
+  simpleOutline('points', local.map((p) => p.x), local.map((p) => p.y));
   // Parts and edge normals assume counter-clockwise order (positive area): reverse a clockwise outline.
   if (shoelace(local) < 0) local = local.reverse();
   const area = shoelace(local);
@@ -118,7 +120,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
 
 /** A box centred on (x, y): a rigid body, or (model 'particles') 4 corner particles, 4 edges and 2 diagonals. */
 export function createBox(world: World, o: BoxOptions): Built {
-  builderOptions('box', o, BOX_OPTIONS);
+  builderOptions(world, 'box', o, BOX_OPTIONS);
   const w = coordinate('width', positive('width', o.width)) / 2;
   const h = coordinate('height', positive('height', o.height)) / 2;
   if (modelOf(o) === 'rigid') return createRigid(world, { ...o, x: coordinate('x', o.x), y: coordinate('y', o.y) }, [{ x: -w, y: -h }, { x: w, y: -h }, { x: w, y: h }, { x: -w, y: h }]);

@@ -27,11 +27,11 @@ const ROPE_OPTIONS = {
 
 /** A rope or chain: a line of particles joined by distance links. */
 export function createRope(world: World, o: RopeOptions): Built {
-  builderOptions('rope', o, ROPE_OPTIONS);
+  builderOptions(world, 'rope', o, ROPE_OPTIONS);
   const from = point('from', o.from);
   const to = point('to', o.to);
   const segments = integer('segments', o.segments ?? 20, 1, 100000);
-  const each = massEach('mass', o.mass, segments + 1, 1, '1');
+  const each = o.static ? Infinity : massEach('mass', o.mass, segments + 1, 1, '1');
   const slack = nonNegative('slack', o.slack ?? 1);
   const compliance = complianceOf('compliance', o.compliance);
   const radius = coordinate('radius', nonNegative('radius', o.radius ?? 0));
@@ -45,7 +45,8 @@ export function createRope(world: World, o: RopeOptions): Built {
     for (let k = 0; k < segments; k++) {
       constraints.push(world.addDistance(particles[k], particles[k + 1], ropeLike ? { minLength: 0, maxLength: link, compliance } : { length: link, compliance }));
     }
-    const pinned = [...(o.pinStart ?? true ? [0] : []), ...(o.pinEnd ? [segments] : [])];
+    // A static rope is immovable already: no pins, no tethers.
+    const pinned = o.static ? [] : [...(o.pinStart ?? true ? [0] : []), ...(o.pinEnd ? [segments] : [])];
     for (const k of pinned) constraints.push(world.addPin(particles[k]));
     if ((o.tethers ?? true) && compliance === 0) addTethers(world, particles, pinned, (a, b) => Math.abs(a - b) * link, constraints);
     // Collides (when asked) as circles of the particles' radius; off by default.

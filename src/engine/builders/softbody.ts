@@ -30,7 +30,7 @@ const SOFT_BODY_OPTIONS = {
 
 /** A deformable ring (seed 2.3/2.4). */
 export function createSoftBody(world: World, o: SoftBodyOptions): Built {
-  builderOptions('soft body', o, SOFT_BODY_OPTIONS);
+  builderOptions(world, 'soft body', o, SOFT_BODY_OPTIONS);
   const c = point('center', o.center);
   const radius = coordinate('radius', positive('radius', o.radius));
   const segments = integer('segments', o.segments ?? 16, 3, 4096);
