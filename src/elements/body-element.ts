@@ -3,7 +3,7 @@
 import { LitElement, css, nothing } from 'lit';
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
-import { finite, speed } from '../engine/validate.js';
+import { finite, MIN_MASS, speed } from '../engine/validate.js';
 import type { BodyStyle } from '../render/renderer.js';
 import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
 import type { ColourScheme } from './physics-scene/scheme.js';
@@ -162,7 +162,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   }
 
   protected material(check: Checker, out: Record<string, unknown>, area: number | null): void {
-    const mass = check.number('mass', this.mass, { positive: true });
+    const mass = check.number('mass', this.mass, { positive: true, min: MIN_MASS });
     const density = check.number('density', this.density, { positive: true });
     if (mass !== undefined) out.mass = mass;
     else if (density !== undefined && area !== null && area > 0) out.mass = density * area;

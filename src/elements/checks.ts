@@ -1,6 +1,15 @@
 // Attribute checks for the elements: a bad value is recorded as a problem naming the attribute and the value as
 // written in the markup, and a fallback is used, so bad markup never throws.
-import { MAX_WORLD_COORDINATE, nearestName } from '../engine/validate.js';
+import { MAX_COMPLIANCE, MAX_SPEED, MAX_WORLD_COORDINATE, nearestName } from '../engine/validate.js';
+
+/**
+ * A compliance attribute, as the engine takes it (from 0, rigid, to MAX_COMPLIANCE): checked here so that a value
+ * out of range is a markup problem that leaves once fixed, like any other.
+ */
+export const COMPLIANCE: NumberRule = { min: 0, max: MAX_COMPLIANCE };
+
+/** The engine's range for a gravity component (units/s²). */
+export const GRAVITY_LIMIT = MAX_SPEED;
 
 /** A rejected attribute value. */
 export interface Problem {

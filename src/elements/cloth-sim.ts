@@ -130,7 +130,8 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     // Not written (or blank): the spread; a bad value is reported and falls back to it.
     const chosen = (this.pins ?? '').trim() === '' ? null : check.pins(this.pins, columns);
     const pins = chosen === null ? spread : Array.isArray(chosen) ? chosen.join(' ') : chosen;
-    const stiffness = check.number('stiffness', this.stiffness, { positive: true, max: 1, fallback: 1 })!;
+    // From 1e-15: the compliance it gives stays within the engine's 1e9.
+    const stiffness = check.number('stiffness', this.stiffness, { min: 1e-15, max: 1, fallback: 1 })!;
     // XPBD compliance (inverse stiffness): 0 at stiffness 1, about 1e-5 at 0.1.
     const compliance = ((1 - stiffness) / stiffness) * 1e-6;
     const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 1.5 })!;

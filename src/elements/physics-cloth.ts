@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, numberAttribute } from './checks.js';
+import { Checker, COMPLIANCE, numberAttribute } from './checks.js';
 
 /**
  * A cloth of `columns` × `rows` particles `spacing` apart, its top-left corner at `x`, `y`, hanging from `pins`.
@@ -18,11 +18,11 @@ export class PhysicsClothElement extends PhysicsBodyElement {
   @property({ type: Number, converter: numberAttribute }) spacing?: number;
   /** Pinned top-row particles: "top" (default), "corners", "none" or column indices "0 5 11". */
   @property() pins?: string;
-  /** Compliance of the structural links (>= 0; 0 = inextensible, default). */
+  /** Compliance of the structural links (0 to 1e9; 0 = inextensible, default). */
   @property({ type: Number, converter: numberAttribute }) compliance?: number;
-  /** Compliance of diagonal shear links (>= 0; none when absent). */
+  /** Compliance of diagonal shear links (0 to 1e9; none when absent). */
   @property({ type: Number, converter: numberAttribute }) shear?: number;
-  /** Compliance of bend links two particles apart (>= 0; none when absent). */
+  /** Compliance of bend links two particles apart (0 to 1e9; none when absent). */
   @property({ type: Number, converter: numberAttribute }) bend?: number;
   /** Tearing: a link stretched past its rest length by this fraction breaks for good (> 0, e.g. 0.3); off when absent. */
   @property({ type: Number, converter: numberAttribute }) tear?: number;
@@ -38,11 +38,11 @@ export class PhysicsClothElement extends PhysicsBodyElement {
     const spacing = check.number('spacing', this.spacing, { positive: true, fallback: 0.3 })!;
     const pins = check.pins(this.pins, columns) ?? 'top';
     const out: Record<string, unknown> = { type: 'cloth', origin, columns, rows, spacing, pins, collide: this.collide, radius: this.collide ? spacing * 0.3 : 0 };
-    const compliance = check.number('compliance', this.compliance, { min: 0 });
+    const compliance = check.number('compliance', this.compliance, COMPLIANCE);
     if (compliance !== undefined) out.structural = compliance;
-    const shear = check.number('shear', this.shear, { min: 0 });
+    const shear = check.number('shear', this.shear, COMPLIANCE);
     if (shear !== undefined) out.shear = shear;
-    const bend = check.number('bend', this.bend, { min: 0 });
+    const bend = check.number('bend', this.bend, COMPLIANCE);
     if (bend !== undefined) out.bend = bend;
     const tear = check.number('tear', this.tear, { positive: true });
     if (tear !== undefined) out.tear = tear;

@@ -2,7 +2,8 @@ import { property } from 'lit/decorators.js';
 import { JOINT_TYPES } from '../engine/options.js';
 import type { JointLink, LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, numberAttribute, toRadians } from './checks.js';
+import { Checker, COMPLIANCE, numberAttribute, toRadians } from './checks.js';
+import { MAX_COMPLIANCE } from '../engine/validate.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -20,7 +21,7 @@ import { PhysicsLinkElement, type Resolve } from './link-element.js';
  * - `prismatic`: b slides relative to a along `axis` (turning with a), between `lower` and `upper`, without turning;
  * - `spring`: a damped spring (`stiffness`, `damping`, rest `length`) between the ends, as for `distance`.
  *
- * `compliance` softens any type (0 = rigid); jointed bodies do not collide unless `collide-connected`.
+ * `compliance` softens any type (0 = rigid, up to 1e9); jointed bodies do not collide unless `collide-connected`.
  *
  * @summary A joint between two bodies, or a body and the world.
  * @fires physics-error - A missing id or a bad value (detail: element, attribute, value, message); bubbles to the scene.
@@ -93,13 +94,13 @@ export class PhysicsJointElement extends PhysicsLinkElement {
     else Object.assign(desc, { lower, upper });
     desc.length = check.number('length', this.length, { min: 0 });
     if (type === 'spring') {
-      desc.stiffness = check.number('stiffness', this.stiffness, { positive: true, fallback: 50 });
+      desc.stiffness = check.number('stiffness', this.stiffness, { min: 1 / MAX_COMPLIANCE, fallback: 50 });
       desc.damping = check.number('damping', this.damping, { min: 0, fallback: 1 });
     } else {
       check.number('stiffness', this.stiffness, { positive: true });
       check.number('damping', this.damping, { min: 0 });
     }
-    desc.compliance = check.number('compliance', this.compliance, { min: 0 });
+    desc.compliance = check.number('compliance', this.compliance, COMPLIANCE);
     if (this.collideConnected) desc.collideConnected = true;
     if (a === null || b === null) return { desc: null, problems: check.problems };
     if (a === b) {

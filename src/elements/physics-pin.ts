@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, numberAttribute } from './checks.js';
+import { Checker, COMPLIANCE, numberAttribute } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -18,7 +18,7 @@ export class PhysicsPinElement extends PhysicsLinkElement {
   @property() body?: string;
   /** Index of the particle within the body (whole number >= 0, less than the body's particle count; default: the one nearest to x, y). */
   @property({ type: Number, converter: numberAttribute }) particle?: number;
-  /** Compliance (>= 0): 0 (default) holds exactly; more pulls like a zero-length spring. */
+  /** Compliance (0 to 1e9): 0 (default) holds exactly; more pulls like a zero-length spring. */
   @property({ type: Number, converter: numberAttribute }) compliance?: number;
 
   describe(resolve: Resolve): Described<LinkDescription> {
@@ -29,7 +29,7 @@ export class PhysicsPinElement extends PhysicsLinkElement {
     if (x === undefined && this.x === undefined) check.fail('x', '', 'is required');
     if (y === undefined && this.y === undefined) check.fail('y', '', 'is required');
     const particle = check.number('particle', this.particle, { integer: true, min: 0 });
-    const compliance = check.number('compliance', this.compliance, { min: 0 });
+    const compliance = check.number('compliance', this.compliance, COMPLIANCE);
     if (a === null || x === undefined || y === undefined) return { desc: null, problems: check.problems };
     return { desc: { type: 'pin', a, x, y, particle, compliance }, problems: check.problems };
   }

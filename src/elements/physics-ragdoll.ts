@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, numberAttribute } from './checks.js';
+import { Checker, COMPLIANCE, numberAttribute } from './checks.js';
 import { SCHEME_COLOURS, type ColourScheme } from './physics-scene/scheme.js';
 
 /**
@@ -13,7 +13,7 @@ import { SCHEME_COLOURS, type ColourScheme } from './physics-scene/scheme.js';
 export class PhysicsRagdollElement extends PhysicsBodyElement {
   /** Height from feet to the top of the head, in world units (> 0). Default 1.8. */
   @property({ type: Number, converter: numberAttribute }) height?: number;
-  /** Compliance of the joint limits (>= 0; 0 = hard stops, default). */
+  /** Compliance of the joint limits (0 to 1e9; 0 = hard stops, default). */
   @property({ type: Number, converter: numberAttribute, attribute: 'joint-compliance' }) jointCompliance?: number;
 
   describe(): Described<BodyDescription> {
@@ -25,7 +25,7 @@ export class PhysicsRagdollElement extends PhysicsBodyElement {
       y: check.number('y', y, { fallback: 0 }),
       height: check.number('height', this.height, { positive: true, fallback: 1.8 }),
     };
-    const jc = check.number('joint-compliance', this.jointCompliance, { min: 0 });
+    const jc = check.number('joint-compliance', this.jointCompliance, COMPLIANCE);
     if (jc !== undefined) out.jointCompliance = jc;
     this.unused(check, 'angle');
     this.material(check, out, null);

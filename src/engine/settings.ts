@@ -3,7 +3,7 @@
 import type { Bounds } from './bounds.js';
 import { INTEGRATORS, type Integrator } from './integrate.js';
 import { checkBounds, type SubstepChoice, type Vec2, type WorldOptions } from './options.js';
-import { describeValue, finite, flag, integer, MAX_SPEED, nonNegative, oneOf, positive } from './validate.js';
+import { describeValue, finite, flag, integer, MAX_SPEED, MAX_STEP_SECONDS, MIN_STEP_SECONDS, nonNegative, oneOf, positive } from './validate.js';
 
 /** See WorldOptions for what each setting does. */
 export interface StepSettings {
@@ -44,18 +44,7 @@ export const DEFAULTS: Required<Omit<WorldOptions, 'limits'>> = {
 export const BROAD_PHASES = ['grid', 'brute'] as const;
 export const NARROW_PHASES = ['sat', 'gjk'] as const;
 
-/**
- * The longest step World.step() takes, and the longest `timestep`, in seconds: its substeps would be too long for any
- * contact or link to hold.
- */
-export const MAX_STEP_SECONDS = 1;
-
-/**
- * The shortest step World.step() takes, and the shortest `timestep`, in seconds (a microsecond): a shorter one's
- * substeps make 1/h and compliance/h² overflow to Infinity, and the state NaN. variableStep's advance() gathers
- * shorter elapsed times until they make one.
- */
-export const MIN_STEP_SECONDS = 1e-6;
+export { MAX_STEP_SECONDS, MIN_STEP_SECONDS } from './validate.js';
 
 /** A step's length in seconds, from MIN_STEP_SECONDS to MAX_STEP_SECONDS (`name`: what the caller calls it). */
 export function stepLength(name: string, v: unknown, hint = ''): number {

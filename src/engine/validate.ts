@@ -76,6 +76,9 @@ export function positive(name: string, value: unknown): number {
  */
 export const MAX_COMPLIANCE = 1e9;
 
+/** The largest `pressure` of an area constraint (a multiple of the rest area): beyond, areas overflow. */
+export const MAX_PRESSURE = 1e6;
+
 /** A compliance: a number from 0 (rigid) to MAX_COMPLIANCE. */
 export function compliance(name: string, value: unknown): number {
   const v = nonNegative(name, value);
@@ -109,6 +112,19 @@ export function flag(name: string, value: unknown): boolean {
   if (typeof value !== 'boolean') throw new TypeError(`${name} must be true or false, got ${show(value)}`);
   return value;
 }
+
+/**
+ * The longest step World.step() takes, and the longest `timestep`, in seconds: its substeps would be too long for any
+ * contact or link to hold.
+ */
+export const MAX_STEP_SECONDS = 1;
+
+/**
+ * The shortest step World.step() takes, and the shortest `timestep`, in seconds (a microsecond): a shorter one's
+ * substeps make 1/h and compliance/h² overflow to Infinity, and the state NaN. variableStep's advance() gathers
+ * shorter elapsed times until they make one.
+ */
+export const MIN_STEP_SECONDS = 1e-6;
 
 /** A finite number >= 0. */
 export function nonNegative(name: string, value: unknown): number {

@@ -32,7 +32,7 @@ import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
 import * as api from './rigid/body-api.js';
-import { compliance as complianceOf, flag, mass as massOf, coordinate, describeValue, stiffness as stiffnessOf, finite, integer, knownNames, knownOptions, objectOf, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, unit, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
+import { compliance as complianceOf, flag, MAX_PRESSURE, mass as massOf, coordinate, describeValue, stiffness as stiffnessOf, finite, integer, knownNames, knownOptions, objectOf, nonNegative, nonNegativeOrInfinity, oneOf, positive, pushSpeed, unit, speed, FORCE_SPEED, IMPULSE_SPEED } from './validate.js';
 
 export type { Handle } from './handles.js';
 export type { Integrator } from './integrate.js';
@@ -44,9 +44,6 @@ export type { DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOpti
 export { BODY_KINDS, COLLIDER_SHAPES, DEFAULT_LIMITS } from './options.js';
 
 export { MAX_STEP_SECONDS, MIN_STEP_SECONDS } from './settings.js';
-
-/** The largest `pressure` of an area constraint (a multiple of the rest area): beyond, areas overflow. */
-const MAX_PRESSURE = 1e6;
 
 /** The names `new World(options)` takes: the settings, their limits and the solver kernel. */
 const WORLD_OPTIONS = [...Object.keys(DEFAULTS), 'limits', 'kernel'];

@@ -4,7 +4,8 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Bounds, KernelChoice } from '../../engine/index.js';
 import type { HostParams } from '../../worker/protocol.js';
-import { Checker, misspeltAttributes, numberAttribute, type Problem } from '../checks.js';
+import { Checker, GRAVITY_LIMIT, misspeltAttributes, numberAttribute, type Problem } from '../checks.js';
+import { MAX_STEP_SECONDS, MIN_STEP_SECONDS } from '../../engine/validate.js';
 import { SCHEME_COLOURS, type ColourScheme } from './scheme.js';
 
 /** The scene properties the configuration is read from (as set: unchecked). */
@@ -71,7 +72,7 @@ export function readConfig(scene: Element & SceneAttributes, scheme: ColourSchem
     gravity: gravityOf(check, scene.gravity),
     iterations: check.number('iterations', scene.iterations, { integer: true, min: 1, max: 1000, fallback: 1 })!,
     substeps: substepsOf(check, scene.substeps),
-    timestep: check.number('timestep', scene.timestep, { positive: true, max: 1, fallback: 1 / 60 })!,
+    timestep: check.number('timestep', scene.timestep, { min: MIN_STEP_SECONDS, max: MAX_STEP_SECONDS, fallback: 1 / 60 })!,
     broadphase: check.oneOf('broadphase', scene.broadphase, ['grid', 'brute'] as const, 'grid'),
     narrowphase: check.oneOf('narrowphase', scene.narrowphase, ['sat', 'gjk'] as const, 'sat'),
     bounds: check.oneOf('bounds', scene.bounds, ['view', 'none'] as const, 'view'),
@@ -98,8 +99,9 @@ function substepsOf(check: Checker, value: unknown): number | 'auto' {
 /** Gravity "x y": two numbers (default 0 9.81). */
 function gravityOf(check: Checker, value: string): { x: number; y: number } {
   const g = check.numbers('gravity', value);
-  if (g && g.length === 2) return { x: g[0], y: g[1] };
-  if (g) check.fail('gravity', value, 'must be two numbers "x y"');
+  if (g && g.length === 2 && g.every((a) => Math.abs(a) <= GRAVITY_LIMIT)) return { x: g[0], y: g[1] };
+  if (g && g.length === 2) check.fail('gravity', value, 'must be within ±1e9 (units/s²) each');
+  else if (g) check.fail('gravity', value, 'must be two numbers "x y"');
   return { x: 0, y: 9.81 };
 }
 
