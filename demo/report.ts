@@ -97,7 +97,7 @@ function plot(o: PlotOptions): HTMLElement {
     svg.append(s('line', { x1: W - R + 8, x2: W - R + 26, y1: ly, y2: ly, stroke: c, 'stroke-width': 2, ...(ser.dash ? { 'stroke-dasharray': '6 3' } : {}) }));
     svg.append(s('text', { x: W - R + 30, y: ly + 4, 'font-size': 10.5, fill: '#333' }, ser.name));
   });
-  fig.append(svg);
+  fig.append(chartBox(svg, o.title));
   return fig;
 }
 
@@ -136,8 +136,24 @@ function bars(title: string, yLabel: string, categories: string[], series: { nam
     svg.append(s('rect', { x: W - R + 8, y: ly - 6, width: 14, height: 10, fill: COLORS[i % COLORS.length] }));
     svg.append(s('text', { x: W - R + 28, y: ly + 3, 'font-size': 10.5, fill: '#333' }, ser.name));
   });
-  fig.append(svg);
+  fig.append(chartBox(svg, title));
   return fig;
+}
+
+/**
+ * A chart in a box that scrolls sideways on a phone, where the chart keeps a width its 10-unit labels can be read at
+ * (drawn 330 px wide they were 6 px tall), reachable by keyboard.
+ */
+function chartBox(svg: SVGElement, title: string): HTMLElement {
+  const box = h('div', undefined, 'chart-scroll');
+  box.tabIndex = 0;
+  box.setAttribute('role', 'region');
+  box.setAttribute('aria-label', `chart: ${title}`);
+  // On a phone (report.html's media query) at least 0.9 of its drawing width: its labels then stay 9 px or more.
+  const width = Number(svg.getAttribute('viewBox')?.split(' ')[2]);
+  if (width > 0) box.style.setProperty('--chart-min-width', `${Math.round(0.9 * width)}px`);
+  box.append(svg);
+  return box;
 }
 
 /** A table in a box that scrolls sideways when the page is narrower than the table (a phone), reachable by keyboard. */

@@ -104,7 +104,46 @@ try {
     for (const v of violations) console.log(`     axe ${v.impact}: ${v.id} ×${v.count} (${v.nodes.join(', ')})`);
     check(serious.length === 0, `${name}: axe finds no serious or critical violation${serious.length ? ` (${serious.map((v) => v.id).join(', ')})` : ''}`);
     check(errors.length === 0, `${name}: no console errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
+
+    if (name === 'desktop') {
+      // The panel applies a typed value once committed: a half-typed gravity is neither applied nor reported.
+      const warnings = [];
+      page.on('console', (m) => m.type() === 'warning' && warnings.push(m.text()));
+      const gravity = page.locator('#c-physics-scene-gravity');
+      await gravity.fill('');
+      await gravity.pressSequentially('0 -3', { delay: 30 });
+      const typed = await page.evaluate(() => document.querySelector('#stage > *').getAttribute('gravity'));
+      await gravity.press('Enter');
+      const committed = await page.evaluate(() => document.querySelector('#stage > *').getAttribute('gravity'));
+      check(typed !== '0 -3' && committed === '0 -3' && warnings.length === 0, `${name}: a typed value applies on Enter, with no warning on the way (${JSON.stringify({ typed, committed, warnings })})`);
+      // The scene paused with Space: the panel's paused box says so.
+      await page.focus('#stage > *');
+      await page.keyboard.press('Space');
+      const paused = await page.waitForFunction(() => document.querySelector('#c-physics-scene-paused')?.checked === true, null, { timeout: 5000 }).then(() => true, () => false);
+      check(paused, `${name}: the paused box follows a pause from the scene (Space)`);
+    }
     await context.close();
+  }
+
+  // The other pages of the demo: axe on the whole page; on the phone the report's chart labels stay readable.
+  for (const [name, options] of [
+    ['desktop', { viewport: { width: 1280, height: 800 } }],
+    ['phone', { viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true }],
+  ]) {
+    for (const path of ['/demo/report.html', '/demo/engine.html']) {
+      const context = await browser.newContext(options);
+      const page = await context.newPage();
+      await page.goto(`${server.url}${path}`);
+      await page.waitForTimeout(1500);
+      await page.addScriptTag({ path: axePath });
+      const serious = await page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id));
+      check(serious.length === 0, `${name} ${path}: axe finds no serious or critical violation${serious.length ? ` (${serious.join(', ')})` : ''}`);
+      if (path.endsWith('report.html')) {
+        const smallest = await page.evaluate(() => Math.min(...[...document.querySelectorAll('svg text')].map((t) => t.getBoundingClientRect().height).filter((h) => h > 0)));
+        check(smallest >= 9, `${name} ${path}: chart labels at least 9 px tall (smallest ${smallest.toFixed(1)} px)`);
+      }
+      await context.close();
+    }
   }
 } finally {
   await browser.close();

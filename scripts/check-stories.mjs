@@ -97,6 +97,8 @@ try {
     await page.waitForFunction(() => document.getElementById('story-title').textContent === '<physics-box>');
     const input = page.locator('fieldset:nth-of-type(2) input[data-attr="fill"]');
     await input.fill('"><img src=x onerror=alert(1)>');
+    // The panel applies a value once it is committed (Enter or leaving the field), not at each keystroke.
+    await input.press('Enter');
     const edited = await page.evaluate(() => ({
       snippet: document.getElementById('snippet').textContent,
       attr: document.querySelector('#stage physics-box:nth-of-type(2)').getAttribute('fill'),

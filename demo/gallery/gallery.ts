@@ -199,7 +199,9 @@ function controlFor(target: HTMLElement, data: Node, p: PropInfo): HTMLElement {
   } else {
     input = el('input', { id, type: p.kind === 'number' ? 'number' : 'text', step: 'any', placeholder: 'default' });
     input.value = typeof value === 'string' ? value : '';
-    input.addEventListener('input', () => setAttr(target, data, p.attr, input.value === '' ? null : input.value));
+    // Applied when the value is committed (Enter, leaving the field, a spinner click), not at every keystroke: a
+    // half-typed "0 -" is not reported as an error on the way to "0 -3".
+    input.addEventListener('change', () => setAttr(target, data, p.attr, input.value === '' ? null : input.value));
   }
   input.dataset.attr = p.attr;
   return el('div', { class: `control ${p.kind}` }, label, input);
@@ -275,9 +277,11 @@ function show(id: string, query: URLSearchParams): void {
   const featuredData = story.featured !== undefined ? (data.children?.[story.featured] ?? null) : null;
   const featured = story.featured !== undefined ? (scene.children[story.featured] as HTMLElement) : null;
   current = { story, data, scene, featured, featuredData };
+  pausedWatch.disconnect();
+  pausedWatch.observe(scene, { attributes: true, attributeFilter: ['paused'] });
   stage.replaceChildren(scene);
   title.textContent = story.title;
-  description.textContent = story.description;
+  description.replaceChildren(...withCode(story.description));
   for (const a of nav.querySelectorAll('a')) a.classList.toggle('active', a.dataset.story === story.id);
   document.title = `${story.title} · physics-elements gallery`;
   renderControls();
@@ -287,6 +291,21 @@ function show(id: string, query: URLSearchParams): void {
   resetStats();
   if (story.onReady) scene.ready?.then(() => current?.scene === scene && story.onReady!(scene));
 }
+
+/** A description's text with its `backticked` spans as <code> (built as nodes: nothing goes through innerHTML). */
+function withCode(text: string): (string | HTMLElement)[] {
+  return text.split('`').map((part, k) => (k % 2 === 1 ? el('code', { text: part }) : part));
+}
+
+/**
+ * The scene pauses itself too (Space, the reduced-motion preference, its play control): the panel's `paused` box
+ * shows the state the scene is in. The snippet keeps the markup as written (a reader's pause is not the page's).
+ */
+const pausedWatch = new MutationObserver(() => {
+  if (!current) return;
+  const box = controls.querySelector<HTMLInputElement>(`#c-${current.data.tag}-paused`);
+  if (box) box.checked = current.scene.hasAttribute('paused');
+});
 
 function fromHash(): void {
   const raw = decodeURIComponent(location.hash.slice(1));
