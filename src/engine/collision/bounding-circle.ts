@@ -1,5 +1,5 @@
 // Bounding circle (seed 5.1): the minimum enclosing circle, by Welzl's algorithm in its iterative move-to-front form.
-import { readPoints, ShapeType, type PointLike, type Shape } from './shape.js';
+import { readPoints, ShapeType, unitScale, type PointLike, type Shape } from './shape.js';
 
 export class BoundingCircle {
   x = 0;
@@ -58,7 +58,9 @@ function minimumCircle(xs: Float64Array, ys: Float64Array, n: number, out: Bound
   const inside = (k: number) => {
     const dx = xs[k] - cx;
     const dy = ys[k] - cy;
-    return dx * dx + dy * dy <= r2 * (1 + SLACK) + 1e-300;
+    // Relative slack only: an absolute one (it was 1e-300) is the whole r² of points 1e-150 apart, and such a
+    // circle came out of radius 0 or around some of the points only.
+    return dx * dx + dy * dy <= r2 * (1 + SLACK);
   };
   for (let i = 1; i < n; i++) {
     if (inside(i)) continue;
@@ -74,15 +76,20 @@ function minimumCircle(xs: Float64Array, ys: Float64Array, n: number, out: Bound
         if (inside(k)) continue;
         // Circle through i, j, k (k lies outside the circle on diameter ij, so they are not collinear in exact
         // arithmetic; if rounding makes them so, the diameter of the farthest pair is the answer).
+        // In units of the offsets (by a power of two, exactly): the circumcentre multiplies three lengths, and points
+        // 1e-120 apart gave a circle of radius 0 (underflow), points 1e120 apart one at Infinity.
         const ax = xs[i], ay = ys[i];
-        const bx = xs[j] - ax, by = ys[j] - ay;
-        const qx = xs[k] - ax, qy = ys[k] - ay;
+        const s = unitScale(
+          Math.max(Math.abs(xs[j] - ax), Math.abs(ys[j] - ay), Math.abs(xs[k] - ax), Math.abs(ys[k] - ay)),
+        );
+        const bx = (xs[j] - ax) * s, by = (ys[j] - ay) * s;
+        const qx = (xs[k] - ax) * s, qy = (ys[k] - ay) * s;
         const d = 2 * (bx * qy - by * qx);
         const b2 = bx * bx + by * by;
         const q2 = qx * qx + qy * qy;
         if (d !== 0) {
-          const ux = (qy * b2 - by * q2) / d;
-          const uy = (bx * q2 - qx * b2) / d;
+          const ux = (qy * b2 - by * q2) / d / s;
+          const uy = (bx * q2 - qx * b2) / d / s;
           cx = ax + ux;
           cy = ay + uy;
           r2 = ux * ux + uy * uy;

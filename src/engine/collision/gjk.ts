@@ -294,11 +294,14 @@ function solve3(): void {
   const e23x = x3 - x2, e23y = y3 - y2;
   const d23_1 = x3 * e23x + y3 * e23y;
   const d23_2 = -(x2 * e23x + y2 * e23y);
-  // Triangle: signed areas of the sub-triangles with the origin, times the triangle's orientation.
+  // Triangle: signed areas of the sub-triangles with the origin, times the sign of the triangle's orientation
+  // (Box2D multiplies by the orientation itself: a product of four lengths, which underflows to 0 for shapes 1e-80
+  // across, giving weights 0/0, and overflows for 1e80; only its sign matters to the regions and the weights).
   const n123 = e12x * e13y - e12y * e13x;
-  const d123_1 = n123 * (x2 * y3 - y2 * x3);
-  const d123_2 = n123 * (x3 * y1 - y3 * x1);
-  const d123_3 = n123 * (x1 * y2 - y1 * x2);
+  const o123 = n123 > 0 ? 1 : n123 < 0 ? -1 : 0;
+  const d123_1 = o123 * (x2 * y3 - y2 * x3);
+  const d123_2 = o123 * (x3 * y1 - y3 * x1);
+  const d123_3 = o123 * (x1 * y2 - y1 * x2);
 
   if (d12_2 <= 0 && d13_2 <= 0) {
     lam[0] = 1;
@@ -348,13 +351,23 @@ function solve3(): void {
   wcount = 3;
 }
 
-/** Closest points of the cores, written by coreDistance. */
-export const core = { ax: 0, ay: 0, bx: 0, by: 0, iterations: 0 };
+/**
+ * Closest points of the cores, written by coreDistance, and the magnitude of the coordinates they were made of (the
+ * largest |ax| + |ay| + |bx| + |by| over the vertices of the final simplex), for rounding allowances.
+ */
+export const core = { ax: 0, ay: 0, bx: 0, by: 0, iterations: 0, magnitude: 0 };
+
+/**
+ * A distance at most this fraction of the coordinates' magnitude may be rounding (about 4,500 ulps; the loop's own
+ * errors are a few): the distance functions then ask boolean GJK whether the shapes overlap.
+ */
+const NEAR_ZERO = 1e-12;
 
 /**
  * Distance between the cores of A and B (their vertices' convex hulls: a circle's centre, a segment, a polygon),
- * with the closest points in `core`; 0 when the cores overlap or touch (then core.a = core.b is a common point).
- * Exact for polygons up to rounding: it stops when a support vertex repeats or stops bringing the simplex closer.
+ * with the closest points in `core`; 0 when the cores overlap or touch (then core.a = core.b is a common point), and
+ * always when boolean GJK says the cores overlap. Exact for polygons up to rounding: it stops when a support vertex
+ * repeats or stops bringing the simplex closer.
  */
 export function coreDistance(a: Shape, b: Shape): number {
   const axs = a.xs, ays = a.ys, aidx = a.index, aoff = a.offset, an = a.count;
@@ -439,16 +452,21 @@ export function coreDistance(a: Shape, b: Shape): number {
     }
     const vx = axs[aidx[aoff + i]] - bxs[bidx[boff + j]];
     const vy = ays[aidx[aoff + i]] - bys[bidx[boff + j]];
-    // Gilbert's test: V is no closer than P along −P (relative to |P|²): converged.
-    if (pp - (px * vx + py * vy) <= 1e-14 * pp) break;
+    // Gilbert's test: V gets no closer to the origin along d than the simplex is (relative to that distance):
+    // converged. Measured from vertex w0 along d, not as |P|² − P·V: P is interpolated along the edge and rounded
+    // by ulps of the edge's length, which P·V multiplies by |V|, so on a long thin A − B (a segment 1e11 times
+    // longer than the one crossing it) the test passed at a distance of 1e-11 of the size with the origin inside.
+    const h = wx[0] * dx + wy[0] * dy; // < 0: the simplex lies behind the origin along d
+    if ((vx - wx[0]) * dx + (vy - wy[0]) * dy <= -1e-14 * h) break;
     wx[wcount] = vx;
     wy[wcount] = vy;
     wi[wcount] = i;
     wj[wcount] = j;
     wcount++;
   }
-  // Witness points on the cores.
+  // Witness points on the cores, and the magnitude of the coordinates they are made of (for the rounding below).
   let pax = 0, pay = 0, pbx = 0, pby = 0;
+  let magnitude = 0;
   for (let k = 0; k < wcount; k++) {
     const va = aidx[aoff + wi[k]];
     const vb = bidx[boff + wj[k]];
@@ -456,8 +474,17 @@ export function coreDistance(a: Shape, b: Shape): number {
     pay += lam[k] * ays[va];
     pbx += lam[k] * bxs[vb];
     pby += lam[k] * bys[vb];
+    const m = Math.abs(axs[va]) + Math.abs(ays[va]) + Math.abs(bxs[vb]) + Math.abs(bys[vb]);
+    if (m > magnitude) magnitude = m;
   }
   core.iterations = iter;
+  core.magnitude = magnitude;
+  // The loop can stop on an edge of the simplex that passes through the origin up to rounding, and report the
+  // rounding (1e-16 of the coordinates) as a distance: a square nested in a square with a vertex on the other's
+  // diagonal puts a diagonal of A − B through the origin, and the support across it is the vertex solve3 just
+  // dropped. So a distance within rounding of 0 is settled by boolean GJK, the test gjkIntersect makes.
+  const gap = Math.abs(pbx - pax) + Math.abs(pby - pay);
+  if (!overlap && gap <= NEAR_ZERO * magnitude && intersect(a, b, scratchSimplex, 0, 0)) overlap = true;
   if (overlap) {
     pbx = pax;
     pby = pay;
@@ -473,7 +500,8 @@ export function coreDistance(a: Shape, b: Shape): number {
 
 /**
  * Distance between A and B and their closest points, written into `out`; returns the distance (0 when they overlap
- * or touch, and then out.ax/ay = out.bx/by is a point common to both). Runs on the cores, then takes off the radii.
+ * or touch, exactly 0 whenever gjkIntersect says they overlap, and then out.ax/ay = out.bx/by is a point common to
+ * both, to rounding). Runs on the cores, then takes off the radii.
  */
 export function gjkDistance(a: Shape, b: Shape, out: ClosestPoints): number {
   const d = coreDistance(a, b);
@@ -490,7 +518,11 @@ export function gjkDistance(a: Shape, b: Shape, out: ClosestPoints): number {
     const nx = ddx / d;
     const ny = ddy / d;
     const sepd = d - ra - rb;
-    if (sepd > 0) {
+    // A gap within rounding that boolean GJK on the full shapes calls an overlap (their curved supports are rounded
+    // too; the cores alone were settled in coreDistance) is one: the distance is 0 whenever gjkIntersect is true.
+    const rounding = NEAR_ZERO * (core.magnitude + ra + rb);
+    const overlap = sepd > 0 && sepd <= rounding && (ra > 0 || rb > 0) && intersect(a, b, scratchSimplex, ra, rb);
+    if (sepd > 0 && !overlap) {
       out.distance = sepd;
       out.ax = pax + ra * nx;
       out.ay = pay + ra * ny;
@@ -501,7 +533,8 @@ export function gjkDistance(a: Shape, b: Shape, out: ClosestPoints): number {
       return sepd;
     }
     // Cores apart but the radii overlap: on the line through the core points, A covers [−ra, ra] from its core
-    // point and B covers [d − rb, d + rb]; a common point is the middle of the two intervals' intersection.
+    // point and B covers [d − rb, d + rb]; a common point is the middle of the two intervals' intersection (of the
+    // gap between them, when it is within rounding).
     const lo = d - rb > -ra ? d - rb : -ra;
     const hi = ra < d + rb ? ra : d + rb;
     const t = (lo + hi) / (2 * d);

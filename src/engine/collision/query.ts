@@ -43,17 +43,22 @@ export function pointInShape(shape: Shape, x: number, y: number): boolean {
 }
 
 /**
- * Casts the ray from (ox, oy) along (dx, dy) (any non-zero length; normalized here) up to `maxDistance` (>= 0, may be
- * Infinity), written into `out`. A ray that starts inside (or on) a polygon or circle hits it at distance 0 with
- * normal −direction; a circle of radius 0 hit from outside also has normal −direction. A ray parallel to a segment
- * misses it. A zero direction misses everything. Throws a TypeError or RangeError naming a coordinate that is not a
- * finite number, or a maxDistance that is negative or NaN.
+ * Casts the ray from (ox, oy) along (dx, dy) (any non-zero finite length, 5e-324 to 1.8e308; normalized here) up to
+ * `maxDistance` (>= 0, may be Infinity), written into `out`. A ray that starts inside (or on) a polygon or circle
+ * hits it at distance 0 with normal −direction; a circle of radius 0 hit from outside also has normal −direction. A
+ * ray parallel to a segment misses it. A zero direction misses everything. Throws a TypeError or RangeError naming a
+ * coordinate that is not a finite number, or a maxDistance that is negative or NaN.
  */
 export function raycast(shape: Shape, ox: number, oy: number, dx: number, dy: number, maxDistance: number, out: RayHit): boolean {
   if (!(Number.isFinite(ox) && Number.isFinite(oy) && Number.isFinite(dx) && Number.isFinite(dy) && maxDistance >= 0)) badRay(ox, oy, dx, dy, maxDistance);
-  const len = Math.sqrt(dx * dx + dy * dy);
   out.hit = false;
-  if (!(len > 0)) return false;
+  // Normalised through the larger component: dx² + dy² underflows to 0 for a direction of length 1e-200 and
+  // overflows to Infinity for 1e200, while (dx, dy)/m has a length in [1, √2] whatever m is.
+  const m = Math.max(Math.abs(dx), Math.abs(dy));
+  if (m === 0) return false;
+  dx /= m;
+  dy /= m;
+  const len = Math.sqrt(dx * dx + dy * dy);
   dx /= len;
   dy /= len;
   const { xs, ys, index, offset, count } = shape;

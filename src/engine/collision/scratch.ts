@@ -246,8 +246,12 @@ export function nearestFeature(p: Shape, cx: number, cy: number, reach: number):
     const dy = cy - (y1 + near.alpha * ey);
     const d = Math.sqrt(dx * dx + dy * dy);
     if (d >= reach) return false;
-    near.nx = dx / d;
-    near.ny = dy / d;
+    // d = 0: the centre is on the vertex (its separation from the edge was rounding, or d² underflowed), and the
+    // edge's normal serves: any normal of the corner gives the same overlap, the radius (0/0 gave a NaN normal).
+    if (d > 0) {
+      near.nx = dx / d;
+      near.ny = dy / d;
+    }
     near.distance = d;
   }
   return true;

@@ -68,6 +68,15 @@ export function segmentView(xs: Float64Array, ys: Float64Array, index: Int32Arra
  */
 export const MAX_COORDINATE = 1e150;
 
+/**
+ * Least length of a segment or of a polygon's edge, and least radius of a circle other than 0 (a point):
+ * 1/MAX_COORDINATE, so that squared lengths stay ordinary doubles (>= 1e-300). Below about 1.5e-154 they lose their
+ * digits to underflow, and results divided by them: a segment 1e-310 long had an OBB axis (Infinity, NaN) and an EPA
+ * depth of Infinity, a polygon with a 1e-200 edge a SAT normal of Infinity, gjkDistance on shapes 1e-160 across
+ * NaN points, and two circles of radius 1e-200 overlapped for gjkEpa but not for sat.
+ */
+export const MIN_LENGTH = 1e-150;
+
 /** A finite number within ±MAX_COORDINATE, or a TypeError/RangeError naming it. */
 function coordinate(name: string, value: unknown): number {
   const v = finite(name, value);
@@ -77,7 +86,53 @@ function coordinate(name: string, value: unknown): number {
   return v;
 }
 
-/** Reads `[{x, y}, ...]` or a flat `[x0, y0, x1, y1, ...]` into two arrays, checking every number (finite, within ±MAX_COORDINATE). */
+/** Throws a RangeError unless the edge (ex, ey), named `what`, is at least MIN_LENGTH long. */
+function checkLength(what: string, ex: number, ey: number): void {
+  const length = Math.hypot(ex, ey);
+  if (length < MIN_LENGTH) {
+    throw new RangeError(`${what} must be at least MIN_LENGTH = ${MIN_LENGTH} long (shorter, squared lengths underflow), got length ${length}`);
+  }
+}
+
+/**
+ * Throws a RangeError unless the points are one point (repeated or not) or spread over at least MIN_LENGTH (the larger
+ * side of their bounding box): closer, the hull, circle and box built on them came out wrong or NaN.
+ */
+function checkSpread(name: string, xs: Float64Array, ys: Float64Array): void {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (let k = 0; k < xs.length; k++) {
+    minX = Math.min(minX, xs[k]);
+    maxX = Math.max(maxX, xs[k]);
+    minY = Math.min(minY, ys[k]);
+    maxY = Math.max(maxY, ys[k]);
+  }
+  const spread = Math.max(maxX - minX, maxY - minY);
+  if (spread > 0 && spread < MIN_LENGTH) {
+    throw new RangeError(`${name} must be one point or spread over at least MIN_LENGTH = ${MIN_LENGTH} (closer, squared distances underflow), got a spread of ${spread}`);
+  }
+}
+
+/**
+ * A power of two near 1/m (m > 0): lengths of about m times it are about 1, without rounding. Sums of products of
+ * three lengths (moments, circumcentres) are formed in these units: in plain units they underflow for lengths below
+ * 1e-103 and overflow above 1e103, well inside [MIN_LENGTH, MAX_COORDINATE].
+ */
+export function unitScale(m: number): number {
+  const e = Math.floor(Math.log2(m));
+  return 2 ** -(e < -1000 ? -1000 : e > 1000 ? 1000 : e);
+}
+
+/** A radius: 0 (a point) or within [MIN_LENGTH, MAX_COORDINATE], or a TypeError/RangeError naming it. */
+function checkRadius(name: string, value: unknown): number {
+  const r = coordinate(name, nonNegative(name, value));
+  if (r > 0 && r < MIN_LENGTH) throw new RangeError(`${name} must be 0 (a point) or at least MIN_LENGTH = ${MIN_LENGTH} (smaller, its square underflows), got ${r}`);
+  return r;
+}
+
+/**
+ * Reads `[{x, y}, ...]` or a flat `[x0, y0, x1, y1, ...]` into two arrays, checking every number (finite, within
+ * ±MAX_COORDINATE) and their spread (one point, or at least MIN_LENGTH).
+ */
 export function readPoints(name: string, points: unknown): { xs: Float64Array; ys: Float64Array } {
   if (!Array.isArray(points) && !ArrayBuffer.isView(points)) {
     throw new TypeError(`${name} must be an array of {x, y} points or of numbers, got ${describeValue(points)}`);
@@ -92,6 +147,7 @@ export function readPoints(name: string, points: unknown): { xs: Float64Array; y
       xs[k] = coordinate(`${name}[${2 * k}]`, list[2 * k]);
       ys[k] = coordinate(`${name}[${2 * k + 1}]`, list[2 * k + 1]);
     }
+    checkSpread(name, xs, ys);
     return { xs, ys };
   }
   const n = list.length;
@@ -103,6 +159,7 @@ export function readPoints(name: string, points: unknown): { xs: Float64Array; y
     xs[k] = coordinate(`${name}[${k}].x`, p.x);
     ys[k] = coordinate(`${name}[${k}].y`, p.y);
   }
+  checkSpread(name, xs, ys);
   return { xs, ys };
 }
 
@@ -115,9 +172,9 @@ function iota(n: number): Int32Array {
 /**
  * A convex polygon that owns a copy of `points` ({x, y} objects or a flat number list). Throws a TypeError or
  * RangeError naming the argument when there are fewer than 3 points, a coordinate is not finite or beyond
- * ±MAX_COORDINATE, two consecutive
- * points coincide, the area is zero, the order is clockwise (fix it with counterClockwise) or the outline is not
- * convex (split it with decompose). Collinear consecutive vertices (180° corners) are allowed.
+ * ±MAX_COORDINATE, two consecutive points coincide or are closer than MIN_LENGTH, the area is zero, the order is
+ * clockwise (fix it with counterClockwise) or the outline is not convex (split it with decompose). Collinear
+ * consecutive vertices (180° corners) are allowed.
  */
 export function polygon(points: readonly PointLike[] | readonly number[] | ArrayLike<number>): Shape {
   const { xs, ys } = readPoints('points', points);
@@ -126,18 +183,22 @@ export function polygon(points: readonly PointLike[] | readonly number[] | Array
   return shape;
 }
 
-/** A circle of centre (x, y) and radius r >= 0 (coordinates and radius within ±MAX_COORDINATE). */
+/**
+ * A circle of centre (x, y) and radius r (coordinates within ±MAX_COORDINATE; r is 0, a point, or from MIN_LENGTH
+ * to MAX_COORDINATE).
+ */
 export function circle(x: number, y: number, r: number): Shape {
   const xs = new Float64Array([coordinate('x', x)]);
   const ys = new Float64Array([coordinate('y', y)]);
-  return circleView(xs, ys, iota(1), 0, coordinate('r', nonNegative('r', r)));
+  return circleView(xs, ys, iota(1), 0, checkRadius('r', r));
 }
 
-/** A segment from (x1, y1) to (x2, y2); the endpoints must differ. */
+/** A segment from (x1, y1) to (x2, y2); the endpoints must differ, by at least MIN_LENGTH. */
 export function segment(x1: number, y1: number, x2: number, y2: number): Shape {
   const xs = new Float64Array([coordinate('x1', x1), coordinate('x2', x2)]);
   const ys = new Float64Array([coordinate('y1', y1), coordinate('y2', y2)]);
   if (xs[0] === xs[1] && ys[0] === ys[1]) throw new RangeError(`segment endpoints must differ, got (${x1}, ${y1}) twice`);
+  checkLength(`segment (x1, y1) to (x2, y2), here (${x1}, ${y1}) to (${x2}, ${y2}),`, xs[1] - xs[0], ys[1] - ys[0]);
   return segmentView(xs, ys, iota(2), 0);
 }
 
@@ -191,12 +252,13 @@ export function assertConvex(shape: Shape, name = 'shape'): void {
     coordinate(`${name} vertex ${k} x`, xs[i]);
     coordinate(`${name} vertex ${k} y`, ys[i]);
   }
-  coordinate(`${name}.radius`, nonNegative(`${name}.radius`, shape.radius));
+  checkRadius(`${name}.radius`, shape.radius);
   if (type !== ShapeType.Circle && shape.radius !== 0) throw new RangeError(`${name}.radius must be 0 for a polygon or segment, got ${shape.radius}`);
   if (type === ShapeType.Segment) {
     const i = index[offset];
     const j = index[offset + 1];
     if (xs[i] === xs[j] && ys[i] === ys[j]) throw new RangeError(`${name} is a segment of zero length`);
+    checkLength(`${name} (a segment from (${xs[i]}, ${ys[i]}) to (${xs[j]}, ${ys[j]}))`, xs[j] - xs[i], ys[j] - ys[i]);
   }
   if (type === ShapeType.Polygon) checkConvex(name, shape);
 }
@@ -215,6 +277,7 @@ function checkConvex(name: string, shape: Shape): void {
     const ex = xs[j] - xs[i];
     const ey = ys[j] - ys[i];
     if (ex === 0 && ey === 0) throw new RangeError(`${name}[${(k + 1) % count}] repeats ${name}[${k}] (${xs[i]}, ${ys[i]}): edges must have non-zero length`);
+    checkLength(`the edge ${name}[${k}] to ${name}[${(k + 1) % count}], (${xs[i]}, ${ys[i]}) to (${xs[j]}, ${ys[j]}),`, ex, ey);
     const fx = xs[l] - xs[j];
     const fy = ys[l] - ys[j];
     const cross = ex * fy - ey * fx;
@@ -279,6 +342,14 @@ export function shapeCentroid(shape: Shape, out: PointLike = { x: 0, y: 0 }): Po
   const { xs, ys, index, offset, count } = shape;
   const ox = xs[index[offset]];
   const oy = ys[index[offset]];
+  // In units of the shape's size (by a power of two, exactly): the moments multiply three lengths, and a polygon
+  // 1e-120 across had its centroid at its first vertex (underflow), one 1e120 across at Infinity.
+  let size = 0;
+  for (let k = 1; k < count; k++) {
+    const i = index[offset + k];
+    size = Math.max(size, Math.abs(xs[i] - ox), Math.abs(ys[i] - oy));
+  }
+  const s = size > 0 ? unitScale(size) : 1;
   let a = 0;
   let cx = 0;
   let cy = 0;
@@ -287,10 +358,10 @@ export function shapeCentroid(shape: Shape, out: PointLike = { x: 0, y: 0 }): Po
   for (let k = 0; k < count; k++) {
     const i = index[offset + k];
     const j = index[offset + (k + 1 === count ? 0 : k + 1)];
-    const x0 = xs[i] - ox;
-    const y0 = ys[i] - oy;
-    const x1 = xs[j] - ox;
-    const y1 = ys[j] - oy;
+    const x0 = (xs[i] - ox) * s;
+    const y0 = (ys[i] - oy) * s;
+    const x1 = (xs[j] - ox) * s;
+    const y1 = (ys[j] - oy) * s;
     const c = x0 * y1 - x1 * y0;
     a += c;
     cx += (x0 + x1) * c;
@@ -299,11 +370,11 @@ export function shapeCentroid(shape: Shape, out: PointLike = { x: 0, y: 0 }): Po
     my += y0;
   }
   if (shape.type === ShapeType.Polygon && a !== 0) {
-    out.x = ox + cx / (3 * a);
-    out.y = oy + cy / (3 * a);
+    out.x = ox + cx / (3 * a) / s;
+    out.y = oy + cy / (3 * a) / s;
   } else {
-    out.x = ox + mx / count;
-    out.y = oy + my / count;
+    out.x = ox + mx / count / s;
+    out.y = oy + my / count / s;
   }
   return out;
 }
@@ -329,19 +400,29 @@ export function supportIndex(shape: Shape, dx: number, dy: number): number {
 
 /**
  * The support point of the shape along (dx, dy), written into `out`: the farthest vertex, pushed out by the radius
- * along d/|d| (a circle's support is centre + r·d/|d|; any point of it for d = 0).
+ * along d/|d| (a circle's support is centre + r·d/|d|; any point of it for d = 0). Throws a TypeError or RangeError
+ * naming dx or dy when it is not a finite number.
  */
 export function supportPoint(shape: Shape, dx: number, dy: number, out: PointLike): PointLike {
+  if (!(Number.isFinite(dx) && Number.isFinite(dy))) {
+    finite('dx', dx);
+    finite('dy', dy);
+  }
   const k = supportIndex(shape, dx, dy);
   const i = shape.index[shape.offset + k];
   out.x = shape.xs[i];
   out.y = shape.ys[i];
   const r = shape.radius;
   if (r > 0) {
-    const len = Math.sqrt(dx * dx + dy * dy);
-    if (len > 0) {
-      out.x += (r * dx) / len;
-      out.y += (r * dy) / len;
+    // Normalised through the larger component, as raycast does: dx² + dy² underflows to 0 for |d| = 1e-200 and
+    // overflows for 1e200 (the point came out at (1, 0) from the centre, or at the centre).
+    const m = Math.max(Math.abs(dx), Math.abs(dy));
+    if (m > 0) {
+      const ux = dx / m;
+      const uy = dy / m;
+      const len = Math.sqrt(ux * ux + uy * uy);
+      out.x += (r * ux) / len;
+      out.y += (r * uy) / len;
     } else {
       out.x += r;
     }
