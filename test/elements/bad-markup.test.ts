@@ -124,6 +124,22 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => box.y > 2.5 && far.y > 2.5, 'both boxes to fall');
   });
 
+  it('a body the engine refuses is reported, and leaves the error box once its markup is fixed', async () => {
+    console.warn = () => {};
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1" density="1e-20"></physics-box>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    const box = scene.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
+    await waitFor(() => errors.some((e) => e.message.includes('1e-12')), 'the refused body reported');
+    expect(errors[0].element.id).to.equal('box');
+    await waitFor(() => !box.hidden && box.textContent!.includes('1e-12'), 'the refusal in the error box');
+    expect((await scene.diagnostics()).bodyCount).to.equal(0);
+    scene.querySelector('#box')!.setAttribute('density', '1');
+    await waitFor(() => box.hidden, 'the error box to empty');
+    expect((await scene.diagnostics()).bodyCount).to.equal(1);
+  });
+
   it('setVelocity and applyImpulse refuse bad numbers where they are called; an impulse past the speed limit is a physics-error, the engine keeps running', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];

@@ -146,7 +146,7 @@ function rig(markup: string) {
   const sync = new MarkupSync({
     container: () => container,
     engine: { live: engine as Engine, shown: engine as Engine, send: (method: Command, ...args: unknown[]) => void sent.push([method, args]) },
-    problems: { set: () => {}, forget: () => {} },
+    problems: { set: () => {}, forget: () => {}, resent: () => {} },
     styles: { setStyle: () => {}, deleteStyle: () => {} },
   });
   sync.collect();

@@ -107,7 +107,7 @@ export interface MarkupOptions {
   /** The engine the changes go to (sent only while it has the scene loaded). */
   engine: EngineCommands & { readonly shown: { pose(key: number): [number, number, number] | null } | null };
   /** Where each element's problems go (the element is their source). */
-  problems: { set(source: unknown, el: Element, problems: Problem[]): void; forget(source: unknown): void };
+  problems: { set(source: unknown, el: Element, problems: Problem[]): void; forget(source: unknown): void; resent(el: Element): void };
   /** How each body is drawn. */
   styles: { setStyle(key: number, style: BodyStyle): void; deleteStyle(key: number): void };
   /** The page's colour scheme, which the bodies' default colours follow (light when not given). */
@@ -214,6 +214,7 @@ export class MarkupSync implements SceneHost {
       const before = entry.sent;
       const desc = this.describeBody(key);
       if (entry.sent !== before) {
+        this.options.problems.resent(child);
         if (desc) engine.send('updateBody', { key, desc });
         else engine.send('removeBody', key);
       }
@@ -345,6 +346,7 @@ export class MarkupSync implements SceneHost {
       const before = entry.sent;
       const desc = this.describeLink(key);
       if (entry.sent === before) continue;
+      this.options.problems.resent(entry.element);
       if (desc) engine.send('updateLink', { key, desc });
       else engine.send('removeLink', key);
     }

@@ -1,6 +1,7 @@
 // What is wrong with a scene, told three ways: a `physics-error` event on the element at fault, one console warning
 // naming the element, attribute and value, and the visible error box (every current markup problem and the latest
-// engine failures). Markup problems are reported once each while they last; a fixed one leaves the box.
+// engine failures). Markup problems are reported once each while they last; a fixed one leaves the box. So does an
+// element's description the engine refused, once the element sends another.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { HostError } from '../../worker/protocol.js';
 import { describeElement, displayValue, type Problem } from '../checks.js';
@@ -29,6 +30,8 @@ export class ProblemsController implements ReactiveController {
   /** Per source (an element's attributes, the scene's, a preset's): the problems reported (ids) and their lines. */
   private readonly sources = new Map<unknown, { reported: Set<string>; lines: string[] }>();
   private failures: string[] = [];
+  /** Per element: the lines of the engine's refusals of its description (until it sends another one). */
+  private readonly refusals = new Map<Element, string[]>();
   private shown: string[] = [];
 
   constructor(
@@ -64,7 +67,13 @@ export class ProblemsController implements ReactiveController {
 
   /** A source is gone (an element removed from the scene): its problems leave the box, and would be reported anew. */
   forget(source: unknown): void {
-    if (this.sources.delete(source)) this.refresh();
+    const refused = source instanceof Element && this.refusals.delete(source);
+    if (this.sources.delete(source) || refused) this.refresh();
+  }
+
+  /** The element sent the engine a new description: the engine's refusals of the old one leave the box. */
+  resent(el: Element): void {
+    if (this.refusals.delete(el)) this.refresh();
   }
 
   /** A console warning naming the element, the attribute and the value, and a `physics-error` event; `keep`: in the box too. */
@@ -82,12 +91,23 @@ export class ProblemsController implements ReactiveController {
   refused(e: HostError): void {
     const el = this.options.elementOf(e.key) ?? this.host;
     const attribute = ENGINE_FIELDS[e.field] ?? e.field;
-    this.report(el, attribute, attribute ? (el.getAttribute(attribute) ?? '') : '', e.message);
+    const value = attribute ? (el.getAttribute(attribute) ?? '') : '';
+    if (el === this.host) {
+      this.report(el, attribute, value, e.message);
+      return;
+    }
+    // Shown while the element's description stays the refused one (resent() and forget() take it out).
+    this.report(el, attribute, value, e.message, false);
+    const line = problemText(el, attribute, value, e.message);
+    const lines = this.refusals.get(el) ?? [];
+    if (!lines.includes(line)) this.refusals.set(el, [...lines, line]);
+    this.refresh();
   }
 
   /** The scene stopped: the box empties. What was reported stays reported (sources that remain are not reported again). */
   clear(): void {
     this.failures = [];
+    this.refusals.clear();
     for (const entry of this.sources.values()) entry.lines = [];
     this.refresh();
   }
@@ -97,7 +117,7 @@ export class ProblemsController implements ReactiveController {
   }
 
   private refresh(): void {
-    const lines = [...[...this.sources.values()].flatMap((s) => s.lines), ...this.failures];
+    const lines = [...[...this.sources.values()].flatMap((s) => s.lines), ...[...this.refusals.values()].flat(), ...this.failures];
     if (lines.join('\n') === this.shown.join('\n')) return;
     this.shown = lines;
     this.show();

@@ -23,14 +23,16 @@ function rig(markup: string) {
   };
   const problems = new Map<unknown, Problem[]>();
   const forgotten: unknown[] = [];
+  /** The elements whose description was sent again (an engine refusal of the old one leaves the error box). */
+  const resent: Element[] = [];
   const styles = new Map<number, BodyStyle>();
   const sync = new MarkupSync({
     container: () => container,
     engine: port,
-    problems: { set: (source, _el, list) => void problems.set(source, list), forget: (source) => void forgotten.push(source) },
+    problems: { set: (source, _el, list) => void problems.set(source, list), forget: (source) => void forgotten.push(source), resent: (el) => void resent.push(el) },
     styles: { setStyle: (key, style) => void styles.set(key, style), deleteStyle: (key) => void styles.delete(key) },
   });
-  return { container, sent, port, engine, problems, forgotten, styles, sync, $: <T extends Element>(s: string) => container.querySelector(s) as T };
+  return { container, sent, port, engine, problems, forgotten, resent, styles, sync, $: <T extends Element>(s: string) => container.querySelector(s) as T };
 }
 
 /** Waits for the MutationObserver and the elements' own updates. */
@@ -83,11 +85,13 @@ describe('MarkupSync', () => {
     circle.setAttribute('radius', '2');
     await changes();
     expect(r.sent.map(([m, args]) => [m, (args[0] as KeyedBody).key, ((args[0] as KeyedBody).desc as { radius: number }).radius])).to.deep.equal([['updateBody', key, 2]]);
+    expect(r.resent).to.deep.equal([circle]);
     r.sent.length = 0;
     // A change of the drawing only (not of the body) sends nothing; the style follows.
     circle.setAttribute('fill', '#00ff00');
     await changes();
     expect(r.sent).to.deep.equal([]);
+    expect(r.resent).to.deep.equal([circle]);
     expect(r.styles.get(key)!.fill).to.equal('#00ff00');
     circle.remove();
     await changes();

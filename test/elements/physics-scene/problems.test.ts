@@ -99,6 +99,26 @@ describe('ProblemsController', () => {
     expect(errors[2].detail.element).to.equal(child);
   });
 
+  it("an element's refused description stays in the box until the element sends another one, or leaves", () => {
+    child.setAttribute('density', '1e-20');
+    problems.refused({ key: 4, field: 'density', message: 'mass must be at least 1e-12' });
+    problems.refused({ key: 99, field: '', message: 'engine: failure' });
+    expect(box.textContent!.split('\n')).to.deep.equal(['<physics-box id="crate"> density="1e-20": mass must be at least 1e-12', '<x-fake-host>: engine: failure']);
+    // The same refusal again (a restarted engine): still one line.
+    problems.refused({ key: 4, field: 'density', message: 'mass must be at least 1e-12' });
+    expect(problems.lines.length).to.equal(2);
+    // Fixed and sent again: the refusal leaves; the scene's own failure stays.
+    child.setAttribute('density', '1');
+    problems.resent(child);
+    expect(problems.lines).to.deep.equal(['<x-fake-host>: engine: failure']);
+    // Refused again, then removed from the scene: it leaves with the element.
+    problems.refused({ key: 4, field: 'density', message: 'mass must be at least 1e-12' });
+    expect(problems.lines.length).to.equal(2);
+    problems.forget(child);
+    expect(problems.lines).to.deep.equal(['<x-fake-host>: engine: failure']);
+    expect(warnings.length).to.equal(4);
+  });
+
   it('the box is filled when it appears (after an update), and a hostile value is shown escaped and cut', () => {
     const late = document.createElement('div');
     let rendered: HTMLElement | null = null;
