@@ -551,11 +551,11 @@ describe('builders check everything before they make anything', () => {
     expect([...rope.particles, ...cloth.particles].map((p) => world.getPosition(p))).to.deep.equal(at);
     // A pentagram: each point joined to the second next.
     const star = [0, 2, 4, 1, 3].map((k) => ({ x: Math.cos((2 * Math.PI * k) / 5), y: Math.sin((2 * Math.PI * k) / 5) }));
-    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star }), RangeError, 'points', 'simple outline', 'cross');
-    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star, model: 'particles' }), RangeError, 'simple outline');
-    const bowTie = [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }];
-    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: bowTie }), RangeError, 'simple outline');
-    throwsNaming(() => world.addRigidBody({ x: 0, y: 0, points: bowTie }), RangeError, 'simple outline');
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star }), RangeError, 'points', 'simple polygon', 'meets edge');
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: star, model: 'particles' }), RangeError, 'simple polygon');
+    const bowTie = [{ x: 0, y: 0 }, { x: 2, y: 2 }, { x: 2, y: 0 }, { x: 0, y: 1 }]; // two triangles of different areas
+    throwsNaming(() => createPolygon(world, { x: 0, y: 0, points: bowTie }), RangeError, 'simple polygon');
+    throwsNaming(() => world.addRigidBody({ x: 0, y: 0, points: bowTie }), RangeError, 'simple polygon');
     // A concave simple outline (an L) and the star's convex hull are still taken.
     createPolygon(world, { x: 5, y: 5, points: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, { x: 0, y: 2 }] });
     createPolygon(world, { x: 8, y: 5, points: [0, 1, 2, 3, 4].map((k) => ({ x: Math.cos((2 * Math.PI * k) / 5), y: Math.sin((2 * Math.PI * k) / 5) })) });

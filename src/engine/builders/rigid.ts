@@ -1,8 +1,7 @@
 import type { Vec2, World } from '../world.js';
 import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
 import { BODY_MODELS, BODY_OPTIONS, builderOptions, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
-import { decompose } from '../collision/decompose.js';
-import { simpleOutline } from '../rigid/outline.js';
+import { checkSimple, decompose } from '../collision/decompose.js';
 
 /** What a rigid box, polygon or circle takes besides its shape. */
 export interface RigidOptions extends BodyOptions {
@@ -88,11 +87,11 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
     throw new RangeError(`points must be a list of at least 3 points, got ${Array.isArray(o.points) ? o.points.length : String(o.points)}`);
   }
   let local = o.points.map((p, k) => point(`points[${k}]`, p));
-  simpleOutline('points', local.map((p) => p.x), local.map((p) => p.y));
   // Parts and edge normals assume counter-clockwise order (positive area): reverse a clockwise outline.
   if (shoelace(local) < 0) local = local.reverse();
   const area = shoelace(local);
   if (!(area > 0)) throw new RangeError(`points must enclose a non-zero area, got ${JSON.stringify(o.points)}`);
+  checkSimple(local.map((p) => p.x), local.map((p) => p.y), 'points');
   const ox = coordinate('x', o.x ?? 0);
   const oy = coordinate('y', o.y ?? 0);
   const angle = finite('angle', o.angle ?? 0);

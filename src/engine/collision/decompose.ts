@@ -47,8 +47,11 @@ function prepare(points: Points): Prepared {
   return { xs, ys, corners, between };
 }
 
-/** Throws when two edges of the closed outline cross, touch, or overlap (other than neighbours at their shared end). */
-function checkSimple(xs: Float64Array, ys: Float64Array): void {
+/**
+ * Throws when two edges of the closed outline cross, touch, or overlap (other than neighbours at their shared end);
+ * `name` is the argument the message names. A pentagram turns the same way at every corner, so only this finds it.
+ */
+export function checkSimple(xs: ArrayLike<number>, ys: ArrayLike<number>, name = 'points'): void {
   const n = xs.length;
   const orient = (a: number, b: number, c: number) => {
     const v = (xs[b] - xs[a]) * (ys[c] - ys[a]) - (ys[b] - ys[a]) * (xs[c] - xs[a]);
@@ -66,7 +69,7 @@ function checkSimple(xs: Float64Array, ys: Float64Array): void {
         const p = shared === i2 ? i : i2; // far end of edge i
         const q = shared === i2 ? j2 : j; // far end of edge j
         if (orient(p, shared, q) === 0 && (xs[p] - xs[shared]) * (xs[q] - xs[shared]) + (ys[p] - ys[shared]) * (ys[q] - ys[shared]) > 0) {
-          throw new RangeError(`points must form a simple polygon, but edges ${i} and ${j} fold back onto each other at points[${shared}]`);
+          throw new RangeError(`${name} must form a simple polygon, but edges ${i} and ${j} fold back onto each other at ${name}[${shared}]`);
         }
         continue;
       }
@@ -80,7 +83,7 @@ function checkSimple(xs: Float64Array, ys: Float64Array): void {
         (o2 === 0 && onSegment(i, i2, j2)) ||
         (o3 === 0 && onSegment(j, j2, i)) ||
         (o4 === 0 && onSegment(j, j2, i2));
-      if (cross) throw new RangeError(`points must form a simple polygon, but edge ${i}–${i2} meets edge ${j}–${j2}`);
+      if (cross) throw new RangeError(`${name} must form a simple polygon, but edge ${i}–${i2} meets edge ${j}–${j2}`);
     }
   }
 }

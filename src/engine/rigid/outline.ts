@@ -1,6 +1,6 @@
 // From an outline or a radius to what a rigid body needs: its shape in the body's frame (centre of mass at the
 // origin) and its mass properties. Setup-time code (it allocates).
-import { decompose } from '../collision/decompose.js';
+import { checkSimple, decompose } from '../collision/decompose.js';
 import { coordinate, positive } from '../validate.js';
 import { circleMass, combineMass, polygonMass, type MassProperties } from './mass.js';
 import { cleanOutline, RigidShapeKind, type RigidShapeSource } from './shapes.js';
@@ -60,11 +60,11 @@ function outlinePieces(points: readonly { x: number; y: number }[], name: string
   const xs = points.map((p, k) => coordinate(`${name}[${k}].x`, p?.x));
   const ys = points.map((p, k) => coordinate(`${name}[${k}].y`, p?.y));
   const clean = cleanOutline(xs, ys);
-  simpleOutline(name, clean.xs, clean.ys);
   const unit = polygonMass(clean.xs, clean.ys, 1);
   if (!(unit.area > 0) || !Number.isFinite(unit.area) || !Number.isFinite(unit.inertia)) {
     throw new RangeError(`${name} must enclose a finite, non-zero area, got area ${unit.area}`);
   }
+  checkSimple(clean.xs, clean.ys, name);
   const outline = clean.xs.map((x, k) => ({ x, y: clean.ys[k] }));
   const parts = isConvex(clean.xs, clean.ys) ? [outline] : decompose(outline).map((part) => part.map((k) => outline[k]));
   return {
@@ -94,31 +94,3 @@ function isConvex(xs: number[], ys: number[]): boolean {
   return true;
 }
 
-/**
- * Refuses an outline whose edges cross or touch away from their shared corners (a pentagram, a bow tie): its area and
- * inertia would count the overlap twice, and its parts would not be its inside.
- */
-export function simpleOutline(name: string, xs: ArrayLike<number>, ys: ArrayLike<number>): void {
-  const n = xs.length;
-  const side = (a: number, b: number, c: number) => Math.sign((xs[b] - xs[a]) * (ys[c] - ys[a]) - (ys[b] - ys[a]) * (xs[c] - xs[a]));
-  // Whether c lies on segment ab, given that the three are collinear.
-  const within = (a: number, b: number, c: number) =>
-    Math.min(xs[a], xs[b]) <= xs[c] && xs[c] <= Math.max(xs[a], xs[b]) && Math.min(ys[a], ys[b]) <= ys[c] && ys[c] <= Math.max(ys[a], ys[b]);
-  for (let i = 0; i < n; i++) {
-    const a = i;
-    const b = (i + 1) % n;
-    for (let j = i + 1; j < n; j++) {
-      const c = j;
-      const d = (j + 1) % n;
-      if (c === b || d === a) continue; // neighbours share a corner
-      const [s1, s2, s3, s4] = [side(a, b, c), side(a, b, d), side(c, d, a), side(c, d, b)];
-      const crosses =
-        (s1 * s2 < 0 && s3 * s4 < 0) ||
-        (s1 === 0 && within(a, b, c)) ||
-        (s2 === 0 && within(a, b, d)) ||
-        (s3 === 0 && within(c, d, a)) ||
-        (s4 === 0 && within(c, d, b));
-      if (crosses) throw new RangeError(`${name} must be a simple outline, but its edges ${i}–${b} and ${j}–${d} cross`);
-    }
-  }
-}
