@@ -136,7 +136,7 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => !box.hidden && box.textContent!.includes('1e-12'), 'the refusal in the error box');
     expect((await scene.diagnostics()).bodyCount).to.equal(0);
     scene.querySelector('#box')!.setAttribute('density', '1');
-    await waitFor(() => box.hidden, 'the error box to empty');
+    await waitFor(() => box.hidden === true, 'the error box to empty');
     expect((await scene.diagnostics()).bodyCount).to.equal(1);
   });
 
