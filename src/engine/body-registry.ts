@@ -1,6 +1,7 @@
 // The bodies: per handle slot its kind, its member particles (storage indices), the constraints it owns and its
 // collider's convex parts. A body groups what the builders made; removing it removes its particles and constraints.
 import { handleSlot, HandleRegistry, type Handle, type RegistrySnapshot } from './handles.js';
+import { grown } from './table.js';
 import type { ParticleStore } from './particles.js';
 import type { Springs } from './constraints/spring.js';
 import type { BodyKind, Vec2 } from './options.js';
@@ -12,6 +13,13 @@ export class BodyRegistry {
   constraints: Handle[][] = [];
   /** Convex parts as indices into the body's particle list (undefined: the whole outline is one part). */
   parts: (number[][] | undefined)[] = [];
+  /** Per particle slot: 1 + the slot of the body that holds it, 0 for none (a particle is in one body at most). */
+  private owner = new Int32Array(64);
+
+  /** The slot of the live body holding particle slot `i`, or -1. */
+  ownerOf(i: number): number {
+    return i < this.owner.length ? this.owner[i] - 1 : -1;
+  }
 
   /** A new body of checked particle slots and constraint handles; returns its handle. */
   add(kind: BodyKind, particles: Int32Array, constraints: readonly Handle[]): Handle {
@@ -20,12 +28,14 @@ export class BodyRegistry {
     this.kind[slot] = kind;
     this.particles[slot] = particles;
     this.constraints[slot] = constraints.slice();
+    this.own(particles, slot + 1);
     return handle;
   }
 
   /** Forgets a live body (its particles and constraints are removed by the caller). */
   remove(handle: Handle): void {
     const slot = handleSlot(handle);
+    this.own(this.particles[slot], 0);
     this.particles[slot] = new Int32Array(0);
     this.constraints[slot] = [];
     this.parts[slot] = undefined;
@@ -60,6 +70,15 @@ export class BodyRegistry {
     this.particles = s.particles.map((a) => a.slice());
     this.constraints = s.constraints.map((a) => a.slice());
     this.parts = s.parts.map((parts) => parts?.map((part) => part.slice()));
+    this.owner.fill(0);
+    for (let b = 0; b < this.ids.high; b++) if (this.ids.alive[b] === 1) this.own(this.particles[b], b + 1);
+  }
+
+  private own(particles: Int32Array, value: number): void {
+    let high = 0;
+    for (const i of particles) if (i >= high) high = i + 1;
+    if (high > this.owner.length) this.owner = grown(this.owner, high);
+    for (const i of particles) this.owner[i] = value;
   }
 }
 

@@ -115,7 +115,7 @@ export const FIELDS = {
   },
   bodies: {
     snapshotted: ['ids', 'kind', 'particles', 'constraints', 'parts'],
-    notSnapshotted: {},
+    notSnapshotted: { owner: 'rebuilt from the particles by restore()' },
   },
   constraints: {
     snapshotted: ['ids', 'kind', 'row', 'distances', 'angles', 'pins', 'springs', 'areas', 'grabs', 'joints'],

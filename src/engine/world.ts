@@ -272,12 +272,8 @@ export class World {
     const slot = ctx.particleIds.slotOf(handle, 'particle');
     // A body keeps its particles by storage index (a rigid body's row, a frame's corners, its parts): one removed
     // alone would leave the body holding whatever particle takes the slot next.
-    const bodies = ctx.bodies;
-    for (let b = 0; b < bodies.ids.high; b++) {
-      if (bodies.ids.alive[b] === 1 && bodies.particles[b].includes(slot)) {
-        throw new RangeError(`particle ${handle} belongs to body ${bodies.ids.handleOf(b)}: remove the body (removeBody) instead`);
-      }
-    }
+    const owner = ctx.bodies.ownerOf(slot);
+    if (owner >= 0) throw new RangeError(`particle ${handle} belongs to body ${ctx.bodies.ids.handleOf(owner)}: remove the body (removeBody) instead`);
     this.releaseParticle(handle, slot);
   }
 
@@ -554,6 +550,15 @@ export class World {
     oneOf('kind', kind, BODY_KINDS);
     if (!Array.isArray(particles) || particles.length === 0) throw new RangeError(`a body needs at least one particle, got ${String(particles)}`);
     const slots = Int32Array.from(particles, (h, k) => this.ctx.particleIds.slotOf(h, `particles[${k}]`));
+    // A particle is in one body at most: removing one body must not take another's particles, nor leave it holding
+    // slots that later particles reuse.
+    const listed = new Set<number>();
+    slots.forEach((slot, k) => {
+      const owner = this.ctx.bodies.ownerOf(slot);
+      if (owner >= 0) throw new RangeError(`particles[${k}] (${particles[k]}) already belongs to body ${this.ctx.bodies.ids.handleOf(owner)}`);
+      if (listed.has(slot)) throw new RangeError(`particles[${k}] (${particles[k]}) is listed twice`);
+      listed.add(slot);
+    });
     if (!Array.isArray(constraints)) throw new TypeError(`constraints must be a list of constraint handles, got ${describeValue(constraints)}`);
     constraints.forEach((h, k) => this.ctx.constraints.ids.slotOf(h, `constraints[${k}]`));
     knownNames('collider option', objectOf('collider options', collider), OPTION_NAMES.collider);

@@ -561,6 +561,35 @@ describe('builders check everything before they make anything', () => {
     createPolygon(world, { x: 8, y: 5, points: [0, 1, 2, 3, 4].map((k) => ({ x: Math.cos((2 * Math.PI * k) / 5), y: Math.sin((2 * Math.PI * k) / 5) })) });
   });
 
+  it('a particle is in one body at most; a refused springs soft body takes its hub back; an SVG-closed outline builds', () => {
+    const world = new World();
+    const a = world.addParticle({ x: 0, y: 0 });
+    const b = world.addParticle({ x: 1, y: 0 });
+    const one = world.addBody('particle', [a]);
+    throwsNaming(() => world.addBody('rope', [a, b]), RangeError, 'particles[0]', `already belongs to body ${one}`);
+    throwsNaming(() => world.addBody('rope', [b, b]), RangeError, 'particles[1]', 'listed twice');
+    const two = world.addBody('particle', [b]);
+    world.removeBody(one);
+    const c = world.addParticle({ x: 50, y: 50 }); // takes a's slot
+    expect(world.bodyParticleHandles(two)).to.deep.equal([b]);
+    world.removeParticle(c); // in no body
+    throwsNaming(() => world.removeParticle(b), RangeError, `body ${two}`);
+    // The owners survive a snapshot.
+    const copy = new World();
+    copy.restore(world.snapshot());
+    throwsNaming(() => copy.removeParticle(b), RangeError, `body ${two}`);
+
+    const tight = new World({ limits: { constraints: 20 } });
+    throwsNaming(() => createSoftBody(tight, { center: { x: 0, y: 0 }, radius: 1, segments: 16, model: 'springs' }), RangeError, 'too many constraints');
+    expect(tight.particleCount).to.equal(0);
+
+    const square = [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 2 }, { x: 0, y: 2 }, { x: 0, y: 0 }];
+    const frame = createPolygon(world, { x: 5, y: 5, points: square, model: 'particles' });
+    expect(frame.particles.length).to.equal(4);
+    const rigid = createPolygon(world, { x: 9, y: 5, points: square });
+    expect(world.bodyMassInfo(rigid.body).mass).to.be.closeTo(4, 1e-12);
+  });
+
   it('scene descriptions and bodies that are not objects or lists are TypeErrors naming what they are', () => {
     throwsNaming(() => buildScene(undefined as never), TypeError, 'scene description', 'undefined');
     throwsNaming(() => buildScene({} as never), TypeError, 'bodies', 'undefined');

@@ -332,6 +332,17 @@ export class MarkupSync implements SceneHost {
     return desc;
   }
 
+  /**
+   * Whether `sent` (a call's first argument: a keyed description, or anything else) is what the element of its key
+   * sent last. The engine answers in order, but a refusal of an older description can arrive after the element sent a
+   * newer one.
+   */
+  isLatest(sent: unknown): boolean {
+    if (sent === null || typeof sent !== 'object' || !('desc' in sent) || !('key' in sent)) return true;
+    const entry = this.entries.get((sent as KeyedBody).key);
+    return entry !== undefined && entry.sent === JSON.stringify((sent as KeyedBody).desc);
+  }
+
   /** The key of the body element with this id, or null. */
   private resolve(id: string): number | null {
     for (const [key, entry] of this.entries) if (entry.kind === 'body' && entry.element.id === id) return key;

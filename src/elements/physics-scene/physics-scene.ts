@@ -183,7 +183,8 @@ export class PhysicsSceneElement extends LitElement {
       settled: () => (this.loading = false),
     },
     failed: (message) => this.problems.report(this, '', '', message),
-    refused: (e) => this.problems.refused(e),
+    // A refusal of a description the element has replaced since (the reply was on its way) is not news.
+    refused: (e, sent) => this.markup.isLatest(sent) && this.problems.refused(e),
   });
   /** @internal The page's colour scheme, which the default colours follow. */
   private readonly colourScheme = new ColourSchemeController(this, {

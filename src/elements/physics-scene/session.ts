@@ -66,8 +66,8 @@ export interface SessionOptions {
   scene: SessionScene;
   /** An engine failure worth a `physics-error` on the scene ("engine: …"). */
   failed(message: string): void;
-  /** An element's description the engine refused. */
-  refused(error: HostError): void;
+  /** An element's description the engine refused; `sent`: the call's first argument (a keyed description, or a key). */
+  refused(error: HostError, sent: unknown): void;
 }
 
 /** How long a start waits for a frame before it goes on without one (a hidden page gets no animation frames). */
@@ -252,7 +252,7 @@ export class EngineSession implements ReactiveController, EngineCommands {
     if (!engine) return;
     const call = engine.api[method] as (...a: unknown[]) => Promise<HostError | null | void>;
     call(...args).then(
-      (refused) => refused && this.options.refused(refused),
+      (refused) => refused && this.options.refused(refused, args[0]),
       (error) => this.fail(error),
     );
   }

@@ -86,7 +86,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   if (!Array.isArray(o.points) || o.points.length < 3) {
     throw new RangeError(`points must be a list of at least 3 points, got ${Array.isArray(o.points) ? o.points.length : String(o.points)}`);
   }
-  let local = o.points.map((p, k) => point(`points[${k}]`, p));
+  let local = withoutRepeats(o.points.map((p, k) => point(`points[${k}]`, p)));
   // Parts and edge normals assume counter-clockwise order (positive area): reverse a clockwise outline.
   if (shoelace(local) < 0) local = local.reverse();
   const area = shoelace(local);
@@ -159,6 +159,21 @@ function frameVelocities(corners: Vec2[], o: RigidOptions): Vec2[] {
   const cx = corners.reduce((sum, c) => sum + c.x, 0) / corners.length;
   const cy = corners.reduce((sum, c) => sum + c.y, 0) / corners.length;
   return corners.map((c) => ({ x: speed('vx', vx - w * (c.y - cy)), y: speed('vy', vy + w * (c.x - cx)) }));
+}
+
+/**
+ * The outline without a point that repeats the one before it, nor a last point that repeats the first (an SVG outline
+ * closed by its first point): they add no corner, only a zero-length edge (the rigid model's cleanOutline drops them
+ * too). Later repeats go, so the points kept keep their places.
+ */
+function withoutRepeats(points: Vec2[]): Vec2[] {
+  const kept: Vec2[] = [];
+  for (const p of points) {
+    const last = kept[kept.length - 1];
+    if (!last || last.x !== p.x || last.y !== p.y) kept.push(p);
+  }
+  while (kept.length > 1 && kept[kept.length - 1].x === kept[0].x && kept[kept.length - 1].y === kept[0].y) kept.pop();
+  return kept;
 }
 
 /** Whether a counter-clockwise outline turns left (or goes straight) at every vertex. */

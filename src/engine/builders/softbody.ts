@@ -52,9 +52,10 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
     if (model === 'pressure') {
       constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance }));
     } else {
+      // Listed at once (after the ring, where addBody wants it), so a failed spring takes it back too.
       const hub = world.addParticle({ x: c.x, y: c.y, mass: each, radius: 0 });
-      for (let k = 0; k < segments; k++) constraints.push(world.addSpring(hub, particles[k], { stiffness, damping }));
       particles.push(hub);
+      for (let k = 0; k < segments; k++) constraints.push(world.addSpring(hub, particles[k], { stiffness, damping }));
     }
     return world.addBody('soft', particles, constraints, colliderOf(o, 'particles', true));
   });

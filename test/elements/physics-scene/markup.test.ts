@@ -86,6 +86,11 @@ describe('MarkupSync', () => {
     await changes();
     expect(r.sent.map(([m, args]) => [m, (args[0] as KeyedBody).key, ((args[0] as KeyedBody).desc as { radius: number }).radius])).to.deep.equal([['updateBody', key, 2]]);
     expect(r.resent).to.deep.equal([circle]);
+    // A refusal's call is checked against what the element sent last: the radius-2 description is current, the
+    // first one (radius 0.5) was replaced; calls without a description (an impulse's key) always count.
+    const latest = r.sent[0][1][0] as KeyedBody;
+    const replaced = { key, desc: { ...latest.desc, radius: 0.5 } };
+    expect([r.sync.isLatest(latest), r.sync.isLatest(replaced), r.sync.isLatest(key)]).to.deep.equal([true, false, true]);
     r.sent.length = 0;
     // A change of the drawing only (not of the body) sends nothing; the style follows.
     circle.setAttribute('fill', '#00ff00');
