@@ -3,7 +3,7 @@
 import type { Bounds } from './bounds.js';
 import { INTEGRATORS, type Integrator } from './integrate.js';
 import { checkBounds, type SubstepChoice, type Vec2, type WorldOptions } from './options.js';
-import { describeValue, finite, flag, integer, MAX_SPEED, MAX_STEP_SECONDS, MIN_STEP_SECONDS, nonNegative, oneOf, positive } from './validate.js';
+import { acceleration, describeValue, flag, integer, MAX_STEP_SECONDS, MIN_STEP_SECONDS, nonNegative, oneOf, positive } from './validate.js';
 
 /** See WorldOptions for what each setting does. */
 export interface StepSettings {
@@ -73,16 +73,6 @@ export const CHECK: { readonly [K in keyof StepSettings]: (value: StepSettings[K
   contactSlop: (v) => nonNegative('contactSlop', v),
   maxPushSpeed: (v) => positive('maxPushSpeed', v),
 };
-
-/**
- * A gravity component, within ±MAX_SPEED a second per second: a body falls at most MAX_SPEED faster each second (a
- * larger one overflows a step's bounding boxes and positions to Infinity).
- */
-function acceleration(name: string, v: unknown): number {
-  const a = finite(name, v);
-  if (a > MAX_SPEED || a < -MAX_SPEED) throw new RangeError(`${name} must be within ±1e9 (world units per second²), got ${describeValue(v)}`);
-  return a;
-}
 
 /** `substeps` when not 'auto': a whole number from 1 to 1000 (the error says 'auto' is allowed too). */
 function substepCountOption(v: unknown): number {

@@ -45,8 +45,20 @@ export const MAX_SPEED = 1e9;
 
 /** A finite speed (a velocity component, or one an impulse adds) within ±MAX_SPEED. */
 export function speed(name: string, value: unknown): number {
+  return withinMaxSpeed(name, value, 'give a speed within ±1e9 (world units or radians per second)');
+}
+
+/**
+ * A gravity component, within ±MAX_SPEED a second per second: a body falls at most MAX_SPEED faster each second (a
+ * larger one overflows a step's bounding boxes and positions to Infinity).
+ */
+export function acceleration(name: string, value: unknown): number {
+  return withinMaxSpeed(name, value, 'be within ±1e9 (world units per second²)');
+}
+
+function withinMaxSpeed(name: string, value: unknown, rule: string): number {
   const v = finite(name, value);
-  if (v > MAX_SPEED || v < -MAX_SPEED) throw new RangeError(`${name} must give a speed within ±1e9 (world units or radians per second), got ${show(value)}`);
+  if (v > MAX_SPEED || v < -MAX_SPEED) throw new RangeError(`${name} must ${rule}, got ${show(value)}`);
   return v;
 }
 

@@ -1,5 +1,5 @@
 import type { ColliderOptions, Handle, Vec2, World } from '../world.js';
-import { compliance, coordinate, describeValue, flag, knownNames, mass, MIN_MASS, objectOf, positive } from '../validate.js';
+import { compliance, coordinate, describeValue, flag, knownNames, mass, objectOf, positive } from '../validate.js';
 import { resolveCollider } from '../options.js';
 
 /** What every builder returns: the body and the handles of what it made. */
@@ -77,10 +77,8 @@ export function colliderOf(o: BodyOptions, shape: 'polygon' | 'particles', colli
 
 /** Per-particle mass from a total mass spread over n particles (`fallback`, found as `from` says, when not given). */
 export function massEach(name: string, total: number | undefined, n: number, fallback: number, from: string): number {
-  const each = (total === undefined ? fallback : positive(name, total)) / n;
   // Each particle must be heavy enough that its inverse mass stays finite.
-  if (!(each >= MIN_MASS)) mass(`${name} / ${n} particles`, each, total === undefined ? `its default (${from})` : '');
-  return each;
+  return mass(`${name} / ${n} particles`, (total === undefined ? fallback : positive(name, total)) / n, total === undefined ? `its default (${from})` : '');
 }
 
 /** A builder's compliance option (default 0: rigid), checked as the World's are. */
