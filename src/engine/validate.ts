@@ -62,17 +62,19 @@ function withinMaxSpeed(name: string, value: unknown, rule: string): number {
   return v;
 }
 
-/** What the speed checks of an impulse, and of a force over a step, call their components. */
-export const IMPULSE_SPEED = ['ix / mass', 'iy / mass'] as const;
-export const FORCE_SPEED = ['fx · timestep / mass', 'fy · timestep / mass'] as const;
+/** What the speed checks of an impulse (the velocity it leaves), and of the forces over a step, call their components. */
+export const IMPULSE_SPEED = ['vx + ix / mass', 'vy + iy / mass'] as const;
+export const FORCE_SPEED = ['fx · timestep / mass (with the forces given since the last step)', 'fy · timestep / mass (with the forces given since the last step)'] as const;
 
 /**
- * The speed a push (jx, jy) gives a body of inverse mass `invMass` at once (an impulse, `seconds` 1) or over `seconds`
- * (a force over a step), within ±MAX_SPEED in each direction; names[k] names component k ('ix / mass').
+ * The velocity a push (jx, jy) leaves a body of inverse mass `invMass`, each component within ±MAX_SPEED: (vx, vy) +
+ * (jx, jy) · invMass · seconds, where (vx, vy) is its velocity now (an impulse, `seconds` 1) or the speed the step's
+ * earlier forces add (a force, over `seconds`): pushes add up, so the limit counts what they add together.
+ * names[k] names component k ('vx + ix / mass').
  */
-export function pushSpeed(names: readonly [string, string], jx: number, jy: number, invMass: number, seconds = 1): void {
-  speed(names[0], jx * invMass * seconds);
-  speed(names[1], jy * invMass * seconds);
+export function pushSpeed(names: readonly [string, string], jx: number, jy: number, invMass: number, seconds = 1, vx = 0, vy = 0): void {
+  speed(names[0], vx + jx * invMass * seconds);
+  speed(names[1], vy + jy * invMass * seconds);
 }
 
 /** A finite number > 0. */

@@ -337,7 +337,7 @@ export class World {
     const i = this.particleIndex(handle);
     const [gx, gy] = [finite('fx', fx), finite('fy', fy)];
     // A sleeping body's inverse mass is parked at 0: the speed is checked against the one it wakes with.
-    pushSpeed(FORCE_SPEED, gx, gy, this.ctx.sleep.awakeInvMass(i, this.particles), this.settings.timestep);
+    pushSpeed(FORCE_SPEED, this.particles.fx[i] + gx, this.particles.fy[i] + gy, this.ctx.sleep.awakeInvMass(i, this.particles), this.settings.timestep);
     wakeParticle(this.ctx, i);
     this.particles.fx[i] += gx;
     this.particles.fy[i] += gy;
@@ -347,7 +347,7 @@ export class World {
   applyImpulse(handle: Handle, ix: number, iy: number): void {
     const i = this.particleIndex(handle);
     const [jx, jy] = [finite('ix', ix), finite('iy', iy)];
-    pushSpeed(IMPULSE_SPEED, jx, jy, this.ctx.sleep.awakeInvMass(i, this.particles));
+    pushSpeed(IMPULSE_SPEED, jx, jy, this.ctx.sleep.awakeInvMass(i, this.particles), 1, this.particles.vx[i], this.particles.vy[i]);
     wakeParticle(this.ctx, i);
     const w = this.particles.invMass[i];
     this.particles.vx[i] += jx * w;
@@ -642,7 +642,8 @@ export class World {
       const w = this.ctx.sleep.awakeInvMass(i, this.particles);
       if (w > 0) mass += 1 / w;
     }
-    pushSpeed(IMPULSE_SPEED, jx, jy, mass > 0 ? 1 / mass : 0);
+    // Every movable particle gains impulse / mass: each must stay within the speed limit.
+    for (const i of idx) if (this.ctx.sleep.awakeInvMass(i, this.particles) > 0) pushSpeed(IMPULSE_SPEED, jx, jy, mass > 0 ? 1 / mass : 0, 1, this.particles.vx[i], this.particles.vy[i]);
     this.wake(handle);
     applyImpulseByMass(this.particles, idx, jx, jy);
   }

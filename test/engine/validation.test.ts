@@ -184,6 +184,44 @@ describe('bad input', () => {
     expect(allFinite(w)).to.equal(true);
   });
 
+  it('pushes add up under the speed limit: a second force or impulse that takes the sum past ±1e9 is refused', () => {
+    const w = new World({ gravity: { x: 0, y: 0 } });
+    const box = createBox(w, { x: 0, y: 0, width: 1, height: 1, mass: 1 });
+    const p = w.addParticle({ x: 5, y: 0, mass: 1 });
+    const h = w.timestep;
+    // Each force alone gives 0.6e9 units/s over a step; two give 1.2e9.
+    w.applyForce(p, 0.6e9 / h, 0);
+    throwsNaming(() => w.applyForce(p, 0.6e9 / h, 0), RangeError, 'fx · timestep / mass', 'since the last step');
+    w.applyForce(p, -0.5e9 / h, 0); // the other way takes the sum down: fine
+    w.applyBodyForce(box.body, 0, 0.6e9 / h);
+    throwsNaming(() => w.applyBodyForce(box.body, 0, 0.6e9 / h), RangeError, 'fy · timestep / mass');
+    const inertia = w.bodyMassInfo(box.body).inertia;
+    w.applyBodyTorque(box.body, (0.6e9 * inertia) / h);
+    throwsNaming(() => w.applyBodyTorque(box.body, (0.6e9 * inertia) / h), RangeError, 'torque · timestep / inertia');
+    w.step();
+    expect(allFinite(w)).to.equal(true);
+    // Forces are cleared by the step: the same force is fine again.
+    w.applyForce(p, 0.6e9 / h, 0);
+    // Impulses are checked with the velocity they add to.
+    w.setVelocity(p, 0.9e9, 0);
+    throwsNaming(() => w.applyImpulse(p, 0.2e9, 0), RangeError, 'vx + ix / mass', '1100000000');
+    w.applyImpulse(p, -0.2e9, 0);
+    expect(w.getVelocity(p).x).to.be.closeTo(0.7e9, 1);
+    w.setBodyVelocity(box.body, 0, -0.9e9);
+    throwsNaming(() => w.applyBodyImpulse(box.body, 0, -0.2e9), RangeError, 'vy + iy / mass');
+    w.setBodyAngularVelocity(box.body, 0.9e9);
+    throwsNaming(() => w.applyBodyImpulse(box.body, 0, 0.2e9 * inertia, 1, 0), RangeError, 'the turn the impulse leaves');
+    // A body of particles: every particle keeps within the limit.
+    const blob = createSoftBody(w, { center: { x: 20, y: 0 }, radius: 1 });
+    const ring = w.bodyParticleHandles(blob.body);
+    for (const q of ring) w.setVelocity(q, 0.9e9, 0);
+    const mass = ring.reduce((m, q) => m + w.getMass(q), 0);
+    throwsNaming(() => w.applyBodyImpulse(blob.body, 0.2e9 * mass, 0), RangeError, 'vx + ix / mass');
+    w.applyBodyImpulse(blob.body, -0.2e9 * mass, 0);
+    w.step();
+    expect(allFinite(w)).to.equal(true);
+  });
+
   it('negative mass, length, radius or stiffness throw', () => {
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: -1 }), RangeError, 'mass', '-1');
     throwsNaming(() => world.addParticle({ x: 0, y: 0, mass: 0 }), RangeError, 'mass', '0');

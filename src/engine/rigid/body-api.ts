@@ -92,8 +92,15 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const seconds = impulse ? 1 : ctx.settings.timestep;
   // Checked against what the body wakes with (a sleeping body's inverse mass and inertia are parked at 0).
   const sleep = ctx.sleep;
-  pushSpeed(impulse ? IMPULSE_SPEED : FORCE_SPEED, jx, jy, sleep.awakeInvMass(r.i, p), seconds);
-  speed(`the turn the ${impulse ? 'impulse' : 'force'} adds`, ((px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx) * sleep.awakeInvInertia(r.i, p) * seconds);
+  // Pushes add up: an impulse is checked with the velocity it adds to, a force with the step's earlier forces.
+  const turn = (px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx;
+  if (impulse) {
+    pushSpeed(IMPULSE_SPEED, jx, jy, sleep.awakeInvMass(r.i, p), 1, p.vx[r.i], p.vy[r.i]);
+    speed('the turn the impulse leaves (angularVelocity + its turn / inertia)', p.omega[r.i] + turn * sleep.awakeInvInertia(r.i, p));
+  } else {
+    pushSpeed(FORCE_SPEED, p.fx[r.i] + jx, p.fy[r.i] + jy, sleep.awakeInvMass(r.i, p), seconds);
+    speed('the turn the force adds (with the step\'s earlier torques) · timestep / inertia', (p.torque[r.i] + turn) * sleep.awakeInvInertia(r.i, p) * seconds);
+  }
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);
@@ -102,7 +109,8 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
 export function applyBodyTorque(ctx: StepContext, body: Handle, torque: number): void {
   const r = rigidOf(ctx, body);
   const t = finite('torque', torque);
-  speed('torque · timestep / inertia', t * ctx.sleep.awakeInvInertia(r.i, ctx.particles) * ctx.settings.timestep);
+  // With the step's earlier torques: they add up.
+  speed('torque · timestep / inertia (with the torques given since the last step)', (ctx.particles.torque[r.i] + t) * ctx.sleep.awakeInvInertia(r.i, ctx.particles) * ctx.settings.timestep);
   ctx.particles.torque[r.i] += t;
   wake(ctx, r.slot);
 }
