@@ -106,7 +106,9 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
 
   /** The timer runs while the scene steps by itself (the scene calls this on every change, and stop() with false). */
   protected override runningChanged(running: boolean): void {
-    const on = running && this.setup !== null && this.ticks(this.setup);
+    // Not once removed: an update after the removal (stop() resets state) must not start the timer again, which
+    // would keep the element alive for good.
+    const on = running && this.isConnected && this.setup !== null && this.ticks(this.setup);
     if (on && this.tickTimer === null) {
       this.tickTimer = setInterval(() => {
         const now = this.stepCount;

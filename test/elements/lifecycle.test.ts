@@ -25,14 +25,17 @@ function countWorkers() {
   return { counts, restore: () => (window.Worker = Real) };
 }
 
-/** Tracks pending timeouts, animation frames and window/document listeners added from now on. */
+/** Tracks pending timeouts, intervals, animation frames and window/document listeners added from now on. */
 function trackGlobals() {
   const timers = new Set<number>();
+  const intervals = new Set<number>();
   const rafs = new Set<number>();
   const listeners = new Set<{ target: EventTarget; type: string; listener: unknown; capture: boolean; signal?: AbortSignal }>();
   const orig = {
     setTimeout: window.setTimeout,
     clearTimeout: window.clearTimeout,
+    setInterval: window.setInterval,
+    clearInterval: window.clearInterval,
     raf: window.requestAnimationFrame,
     caf: window.cancelAnimationFrame,
     add: EventTarget.prototype.addEventListener,
@@ -50,6 +53,15 @@ function trackGlobals() {
     if (id !== undefined) timers.delete(id);
     orig.clearTimeout.call(window, id);
   }) as typeof window.clearTimeout;
+  window.setInterval = ((fn: TimerHandler, ms?: number, ...rest: unknown[]) => {
+    const id: number = orig.setInterval.call(window, fn, ms, ...rest);
+    intervals.add(id);
+    return id;
+  }) as typeof window.setInterval;
+  window.clearInterval = ((id?: number) => {
+    if (id !== undefined) intervals.delete(id);
+    orig.clearInterval.call(window, id);
+  }) as typeof window.clearInterval;
   window.requestAnimationFrame = (cb) => {
     const id = orig.raf.call(window, (t) => {
       rafs.delete(id);
@@ -78,10 +90,12 @@ function trackGlobals() {
     return orig.remove.call(this, type, listener as EventListener, options as EventListenerOptions);
   };
   return {
-    pending: () => ({ timers: timers.size, frames: rafs.size, listeners: [...listeners].filter((l) => !l.signal?.aborted).map((l) => l.type) }),
+    pending: () => ({ timers: timers.size, intervals: intervals.size, frames: rafs.size, listeners: [...listeners].filter((l) => !l.signal?.aborted).map((l) => l.type) }),
     restore: () => {
       window.setTimeout = orig.setTimeout;
       window.clearTimeout = orig.clearTimeout;
+      window.setInterval = orig.setInterval;
+      window.clearInterval = orig.clearInterval;
       window.requestAnimationFrame = orig.raf;
       window.cancelAnimationFrame = orig.caf;
       EventTarget.prototype.addEventListener = orig.add;
@@ -162,6 +176,7 @@ describe('<physics-scene> lifecycle', () => {
       expect(w.counts.terminated).to.equal(w.counts.made);
       const pending = g.pending();
       expect(pending.timers, 'pending timeouts').to.equal(0);
+      expect(pending.intervals, 'running intervals').to.equal(0);
       expect(pending.frames, 'pending animation frames').to.equal(0);
       expect(pending.listeners, 'window/document listeners').to.deep.equal([]);
       // p5 keeps a static list of per-sketch hooks; the renderer takes its own off again.
@@ -169,6 +184,35 @@ describe('<physics-scene> lifecycle', () => {
     } finally {
       g.restore();
       w.restore();
+    }
+  });
+
+  it('removed <cloth-sim> and <ragdoll-sim> elements stop their behaviour timer and report not running', async () => {
+    const g = trackGlobals();
+    try {
+      for (const tag of ['cloth-sim', 'ragdoll-sim', 'cloth-sim', 'ragdoll-sim']) {
+        const box = document.createElement('div');
+        box.style.cssText = 'width: 320px; height: 200px;';
+        const preset = document.createElement(tag) as PhysicsSceneElement;
+        box.append(preset);
+        document.body.append(box);
+        await preset.ready;
+        // Running, its gusts or respawns tick on a timer.
+        try {
+          await waitFor(() => preset.running && g.pending().intervals > 0, `${tag} running with its timer`);
+        } finally {
+          box.remove();
+        }
+        await frames(2);
+        expect(preset.running, `${tag}.running once removed`).to.equal(false);
+        expect(preset.onScreen, `${tag}.onScreen once removed`).to.equal(false);
+      }
+      await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');
+      // Before the fix an update after the removal started the preset's timer again, for good: the element (its
+      // shadow tree, its listeners) was never freed.
+      expect(g.pending().intervals, 'intervals left running').to.equal(0);
+    } finally {
+      g.restore();
     }
   });
 

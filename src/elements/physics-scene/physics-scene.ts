@@ -299,7 +299,7 @@ export class PhysicsSceneElement extends LitElement {
     return this.visibility.running;
   }
 
-  /** True while the element is on screen and the page is visible (frames are drawn). */
+  /** True while the element is in the document, on screen and the page is visible (frames are drawn). */
   get onScreen(): boolean {
     return this.visibility.onScreen;
   }

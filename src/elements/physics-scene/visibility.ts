@@ -90,9 +90,10 @@ export class VisibilityController implements ReactiveController {
     host.addEventListener('keydown', this.onKeyDown);
   }
 
-  /** On screen and the page visible (frames are drawn). */
+  /** In the document, on screen and the page visible (frames are drawn). */
   get onScreen(): boolean {
-    return this.inView && this.pageVisible;
+    // Removed, it is on no screen: its last observer report (kept for a move back) no longer counts.
+    return this.host.isConnected && this.inView && this.pageVisible;
   }
 
   /** Not paused, on screen and the page visible (the engine steps). */
