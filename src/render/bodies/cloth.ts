@@ -9,7 +9,7 @@ export const cloth: BodyPainter = {
     if (fill) {
       ctx.beginPath();
       for (const k of group) {
-      const b = pen.topology.bodies[k];
+        const b = pen.topology.bodies[k];
         const idx = b.indices;
         const cols = b.columns ?? 2;
         const rows = b.rows ?? 2;
@@ -21,8 +21,8 @@ export const cloth: BodyPainter = {
             ctx.moveTo(X(idx[n]), Y(idx[n]));
             ctx.lineTo(X(idx[n + 1]), Y(idx[n + 1]));
             ctx.lineTo(X(idx[n + cols + 1]), Y(idx[n + cols + 1]));
+            // fill() closes each cell; closePath() would make the path quadratic in Chromium (see painter.ts).
             ctx.lineTo(X(idx[n + cols]), Y(idx[n + cols]));
-            ctx.closePath();
           }
         }
       }
@@ -32,7 +32,7 @@ export const cloth: BodyPainter = {
     if (stroke) {
       ctx.beginPath();
       for (const k of group) {
-      const b = pen.topology.bodies[k];
+        const b = pen.topology.bodies[k];
         const idx = b.indices;
         const cols = b.columns ?? 2;
         const rows = b.rows ?? 2;
