@@ -124,6 +124,42 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => box.y > 2.5 && far.y > 2.5, 'both boxes to fall');
   });
 
+  it('a pin\'s particle past the body\'s count, or one pinned already, is reported by the pin\'s attribute and the body\'s index', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    // An 11-particle rope (particles 0…10), unpinned; a 4-particle box of particles.
+    scene = await mount(
+      'width="10" height="10" paused',
+      `<physics-rope id="r" x1="2" y1="2" x2="6" y2="2" segments="10" pin="none"></physics-rope>
+       <physics-box id="b" model="particles" x="8" y="5" width="1" height="1"></physics-box>
+       <physics-pin id="far" body="r" particle="99" x="2" y="2"></physics-pin>
+       <physics-pin id="corner" body="b" particle="4" x="8" y="5"></physics-pin>
+       <physics-pin id="end" body="r" particle="10" x="6" y="2"></physics-pin>
+       <physics-pin id="again" body="r" particle="10" x="6" y="2"></physics-pin>
+       <physics-pin id="near" body="r" x="6.1" y="2"></physics-pin>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    await waitFor(() => errors.length >= 4, 'the four refused pins reported');
+    const seen = errors.map((e) => [e.element.id, e.attribute, e.value]);
+    expect(seen).to.have.deep.members([
+      ['far', 'particle', '99'],
+      ['corner', 'particle', '4'],
+      ['again', 'particle', '10'],
+      ['near', 'x', '6.1'],
+    ]);
+    const message = (id: string) => errors.find((e) => e.element.id === id)!.message;
+    expect(message('far')).to.include("less than the body's particle count (11), got 99");
+    expect(message('corner')).to.include("less than the body's particle count (4), got 4");
+    // The body's own index (10), not the engine's.
+    expect(message('again')).to.include('not rigidly pinned already').and.include('got 10');
+    expect(message('near')).to.include('particle 10');
+    expect(warnings.length).to.equal(4);
+    // The one good pin holds the rope's end; nothing else was pinned.
+    const d = await scene.diagnostics();
+    expect(d.linkCount).to.equal(1);
+  });
+
   it('a body the engine refuses is reported, and leaves the error box once its markup is fixed', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];

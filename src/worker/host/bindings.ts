@@ -328,8 +328,16 @@ export class Bindings {
       return;
     }
     const idx = w.bodyParticleIndices(a.handle!);
-    const i = d.particle !== undefined ? idx[Math.max(0, Math.min(idx.length - 1, d.particle))] : this.nearest(idx, d.x, d.y);
-    l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
+    if (d.particle !== undefined && d.particle >= idx.length) throw new RangeError(`particle must be less than the body's particle count (${idx.length}), got ${d.particle}`);
+    const i = d.particle !== undefined ? idx[d.particle] : this.nearest(idx, d.x, d.y);
+    try {
+      l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
+    } catch (error) {
+      // The engine names its own particle index; the page knows the body's, and which attribute chose it.
+      if (!(error instanceof RangeError && error.message.includes('already rigidly pinned'))) throw error;
+      const chosen = d.particle !== undefined ? `got ${d.particle}` : `x, y pick the nearest, particle ${idx.indexOf(i)}`;
+      throw new RangeError(`${d.particle !== undefined ? 'particle' : 'x'} must choose a particle that is not rigidly pinned already (by another pin or the body's own pins), ${chosen}`);
+    }
     l.drawn = { a: { body: -1, particle: i, x: 0, y: 0 }, b: world, pivot: true };
   }
 
