@@ -220,6 +220,10 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   for (const name of FIELDS.context.snapshotted) {
     if (s[name] == null) throw new TypeError(`snapshot has no ${name}: it was not made by World.snapshot() of this version`);
   }
+  const columns = (s.particles as { columns?: unknown }).columns;
+  if (!Array.isArray(columns) || !columns.every((c) => ArrayBuffer.isView(c))) {
+    throw new TypeError('snapshot holds no typed arrays where World.snapshot() puts them (JSON.stringify turns them into plain objects): keep the snapshot object, or copy it with structuredClone()');
+  }
   restoreSettings(ctx, s.settings);
   ctx.time = nonNegative('snapshot time', s.time);
   ctx.stepCount = integer('snapshot stepCount', s.stepCount, 0);

@@ -389,14 +389,29 @@ export class PhysicsSceneElement extends LitElement {
     return engine ? engine.api.stateHash() : '';
   }
 
-  /** The whole simulation state as plain data. */
+  /**
+   * The whole simulation state as data: objects and typed arrays, which structuredClone(), postMessage and IndexedDB
+   * keep, and JSON does not. restore() takes it back while the markup is as it was.
+   */
   async snapshot(): Promise<HostSnapshot> {
     return (await this.session.running()).api.snapshot();
   }
 
-  /** Puts back a state from snapshot() (of this scene's markup). */
+  /**
+   * Puts back a state from snapshot(), of this scene with its markup as it is now (the same bodies and links, the same
+   * attributes but colours). Rejects with a TypeError for anything but a snapshot (JSON loses its typed arrays: keep
+   * the object, or copy it with structuredClone()) and a RangeError for another scene's snapshot, or one taken before
+   * the markup changed; the simulation is then left as it was.
+   */
   async restore(snapshot: HostSnapshot): Promise<void> {
     const engine = await this.session.whenReady();
+    const s = snapshot as Partial<HostSnapshot> | null;
+    if (s === null || typeof s !== 'object' || !Array.isArray(s.bodies) || !Array.isArray(s.links) || typeof s.world !== 'object' || s.world === null || typeof s.params !== 'object' || s.params === null) {
+      const got = s === null || typeof s !== 'object' ? String(s) : `an object without its ${['world', 'bodies', 'links', 'params'].filter((k) => typeof (s as Record<string, unknown>)[k] !== 'object' || (s as Record<string, unknown>)[k] === null).join(', ') || 'bodies and links as arrays'}`;
+      throw new TypeError(`restore() takes an object snapshot() gave, got ${got}`);
+    }
+    const mismatch = engine ? this.markup.mismatch(snapshot) : null;
+    if (mismatch) throw new RangeError(mismatch);
     await engine?.api.restore(snapshot);
     this.recovery.keepSnapshot();
   }

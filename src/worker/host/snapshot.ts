@@ -14,8 +14,9 @@ export function takeSnapshot(b: Bindings, settings: HostSettings, topology: numb
 
 /** Puts the snapshot back; with a frame of the snapshot's topology, the frame's positions and velocities on top. */
 export function restoreSnapshot(b: Bindings, settings: HostSettings, s: HostSnapshot, frame?: FramePatch | null): void {
-  settings.params = copyParams(s.params);
+  // The world first: it refuses a bad snapshot before anything has changed.
   b.world.restore(s.world as WorldSnapshot);
+  settings.params = copyParams(s.params);
   b.restore(s);
   if (frame) overlay(b, s, frame);
 }
