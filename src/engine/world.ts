@@ -595,6 +595,7 @@ export class World {
       const h = ctx.particleIds.handleOf(i);
       if (ctx.particleIds.isValid(h)) this.releaseParticle(h, i);
     }
+    ctx.eventTracker.bodyRemoved(slot, ctx.bodyHandleOf);
     ctx.bodies.remove(handle);
     ctx.rigidShapes.clear(slot);
     ctx.colliders.kind[slot] = ColliderKind.None;

@@ -236,6 +236,7 @@ export class EngineHost implements EngineApi {
   #afterStep(): void {
     const w = this.#world;
     if (this.#settings.params.events) this.#events.collect(w, this.#bindings);
+    this.#bindings.forgetRetired();
     // A torn cloth is drawn without its broken links: the topology says which.
     if (w.breaks.count > 0) this.#frames.invalidate();
   }

@@ -35,6 +35,46 @@ describe('<physics-scene> collision events', () => {
     expect(off.eventsSent).to.be.at.least(1);
   });
 
+  it('a touching body that is removed or rebuilt ends its pairs, naming its element; a reset ends every pair, then they begin again', async () => {
+    scene = await mount('width="10" height="10" gravity="0 20" paused collision-events', `
+      <physics-box id="floor" x="5" y="9.5" width="10" height="1" static></physics-box>
+      <physics-box id="crate" x="3" y="7" width="1" height="1"></physics-box>
+      <physics-box id="chest" x="7" y="7" width="1" height="1"></physics-box>`);
+    const s = scene;
+    const log: string[] = [];
+    const name = (el: Element | null) => el?.id ?? 'null';
+    const record = (kind: string) => (e: CustomEvent<PhysicsCollisionDetail>) => log.push(`${kind} ${[name(e.detail.a), name(e.detail.b)].sort().join(' ')}`);
+    s.addEventListener('physics-collision', record('begin'));
+    s.addEventListener('physics-collision-end', record('end'));
+    const tally = (entry: string) => log.filter((l) => l === entry).length;
+    await stepUntil(s, () => tally('begin crate floor') >= 1 && tally('begin chest floor') >= 1, 'both boxes touching the floor');
+    await s.step(30);
+    // At rest on the floor now (a landing may hop): counts from here on.
+    const since = (entry: string) => {
+      const base = tally(entry);
+      return () => tally(entry) - base;
+    };
+    const [crateEnds, chestEnds, chestBegins] = [since('end crate floor'), since('end chest floor'), since('begin chest floor')];
+    // Removed: its pair ends in the next step's events, naming the element that left.
+    s.querySelector('#crate')!.remove();
+    await stepUntil(s, () => crateEnds() === 1, 'the removed crate\'s pair to end');
+    // Rebuilt (a new size is a new engine body): its pair ends, and begins again as it still rests on the floor.
+    s.querySelector('#chest')!.setAttribute('width', '1.2');
+    await stepUntil(s, () => chestEnds() === 1 && chestBegins() === 1, 'the rebuilt chest to end and begin again');
+    // A reset: every pair the page was told of ends at once, and begins again from the markup (the chest lands again).
+    await s.reset();
+    expect(chestEnds()).to.equal(2);
+    await stepUntil(s, () => chestBegins() >= 2, 'the chest to land again after the reset');
+    await s.step(30);
+    // Begins and ends alternate per pair; nothing ends twice; the crate is not heard of again.
+    for (const pair of ['chest floor', 'crate floor']) {
+      const seq = log.filter((l) => l.endsWith(pair)).map((l) => l.split(' ')[0]);
+      seq.forEach((kind, k) => expect(kind, `${pair} event ${k}: ${seq.join(', ')}`).to.equal(k % 2 === 0 ? 'begin' : 'end'));
+    }
+    expect(crateEnds()).to.equal(1);
+    expect(log.filter((l) => l.includes('null'))).to.deep.equal([]);
+  });
+
   it('every physics-* event leaves shadow roots (bubbles, composed) and is typed on the document without a cast', async () => {
     const host = document.createElement('div');
     host.style.cssText = 'width: 300px; height: 300px';

@@ -21,6 +21,12 @@ export class CollisionEventsController implements ReactiveController {
   private listeners = 0;
   /** Whether the engine was last told to collect events. */
   private on = false;
+  /**
+   * The pairs touching, as the page was told (by their keys, "lo hi"), with their elements: an end names the elements
+   * its begin named, also once a body element has left the scene (the engine ends a removed body's pairs a step
+   * later, when its key names no element any more).
+   */
+  private readonly touching = new Map<string, [Element | null, Element | null]>();
 
   constructor(
     private readonly host: ReactiveControllerHost & EventTarget,
@@ -58,9 +64,33 @@ export class CollisionEventsController implements ReactiveController {
   readonly dispatch = (data: Float64Array, count: number): void => {
     for (let k = 0; k < count; k++) {
       const o = k * EVENT;
-      const a = this.options.elementOf(data[o + 1]) ?? null;
-      const b = this.options.elementOf(data[o + 2]) ?? null;
-      firePhysicsEvent(this.host, data[o] === 0 ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] });
+      const [ka, kb] = [data[o + 1], data[o + 2]];
+      const pair = ka < kb ? `${ka} ${kb}` : `${kb} ${ka}`;
+      const begin = data[o] === 0;
+      const told = this.touching.get(pair);
+      let a = this.options.elementOf(ka) ?? null;
+      let b = this.options.elementOf(kb) ?? null;
+      if (begin) this.touching.set(pair, ka < kb ? [a, b] : [b, a]);
+      else if (told) {
+        [a, b] = ka < kb ? told : [told[1], told[0]];
+        this.touching.delete(pair);
+      }
+      firePhysicsEvent(this.host, begin ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] });
     }
   };
+
+  /**
+   * The engine starts its pairs afresh (a reset, a restore, a restart): every pair the page was told is touching ends
+   * now, and those still touching begin again with the next events.
+   */
+  endAll(): void {
+    const pairs = [...this.touching.values()];
+    this.touching.clear();
+    for (const [a, b] of pairs) firePhysicsEvent(this.host, 'physics-collision-end', { a, b, normal: { x: 0, y: 0 }, depth: 0 });
+  }
+
+  /** The scene stopped: nothing is touching any more, and no one is told (the elements are no longer its). */
+  forgetAll(): void {
+    this.touching.clear();
+  }
 }

@@ -174,6 +174,8 @@ export class PhysicsSceneElement extends LitElement {
         this.loading = false;
         this.loaded = true;
         this.recovery.keepSnapshot();
+        // A restart's world tells its touching pairs anew.
+        this.collisions.endAll();
         for (const e of errors) this.problems.refused(e);
         // Visibility may have changed while the scene loaded.
         this.syncRunning();
@@ -373,6 +375,7 @@ export class PhysicsSceneElement extends LitElement {
     const engine = await this.session.whenReady();
     if (!engine) return;
     await engine.api.reset();
+    this.collisions.endAll();
     await engine.synced(0);
     this.recovery.keepSnapshot();
   }
@@ -413,6 +416,7 @@ export class PhysicsSceneElement extends LitElement {
     const mismatch = engine ? this.markup.mismatch(snapshot) : null;
     if (mismatch) throw new RangeError(mismatch);
     await engine?.api.restore(snapshot);
+    this.collisions.endAll();
     this.recovery.keepSnapshot();
   }
 
@@ -653,6 +657,7 @@ export class PhysicsSceneElement extends LitElement {
     this.loading = true;
     this.loaded = false;
     this.problems.clear();
+    this.collisions.forgetAll();
     this.pointer.cancel();
     this.keyboard.cancel();
     this.markup.reset();

@@ -60,6 +60,8 @@ export class EventTracker {
    * first read on, every step's events are collected.
    */
   active = false;
+  /** End events of pairs whose body was removed since the last step: handle a, handle b, … (reported next step). */
+  private ended: number[] = [];
 
   /** Starts collecting: the pairs touching now are taken as already touching (no begin for them next step). */
   activate(c: ContactPairs, r: ContactPairs): void {
@@ -71,12 +73,34 @@ export class EventTracker {
   }
 
   /**
+   * Body `slot` (handle `handleOf(slot)` until now) is being removed: its touching pairs end, reported with the next
+   * step's events under the handles they had (a page tracking which bodies touch would otherwise keep them touching),
+   * and leave the table (a new body in the same slot starts afresh).
+   */
+  bodyRemoved(slot: number, handleOf: (slot: number) => number): void {
+    if (!this.active) return;
+    const table = this.current;
+    for (let h = 0; h < table.keys.length; h++) {
+      const key = table.keys[h];
+      if (key < 0) continue;
+      const lo = Math.floor(key / SLOTS);
+      const hi = key - lo * SLOTS;
+      if (lo !== slot && hi !== slot) continue;
+      this.ended.push(handleOf(lo), handleOf(hi));
+      // A tombstone: lookups probe past it, and no pair matches it.
+      table.keys[h] = -2;
+    }
+  }
+
+  /**
    * The contacts of both tables that acted this step (`touched`) give the touching body pairs; `handleOf` maps a
    * body slot to its handle. Contacts with the world's bounds (body −1) make no events. Pairs whose body was removed
-   * end silently (their handles are gone).
+   * end first, under the handles they had (bodyRemoved).
    */
   update(c: ContactPairs, r: ContactPairs, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
+    for (let k = 0; k < this.ended.length; k += 2) out.push(1, this.ended[k], this.ended[k + 1], 0, 0, 0);
+    this.ended.length = 0;
     [this.current, this.previous] = [this.previous, this.current];
     const cur = this.current;
     cur.reset(c.count + r.count);
@@ -84,7 +108,7 @@ export class EventTracker {
     this.collect(r, 1);
     for (let h = 0; h < cur.keys.length; h++) {
       const key = cur.keys[h];
-      if (key === -1 || this.previous.find(key) >= 0) continue;
+      if (key < 0 || this.previous.find(key) >= 0) continue;
       // Which table and row: value = row · 2 + table.
       const v = cur.values[h];
       const t = v % 2 === 0 ? c : r;
@@ -94,7 +118,7 @@ export class EventTracker {
     const prev = this.previous;
     for (let h = 0; h < prev.keys.length; h++) {
       const key = prev.keys[h];
-      if (key === -1 || cur.find(key) >= 0) continue;
+      if (key < 0 || cur.find(key) >= 0) continue;
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
       if (!alive(lo) || !alive(hi)) continue;
@@ -124,5 +148,6 @@ export class EventTracker {
   clear(): void {
     this.current.reset(0);
     this.previous.reset(0);
+    this.ended.length = 0;
   }
 }

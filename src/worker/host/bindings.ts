@@ -75,6 +75,8 @@ export class Bindings {
   readonly bodies = new Map<number, BodyRecord>();
   readonly links = new Map<number, LinkRecord>();
   readonly #keys = new Map<Handle, number>();
+  /** Handles of bodies removed or rebuilt since the last step, with their keys: that step's end events name them. */
+  readonly #retired = new Map<Handle, number>();
   readonly #settings: HostSettings;
   readonly #changed: () => void;
 
@@ -87,7 +89,12 @@ export class Bindings {
 
   /** The key of the body with this handle, or -1. */
   keyOf(handle: Handle): number {
-    return this.#keys.get(handle) ?? -1;
+    return this.#keys.get(handle) ?? this.#retired.get(handle) ?? -1;
+  }
+
+  /** A step's events are read: the handles retired before it are named no more. */
+  forgetRetired(): void {
+    if (this.#retired.size > 0) this.#retired.clear();
   }
 
   /** Takes these descriptions instead of the current ones and builds them into a fresh world. */
@@ -110,6 +117,7 @@ export class Bindings {
       this.world = new World(this.#settings.forWorld());
     }
     this.#keys.clear();
+    this.#retired.clear();
     for (const r of this.bodies.values()) {
       r.handle = null;
       const error = this.#build(r);
@@ -232,6 +240,7 @@ export class Bindings {
     this.bodies.clear();
     this.links.clear();
     this.#keys.clear();
+    this.#retired.clear();
     for (const b of s.bodies) {
       const r = bodyRecord(b.key, b.desc);
       if (b.handle >= 0 && this.world.hasBody(b.handle)) {
@@ -280,7 +289,11 @@ export class Bindings {
 
   #unbuild(r: BodyRecord): void {
     if (r.handle !== null && this.world.hasBody(r.handle)) this.world.removeBody(r.handle);
-    if (r.handle !== null) this.#keys.delete(r.handle);
+    if (r.handle !== null) {
+      // The engine ends the body's touching pairs in the next step's events, under this handle.
+      this.#retired.set(r.handle, r.key);
+      this.#keys.delete(r.handle);
+    }
     r.handle = null;
   }
 

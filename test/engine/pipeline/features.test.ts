@@ -90,6 +90,44 @@ describe('pipeline: events', () => {
     expect(begins.filter((b) => b === resting.body)).to.have.length(0);
     expect(ends).to.include(resting.body);
   });
+
+  it('a body removed while touching ends its pairs in the next step\'s events, under its old handle; a new body in its slot begins afresh', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    const ground = createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true });
+    const boxes = [-3, 0, 3].map((x) => createBox(world, { x, y: -0.5, width: 1, height: 1 }));
+    // Two boxes side by side, touching each other too.
+    const pair = createBox(world, { x: 0, y: -1.5, width: 1, height: 1 });
+    const events = () => {
+      const e = world.events;
+      return Array.from({ length: e.count }, (_, i) => [e.type[i], ...[e.bodyA[i], e.bodyB[i]].sort((p, q) => p - q)]);
+    };
+    for (let k = 0; k < 30; k++) {
+      world.step();
+      events();
+    }
+    const sorted = (a: number, b: number) => [a, b].sort((p, q) => p - q);
+    const middle = boxes[1].body;
+    world.removeBody(middle);
+    // No step yet: the end comes with the next step's events, first, under the removed body's handle.
+    world.step();
+    expect(events()).to.have.deep.members([
+      [1, ...sorted(ground.body, middle)],
+      [1, ...sorted(middle, pair.body)],
+    ]);
+    // Nothing more about it; the box that rested on it falls, lands on the ground (a begin), and no end repeats.
+    const later: number[][] = [];
+    for (let k = 0; k < 60; k++) {
+      world.step();
+      later.push(...events());
+    }
+    expect(later.filter((e) => e.includes(middle))).to.deep.equal([]);
+    expect(later).to.deep.include([0, ...sorted(ground.body, pair.body)]);
+    // A new body takes the freed slot at once: it touches the ground from its first step, and begins (the old pair's
+    // end was not taken for it).
+    const again = createBox(world, { x: 6, y: -0.5, width: 1, height: 1 });
+    world.step();
+    expect(events()).to.deep.include([0, ...sorted(ground.body, again.body)]);
+  });
 });
 
 describe('pipeline: queries', () => {
