@@ -5,7 +5,7 @@ import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { finite, MIN_MASS, speed } from '../engine/validate.js';
 import type { BodyStyle } from '../render/renderer.js';
-import { Checker, numberAttribute, toDegrees, type Problem } from './checks.js';
+import { Checker, numberAttribute, shownValue, toDegrees, type Problem } from './checks.js';
 import type { ColourScheme } from './physics-scene/scheme.js';
 import type { SceneHost, SceneParent } from './scene-host.js';
 
@@ -161,17 +161,31 @@ export abstract class PhysicsBodyElement extends LitElement {
     for (const name of names) check.number(name, declared[name]);
   }
 
-  protected material(check: Checker, out: Record<string, unknown>, area: number | null): void {
+  /**
+   * Mass, density, friction, restitution. With an `area`, a mass from density × area (density 1 when not given) must
+   * leave each of the body's `particles` (1 for a rigid body) at least the engine's smallest mass: too small, it is
+   * reported on `density` when written, else on `size` (the attribute that makes the area), and false returned: the
+   * body is left out, as the engine would refuse it.
+   */
+  protected material(check: Checker, out: Record<string, unknown>, area: number | null, size = '', particles = 1): boolean {
     const mass = check.number('mass', this.mass, { positive: true, min: MIN_MASS });
     const density = check.number('density', this.density, { positive: true });
     if (mass !== undefined) out.mass = mass;
-    else if (density !== undefined && area !== null && area > 0) out.mass = density * area;
+    else if (area !== null && !this.isStatic && !((density ?? 1) * area >= MIN_MASS * particles && Number.isFinite((density ?? 1) * area))) {
+      const total = (density ?? 1) * area;
+      const blame = density !== undefined || !size ? 'density' : size;
+      const each = particles > 1 ? `, ${total / particles} for each of its ${particles} particles` : '';
+      const rule = Number.isFinite(total) ? `below the smallest, ${MIN_MASS}${particles > 1 ? ' each' : ''}: set mass, or a larger size` : 'not a finite number: set mass';
+      check.fail(blame, shownValue(this, blame), `gives a mass of ${total} (density × area${each}), ${rule}`);
+      return false;
+    } else if (density !== undefined && area !== null && area > 0) out.mass = density * area;
     if (this.isStatic) out.static = true;
     const friction = check.number('friction', this.friction, { min: 0 });
     if (friction !== undefined) out.friction = friction;
     const restitution = check.number('restitution', this.restitution, { min: 0, max: 1 });
     if (restitution !== undefined) out.restitution = restitution;
     if (this.id) out.id = this.id;
+    return true;
   }
 
   protected override render() {

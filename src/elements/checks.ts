@@ -53,6 +53,35 @@ export const numberAttribute = {
   toAttribute: (value: unknown): unknown => value,
 };
 
+/** Lit's declared properties of an element's class, by property name. */
+type Declared = Map<PropertyKey, { attribute?: string | boolean; type?: unknown; converter?: unknown }>;
+
+/** The property name behind `attribute` on this element (Lit's declaration), or undefined. */
+function declaredProperty(element: Element, attribute: string): { name: PropertyKey; type?: unknown; converter?: unknown } | undefined {
+  const declared = (element.constructor as { elementProperties?: Declared }).elementProperties;
+  for (const [name, o] of declared ?? []) {
+    if ((typeof o.attribute === 'string' ? o.attribute : String(name).toLowerCase()) === attribute) return { name, type: o.type, converter: o.converter };
+  }
+  return undefined;
+}
+
+/** Whether the element may read `attribute` as a number: all but plain string attributes (Lit's default: no type, no converter). */
+function numberTyped(element: Element, attribute: string): boolean {
+  const p = declaredProperty(element, attribute);
+  return !(p && (p.type === String || (p.type === undefined && p.converter === undefined)));
+}
+
+/**
+ * The value of `attribute` as a message shows it: the text written, or what a script set the property to since
+ * (`box.angle = 1e308` after `angle="0"`); '' when neither is there.
+ */
+export function shownValue(element: Element, attribute: string): string {
+  const p = declaredProperty(element, attribute);
+  const value = p ? (element as unknown as Record<PropertyKey, unknown>)[p.name] : undefined;
+  if (element.getAttribute(attribute) === null && (value === undefined || value === null)) return '';
+  return new Checker(element).raw(attribute, value);
+}
+
 export class Checker {
   readonly problems: Problem[] = [];
 
@@ -66,7 +95,9 @@ export class Checker {
     const text = this.element.getAttribute(attribute);
     if (text === null) return String(value);
     if (text.trim() === '' || value === undefined || value === null) return text;
-    const read = typeof value === 'number' ? numberAttribute.fromAttribute(text) : text;
+    // As the property reads its attribute: a number attribute "abc" reads NaN (the text is what was refused), a
+    // string attribute such as `fill` does not (a NaN there was set by a script).
+    const read = typeof value === 'number' && numberTyped(this.element, attribute) ? numberAttribute.fromAttribute(text) : text;
     return Object.is(read, value) ? text : String(value);
   }
 
@@ -170,7 +201,9 @@ export function describeElement(el: Element): string {
 }
 
 /** Degrees (markup) → radians (engine). */
-export const toRadians = (deg: number): number => (deg * Math.PI) / 180;
+// (deg · π) / 180 as it always was (the golden hashes hold its doubles), but not past the largest double: 1e308 degrees
+// is a finite angle.
+export const toRadians = (deg: number): number => (Number.isFinite(deg * Math.PI) ? (deg * Math.PI) / 180 : deg * (Math.PI / 180));
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;
 
 /** Attributes any element may carry (HTML's global attributes that a page puts on an embed). */

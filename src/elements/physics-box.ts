@@ -21,8 +21,8 @@ export class PhysicsBoxElement extends PhysicsShapeElement {
     const check = new Checker(this);
     const width = check.number('width', this.width, { positive: true, fallback: 1 })!;
     const height = check.number('height', this.height, { positive: true, fallback: 1 })!;
-    const desc = { type: 'box', width, height, ...this.common(check, width * height) } as BodyDescription;
-    return { desc, problems: check.problems };
+    const common = this.common(check, width * height, width <= height ? 'width' : 'height', 4);
+    return { desc: common && ({ type: 'box', width, height, ...common } as BodyDescription), problems: check.problems };
   }
 
   protected defaultStyle() {

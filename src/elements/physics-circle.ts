@@ -18,9 +18,9 @@ export class PhysicsCircleElement extends PhysicsShapeElement {
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
     const radius = check.number('radius', this.radius, { positive: true, fallback: 0.5 });
-    const common = this.common(check, Math.PI * (radius ?? 0.5) ** 2);
+    const common = this.common(check, Math.PI * (radius ?? 0.5) ** 2, 'radius', 1);
     // A negative or zero radius cannot make a ball: report it and leave the body out.
-    if (check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
+    if (!common || check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
     return { desc: { type: 'circle', radius, ...common } as BodyDescription, problems: check.problems };
   }
 

@@ -32,8 +32,8 @@ export class PhysicsPolygonElement extends PhysicsShapeElement {
     } else if (this.points === undefined) {
       check.fail('points', '', 'is required: "x,y x,y x,y …"');
     }
-    const common = this.common(check, points ? Math.abs(area(points)) : null);
-    if (!points) return { desc: null, problems: check.problems };
+    const common = this.common(check, points ? Math.abs(area(points)) : null, 'points', points?.length ?? 3);
+    if (!points || !common) return { desc: null, problems: check.problems };
     return { desc: { type: 'polygon', points, ...common } as BodyDescription, problems: check.problems };
   }
 

@@ -34,8 +34,9 @@ export class PhysicsSoftbodyElement extends PhysicsBodyElement {
     const compliance = check.number('compliance', this.compliance, COMPLIANCE);
     if (compliance !== undefined) out.compliance = compliance;
     this.unused(check, 'angle');
-    this.material(check, out, Math.PI * radius * radius);
-    if (check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
+    // The engine spreads the mass over the ring's particles (the hub of the springs model takes a share as big).
+    const weighed = this.material(check, out, Math.PI * radius * radius, 'radius', segments);
+    if (!weighed || check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 

@@ -29,16 +29,20 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
    */
   @property({ attribute: 'angular-velocity', type: Number, converter: numberAttribute }) angularVelocity?: number;
 
-  /** Position, angle, motion and material fields of a shape of this area. */
-  protected common(check: Checker, area: number | null): Record<string, unknown> {
+  /**
+   * Position, angle, motion and material fields of a shape of this area (`size`: the attribute that makes it, which a
+   * mass too small is reported on; `corners`: its particles in the particle model); null when it can have no mass.
+   */
+  protected common(check: Checker, area: number | null, size: string, corners: number): Record<string, unknown> | null {
     const out: Record<string, unknown> = {};
     const { x, y, angle } = this.declared;
     out.x = check.number('x', x, { fallback: 0 });
     out.y = check.number('y', y, { fallback: 0 });
     out.angle = toRadians(check.number('angle', angle, { fallback: 0 })!);
-    this.material(check, out, area);
+    const weighed = this.material(check, out, area, size, this.model === 'particles' ? corners : 1);
     this.motion(check, out);
-    return out;
+    // No mass the engine can take: the body is left out (its problem reported).
+    return weighed ? out : null;
   }
 
   private motion(check: Checker, out: Record<string, unknown>): void {

@@ -160,6 +160,47 @@ describe('<physics-scene> bad markup', () => {
     expect(d.linkCount).to.equal(1);
   });
 
+  it('errors name the attribute that is at fault and the value that was refused: a script\'s value, a size too small for a mass, a share of mass per particle', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="10" height="10" paused',
+      `<physics-box id="painted" x="2" y="2" width="1" height="1" fill="#3d7dd8"></physics-box>
+       <physics-box id="turned" x="4" y="2" width="1" height="1" angle="0"></physics-box>
+       <physics-box id="tiny" x="6" y="2" width="1e-300" height="1"></physics-box>
+       <physics-box id="dense" x="8" y="2" width="1e9" height="1" density="1e300"></physics-box>
+       <physics-circle id="speck" x="2" y="5" radius="1e-7" density="1e-2"></physics-circle>
+       <physics-softbody id="small" x="5" y="5" radius="1e-6" segments="4096"></physics-softbody>
+       <physics-softbody id="light" x="8" y="6" radius="1" segments="4096" mass="1e-10"></physics-softbody>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    await waitFor(() => errors.length >= 5, 'the five bodies reported');
+    const painted = scene.querySelector<PhysicsBoxElement>('#painted')!;
+    (painted as unknown as { fill: unknown }).fill = NaN;
+    (scene.querySelector<PhysicsBoxElement>('#turned') as unknown as { angle: number }).angle = 1e308;
+    await waitFor(() => errors.length >= 6, 'the script\'s fill reported');
+    await scene.step(2);
+    const seen = errors.map((e) => [e.element.id, e.attribute, e.value]);
+    expect(seen).to.have.deep.members([
+      ['tiny', 'width', '1e-300'],
+      ['dense', 'density', '1e300'],
+      ['speck', 'density', '1e-2'],
+      ['small', 'radius', '1e-6'],
+      ['light', 'mass', '1e-10'],
+      // What the script set, not the attribute it replaced.
+      ['painted', 'fill', 'NaN'],
+    ]);
+    const message = (id: string) => errors.find((e) => e.element.id === id)!.message;
+    expect(message('tiny')).to.include('gives a mass of 1e-300').and.include('below the smallest, 1e-12');
+    expect(message('dense')).to.include('not a finite number');
+    expect(message('small')).to.include('for each of its 4096 particles');
+    // 1e308 degrees is a finite angle (it used to overflow on its way to radians and be refused as Infinity).
+    expect(errors.some((e) => e.element.id === 'turned')).to.equal(false);
+    expect(warnings.length).to.equal(6);
+    expect(await scene.stateHash()).to.match(/\S/);
+  });
+
   it('a body the engine refuses is reported, and leaves the error box once its markup is fixed', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];

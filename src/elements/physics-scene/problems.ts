@@ -4,7 +4,7 @@
 // element's description the engine refused, once the element sends another.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { HostError } from '../../worker/protocol.js';
-import { describeElement, displayValue, type Problem } from '../checks.js';
+import { describeElement, displayValue, shownValue, type Problem } from '../checks.js';
 import { firePhysicsEvent } from './events.js';
 
 /** Engine description fields → the attribute that sets them, where the names differ. */
@@ -91,7 +91,7 @@ export class ProblemsController implements ReactiveController {
   refused(e: HostError): void {
     const el = this.options.elementOf(e.key) ?? this.host;
     const attribute = ENGINE_FIELDS[e.field] ?? e.field;
-    const value = attribute ? (el.getAttribute(attribute) ?? '') : '';
+    const value = attribute ? shownValue(el, attribute) : '';
     if (el === this.host) {
       this.report(el, attribute, value, e.message);
       return;
