@@ -44,6 +44,8 @@ const sceneRenderer: RendererFactory = (container, source) => new SceneRenderer(
 /** @internal */
 export class StageController implements ReactiveController {
   private renderer: Renderer | null = null;
+  /** Where the canvas's corners are on screen (made and removed with the renderer). */
+  private corners: CanvasCorners | null = null;
 
   constructor(
     host: ReactiveControllerHost,
@@ -77,6 +79,7 @@ export class StageController implements ReactiveController {
    * at the next animation frame, or nothing at all (`looping` false: off screen or stopped).
    */
   open(container: HTMLElement, looping: boolean): void {
+    this.corners = new CanvasCorners(container);
     this.renderer = (this.options.create ?? sceneRenderer)(container, () => this.options.source());
     this.renderer.setLooping(looping);
     this.apply(this.options.view());
@@ -85,6 +88,8 @@ export class StageController implements ReactiveController {
   close(): void {
     this.renderer?.dispose();
     this.renderer = null;
+    this.corners?.remove();
+    this.corners = null;
   }
 
   private apply(view: StageView): void {
@@ -119,20 +124,16 @@ export class StageController implements ReactiveController {
     return { scale: unit.x - origin.x, offsetX: origin.x, offsetY: origin.y };
   }
 
-  /** A viewport point in canvas CSS pixels; NaN without a canvas. */
+  /** A viewport point in canvas CSS pixels; NaN without a canvas (or with one seen edge-on). */
   clientToCanvas(x: number, y: number): { x: number; y: number } {
-    const canvas = this.canvas;
-    if (!canvas) return { x: NaN, y: NaN };
-    const { left, top, scaleX, scaleY } = onScreen(canvas);
-    return { x: (x - left) / scaleX, y: (y - top) / scaleY };
+    const m = this.onScreen();
+    return m ? project(invert(m), x, y) : { x: NaN, y: NaN };
   }
 
-  /** A point in canvas CSS pixels in viewport (client) coordinates; NaN without a canvas. */
+  /** A point in canvas CSS pixels in viewport (client) coordinates; NaN without a canvas (or with one seen edge-on). */
   canvasToClient(x: number, y: number): { x: number; y: number } {
-    const canvas = this.canvas;
-    if (!canvas) return { x: NaN, y: NaN };
-    const { left, top, scaleX, scaleY } = onScreen(canvas);
-    return { x: left + x * scaleX, y: top + y * scaleY };
+    const m = this.onScreen();
+    return m ? project(m, x, y) : { x: NaN, y: NaN };
   }
 
   /** A world point in viewport (client) coordinates; NaN without a canvas. */
@@ -150,16 +151,116 @@ export class StageController implements ReactiveController {
     const c = this.clientToCanvas(x, y);
     return this.renderer.canvasToWorld(c.x, c.y);
   }
+
+  /**
+   * Canvas CSS pixels → viewport pixels as the page shows the canvas now, or null (no canvas, or degenerate). Pointer
+   * events come in viewport pixels, the view is drawn in the canvas's own CSS pixels, and a page may put any CSS
+   * transforms between them (slides scaled to fit with `transform: scale()`, CSS `zoom`, a rotated or mirrored card, a
+   * 3D tilt), on the scene or on an ancestor, animated or not: read each time, never kept.
+   */
+  private onScreen(): Matrix | null {
+    const canvas = this.canvas;
+    if (!canvas) return null;
+    const w = canvas.clientWidth;
+    const h = canvas.clientHeight;
+    let corners: Point[];
+    if (this.corners?.beside(canvas)) corners = this.corners.read(w, h);
+    else {
+      // A canvas that is not the renderer's own in the stage (unit tests' fakes): its box, exact for translation and
+      // scale only.
+      const r = canvas.getBoundingClientRect();
+      corners = [[r.left, r.top], [r.right, r.top], [r.right, r.bottom], [r.left, r.bottom]];
+    }
+    return homography(corners, w, h);
+  }
+}
+
+type Point = [x: number, y: number];
+/** A 3 × 3 matrix, row by row, on homogeneous points (x, y, 1). */
+type Matrix = number[];
+
+/**
+ * Four zero-size, invisible markers at the canvas's corners, in its container beside it: a zero-size box's
+ * getBoundingClientRect() is where that point of the canvas's plane is on screen, after every transform on the way
+ * (the canvas's own bounding box says where the corners are only without rotation, skew or perspective). Out of flow
+ * (absolute), zero-size, hidden and inert to the pointer and to assistive technology: no layout, paint or focus.
+ */
+class CanvasCorners {
+  private readonly marks: HTMLElement[];
+  /** The canvas size the markers are placed for. */
+  private w = 0;
+  private h = 0;
+
+  constructor(private readonly container: HTMLElement) {
+    this.marks = [0, 1, 2, 3].map(() => {
+      const m = document.createElement('div');
+      m.setAttribute('aria-hidden', 'true');
+      Object.assign(m.style, { position: 'absolute', width: '0', height: '0', margin: '0', visibility: 'hidden', pointerEvents: 'none' });
+      return m;
+    });
+    // First in the container, before the canvas p5 appends: with no left / top, an absolute box sits at its static
+    // position, where the canvas (a block, the container's only child in flow) begins, whatever the padding.
+    container.prepend(...this.marks);
+  }
+
+  /** Whether the markers sit beside `canvas` (they describe its plane only there). */
+  beside(canvas: HTMLCanvasElement): boolean {
+    return canvas.parentNode === this.container;
+  }
+
+  /** The viewport positions of the canvas corners (0, 0), (w, 0), (w, h), (0, h), as laid out now. */
+  read(w: number, h: number): Point[] {
+    if (w !== this.w || h !== this.h) {
+      // Margins move each marker from the canvas's top-left corner to its own (written only on a resize).
+      this.w = w;
+      this.h = h;
+      this.marks[1].style.marginLeft = this.marks[2].style.marginLeft = `${w}px`;
+      this.marks[2].style.marginTop = this.marks[3].style.marginTop = `${h}px`;
+    }
+    return this.marks.map((m) => {
+      const r = m.getBoundingClientRect();
+      return [r.left, r.top];
+    });
+  }
+
+  remove(): void {
+    for (const m of this.marks) m.remove();
+  }
 }
 
 /**
- * Where the canvas is on screen: its top-left corner in viewport pixels and viewport pixels per CSS pixel of its own
- * layout. They differ from 1 when a page scales the scene (slides scaled to fit the window with `transform: scale()`,
- * CSS `zoom`): pointer events come in viewport pixels, the view is drawn in the canvas's CSS pixels.
+ * The projective map taking canvas points (0, 0), (w, 0), (w, h), (0, h) to the viewport points `q` (Heckbert's
+ * square-to-quad): exact for any 2D transform (affine) and for 3D ones, which show a plane in perspective. Without
+ * rotation, skew or perspective it is x · scale + offset, as computed from the canvas's box. Null when the corners do
+ * not make a convex quadrilateral turning one way: a zero-size canvas, a plane seen edge-on, or one reaching behind the
+ * viewer (Chromium puts all four corners on one point then).
  */
-function onScreen(canvas: HTMLCanvasElement): { left: number; top: number; scaleX: number; scaleY: number } {
-  const r = canvas.getBoundingClientRect();
-  const w = canvas.clientWidth;
-  const h = canvas.clientHeight;
-  return { left: r.left, top: r.top, scaleX: w > 0 && r.width > 0 ? r.width / w : 1, scaleY: h > 0 && r.height > 0 ? r.height / h : 1 };
+function homography(q: Point[], w: number, h: number): Matrix | null {
+  if (!(w > 0 && h > 0)) return null;
+  // The turn at each corner (cross product of the edges in and out): all one sign (a mirror turns the other way).
+  const turns = q.map(([ax, ay], i) => {
+    const [[bx, by], [cx, cy]] = [q[(i + 1) % 4], q[(i + 2) % 4]];
+    return (bx - ax) * (cy - by) - (by - ay) * (cx - bx);
+  });
+  if (!turns.every((t) => t > 1e-9) && !turns.every((t) => t < -1e-9)) return null;
+  const [[x0, y0], [x1, y1], [x2, y2], [x3, y3]] = q;
+  // Unit square → quad; sx, sy are 0 for a parallelogram (affine: g = k = 0).
+  const sx = x0 - x1 + x2 - x3;
+  const sy = y0 - y1 + y2 - y3;
+  const dx1 = x1 - x2, dx2 = x3 - x2, dy1 = y1 - y2, dy2 = y3 - y2;
+  const det = dx1 * dy2 - dx2 * dy1;
+  const g = (sx * dy2 - dx2 * sy) / det;
+  const k = (dx1 * sy - sx * dy1) / det;
+  // Then canvas pixels → unit square (x / w, y / h).
+  return [(x1 - x0 + g * x1) / w, (x3 - x0 + k * x3) / h, x0, (y1 - y0 + g * y1) / w, (y3 - y0 + k * y3) / h, y0, g / w, k / h, 1];
+}
+
+/** The inverse map (its adjugate: a projective map is the same up to scale). */
+function invert([a, b, c, d, e, f, g, h, i]: Matrix): Matrix {
+  return [e * i - f * h, c * h - b * i, b * f - c * e, f * g - d * i, a * i - c * g, c * d - a * f, d * h - e * g, b * g - a * h, a * e - b * d];
+}
+
+function project(m: Matrix, x: number, y: number): { x: number; y: number } {
+  const z = m[6] * x + m[7] * y + m[8];
+  return { x: (m[0] * x + m[1] * y + m[2]) / z, y: (m[3] * x + m[4] * y + m[5]) / z };
 }
