@@ -112,7 +112,8 @@ export class Checker {
       return rule.fallback;
     }
     if (value === undefined || value === null || value === '') return rule.fallback;
-    const n = typeof value === 'number' ? value : Number(value);
+    // A Symbol has no number (Number() would throw).
+    const n = typeof value === 'number' ? value : typeof value === 'symbol' ? NaN : Number(value);
     let problem = '';
     if (!Number.isFinite(n)) problem = 'must be a finite number';
     else if (rule.positive && !(n > 0)) problem = 'must be a number > 0';

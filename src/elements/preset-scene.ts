@@ -1,7 +1,7 @@
 import { css } from 'lit';
 import { property } from 'lit/decorators.js';
 import { numberAttribute, type Problem } from './checks.js';
-import { PhysicsSceneElement } from './physics-scene/physics-scene.js';
+import { checkSteps, PhysicsSceneElement } from './physics-scene/physics-scene.js';
 
 /** Steps between two ticks of a preset's behaviour (a tenth of a second at the default timestep). */
 const TICK_STEPS = 6;
@@ -69,7 +69,8 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
    * they are split into calls.
    */
   override async step(n = 1): Promise<number> {
-    const total = Math.floor(Number(n) || 0);
+    checkSteps(n);
+    const total = n;
     if (total <= 0 || !this.setup || !this.ticks(this.setup)) return super.step(n);
     let count = await super.step(0);
     for (let left = total; ; ) {

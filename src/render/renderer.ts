@@ -129,6 +129,8 @@ export class SceneRenderer {
   /** 'over': the hook draws on top of the default drawing; 'replace': instead of it. */
   drawMode: 'over' | 'replace' = 'over';
   hook: DrawHook | null = null;
+  /** The hook whose throw was warned of last (warned once per hook). */
+  private hookWarned: DrawHook | null = null;
   /** The clock interpolation reads, on performance.now()'s scale (frames are stamped with it on arrival); tests set it. */
   now: () => number = () => performance.now();
   /** Frames drawn (for tests and diagnostics). */
@@ -524,7 +526,9 @@ export class SceneRenderer {
         v.alpha = alpha;
         this.hook(v);
       } catch (error) {
-        console.warn('<physics-scene> draw hook threw:', error);
+        // Once per hook: a hook that throws does so every frame, and sixty warnings a second bury the first.
+        if (this.hookWarned !== this.hook) console.warn('<physics-scene> draw hook threw (warned once for this hook):', error);
+        this.hookWarned = this.hook;
       }
       ctx.restore();
     }

@@ -30,6 +30,18 @@ const KEY_PUSH = 1 / 3;
 /** What a picked body is called when its element has no aria-label or title. */
 const TYPE_NAMES: Partial<Record<TopologyBody['type'], string>> = { softbody: 'soft body' };
 
+/** The most steps one step(n) takes (the engine host's cap: a call must not block its thread for minutes). */
+const MAX_STEPS_PER_CALL = 100000;
+
+/** Refuses a step(n) count that is not a whole number from 0 to MAX_STEPS_PER_CALL (it was floored or capped silently). */
+export function checkSteps(n: unknown): void {
+  if (typeof n !== 'number') throw new TypeError(`step(n): n must be a number of steps, got ${typeof n}`);
+  if (!Number.isInteger(n) || n < 0 || n > MAX_STEPS_PER_CALL) throw new RangeError(`step(n): n must be a whole number from 0 to ${MAX_STEPS_PER_CALL}, got ${n}`);
+}
+
+/** PhysicsSceneElement.callTimeout. */
+let callTimeoutMs = 8000;
+
 /**
  * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
  * scene simulates them in a Web Worker at a fixed step and draws them with p5 into a canvas in its shadow root.
@@ -71,8 +83,15 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Makes the engine worker; replace it to load the worker from elsewhere (or to test a failing one). */
   static workerFactory: (() => Worker) | null = null;
-  /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error`. */
-  static callTimeout = 8000;
+  /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error` (> 0). */
+  static get callTimeout(): number {
+    return callTimeoutMs;
+  }
+
+  static set callTimeout(ms: number) {
+    if (typeof ms !== 'number' || !(ms > 0)) throw new RangeError(`PhysicsSceneElement.callTimeout must be a number of milliseconds > 0, got ${String(ms)}`);
+    callTimeoutMs = ms;
+  }
 
   /**
    * The most engine workers the page's scenes share: each scene is a world in the least-loaded one. Default
@@ -143,8 +162,20 @@ export class PhysicsSceneElement extends LitElement {
    * Custom p5 drawing, called each time the scene draws (every new frame while it moves; `view.requestDraw()` asks for
    * one more) with a DrawView (the p5 instance, the 2D context, interpolated particle positions and poses, the topology
    * and the world → canvas mapping), after the default drawing ("over") or instead ("replace"). See docs/drawing.md.
+   * A function or null (a TypeError otherwise); a hook that throws is reported with one console warning, not one a
+   * frame.
    */
-  @property({ attribute: false }) drawHook: DrawHook | null = null;
+  @property({ attribute: false, noAccessor: true })
+  get drawHook(): DrawHook | null {
+    return this._drawHook;
+  }
+  set drawHook(hook: DrawHook | null) {
+    if (hook !== null && hook !== undefined && typeof hook !== 'function') throw new TypeError(`drawHook must be a function or null, got ${typeof hook}`);
+    const old = this._drawHook;
+    this._drawHook = hook ?? null;
+    this.requestUpdate('drawHook', old);
+  }
+  private _drawHook: DrawHook | null = null;
 
   /** The loading message is shown. */
   @state() private loading = true;
@@ -357,9 +388,10 @@ export class PhysicsSceneElement extends LitElement {
    * Takes `n` fixed steps now (also while paused). Resolves to the step count once the page has the state after them:
    * body elements' `x`, `y` and `angle` then read it (also of bodies a markup change rebuilt just before). On a scene
    * not in the page this and the other engine calls (reset, stateHash, diagnostics, snapshot, restore) reject with an
-   * `EngineStoppedError`.
+   * `EngineStoppedError`. `n` is a whole number from 0 to 100,000 (a RangeError or TypeError otherwise).
    */
   async step(n = 1): Promise<number> {
+    checkSteps(n);
     const engine = await this.session.whenReady();
     if (!engine) return 0;
     const count = await engine.api.step(n);
