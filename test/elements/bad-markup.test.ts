@@ -201,6 +201,36 @@ describe('<physics-scene> bad markup', () => {
     expect(await scene.stateHash()).to.match(/\S/);
   });
 
+  it('a body id used twice is reported on the later element (links name the first), and leaves the box once renamed', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="10" height="10" paused',
+      `<physics-box id="a" x="2" y="2" width="1" height="1"></physics-box>
+       <physics-box id="a" class="second" x="5" y="2" width="1" height="1"></physics-box>
+       <physics-circle id="c" x="8" y="2" radius="0.5"></physics-circle>
+       <physics-spring a="a" b="c"></physics-spring>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    await waitFor(() => errors.length > 0, 'the shared id reported');
+    const second = scene.querySelector('.second')!;
+    expect(errors.map((e) => [e.element, e.attribute, e.value])).to.deep.equal([[second, 'id', 'a']]);
+    expect(errors[0].message).to.include('also the id of an earlier <physics-box');
+    expect(warnings.filter((w) => w.includes('also the id'))).to.have.length(1);
+    const box = scene.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
+    await waitFor(() => !box.hidden && box.textContent!.includes('also the id'), 'the error box');
+    second.id = 'b';
+    await waitFor(() => box.hidden === true, 'the error box to empty once renamed');
+    // A third with the id: reported again (a new problem), once.
+    const third = document.createElement('physics-box');
+    third.id = 'a';
+    scene.append(third);
+    await waitFor(() => errors.length === 2, 'the new shared id reported');
+    expect(errors[1].element).to.equal(third);
+    expect((await scene.diagnostics()).bodyCount).to.equal(4);
+  });
+
   it('a body the engine refuses is reported, and leaves the error box once its markup is fixed', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];

@@ -7,7 +7,7 @@ import type { BodyStyle } from '../../render/renderer.js';
 import type { KeyedBody, KeyedLink, LinkDescription } from '../../worker/protocol.js';
 import { PhysicsBodyElement } from '../body-element.js';
 import { nearestName } from '../../engine/validate.js';
-import { Checker, misspeltAttributes, type Problem } from '../checks.js';
+import { Checker, describeElement, misspeltAttributes, type Problem } from '../checks.js';
 import { PhysicsLinkElement } from '../link-element.js';
 import type { SceneHost } from '../scene-host.js';
 import type { ColourScheme } from './scheme.js';
@@ -121,6 +121,9 @@ export class MarkupSync implements SceneHost {
   private readonly entries = new Map<number, Entry>();
   /** Children that are neither bodies nor links, reported (each is its own source of problems). */
   private unknown = new Set<Element>();
+  /** Body elements whose id an earlier one has (reported; links name the first), and where their problem is kept. */
+  private duplicates = new Set<Element>();
+  private readonly idSources = new WeakMap<Element, object>();
   private readonly observer = new MutationObserver(() => this.sync());
 
   constructor(private readonly options: MarkupOptions) {}
@@ -180,6 +183,7 @@ export class MarkupSync implements SceneHost {
       const desc = this.describeLink(key);
       if (desc) links.push({ key, desc });
     }
+    this.checkIds();
     return { bodies, links };
   }
 
@@ -213,7 +217,37 @@ export class MarkupSync implements SceneHost {
       if (desc) engine.send('addBody', { key, desc });
     }
     for (const el of children) if (!this.keys.has(el) && el instanceof PhysicsLinkElement) this.adopt(el);
+    this.checkIds();
     this.refreshLinks();
+  }
+
+  /**
+   * Reports each body element whose id an earlier one of the scene has (links name the earlier one, and would quietly
+   * move to this one once the first left), and takes back the reports of ids no longer shared.
+   */
+  private checkIds(): void {
+    const first = new Map<string, Element>();
+    const shared = new Set<Element>();
+    for (const entry of this.entries.values()) {
+      const el = entry.element;
+      if (entry.kind !== 'body' || !el.id) continue;
+      const earlier = first.get(el.id);
+      if (!earlier) {
+        first.set(el.id, el);
+        continue;
+      }
+      shared.add(el);
+      if (!this.duplicates.has(el)) this.options.problems.set(this.idSource(el), el, [{ attribute: 'id', value: el.id, message: `is also the id of an earlier ${describeElement(earlier)} in this scene: links name that one` }]);
+    }
+    for (const el of this.duplicates) if (!shared.has(el)) this.options.problems.forget(this.idSource(el));
+    this.duplicates = shared;
+  }
+
+  /** The source an element's duplicate-id problem is kept under (apart from its attributes' problems). */
+  private idSource(el: Element): object {
+    let source = this.idSources.get(el);
+    if (!source) this.idSources.set(el, (source = {}));
+    return source;
   }
 
   // ---- SceneHost: what the children call ---------------------------------------------------------------------
@@ -315,6 +349,7 @@ export class MarkupSync implements SceneHost {
     this.entries.delete(key);
     this.keys.delete(entry.element);
     this.options.problems.forget(entry.element);
+    if (this.duplicates.delete(entry.element)) this.options.problems.forget(this.idSource(entry.element));
   }
 
   /** Forgets the children no longer in the container (and, with `tellEngine`, removes them from the engine). */
