@@ -295,7 +295,8 @@ export class PhysicsSceneElement extends LitElement {
 
   /**
    * Resolves when the engine has loaded the scene (after each start). Asking for it starts a scene that waits to come
-   * near the viewport.
+   * near the viewport. A scene not in the page starts once it is added: until then its `ready` waits (it never
+   * rejects; the engine calls reject with an `EngineStoppedError` instead).
    */
   get ready(): Promise<void> {
     this.visibility.demand();
