@@ -14,15 +14,25 @@ export const cloth: BodyPainter = {
         const cols = b.columns ?? 2;
         const rows = b.rows ?? 2;
         const torn = b.torn;
+        // Each row's run of whole cells as one strip (along its top edge, back along its bottom edge), not one
+        // quad a cell: a 200 × 200 cloth is 199 subpaths, not 39,601, and each node is visited twice, not four times.
+        // Cell n (its top-left node) is whole when none of its four links broke.
+        const whole = (n: number) => !torn || (torn[n] | (torn[n + cols] & 1) | (torn[n + 1] & 2)) === 0;
         for (let r = 0; r + 1 < rows; r++) {
-          for (let c = 0; c + 1 < cols; c++) {
-            const n = r * cols + c;
-            if (torn && (torn[n] | (torn[n + cols] & 1) | (torn[n + 1] & 2)) !== 0) continue;
-            ctx.moveTo(X(idx[n]), Y(idx[n]));
-            ctx.lineTo(X(idx[n + 1]), Y(idx[n + 1]));
-            ctx.lineTo(X(idx[n + cols + 1]), Y(idx[n + cols + 1]));
-            // fill() closes each cell; closePath() would make the path quadratic in Chromium (see painter.ts).
-            ctx.lineTo(X(idx[n + cols]), Y(idx[n + cols]));
+          const top = r * cols;
+          const bottom = top + cols;
+          for (let c = 0; c + 1 < cols; ) {
+            if (!whole(top + c)) {
+              c++;
+              continue;
+            }
+            let end = c;
+            while (end + 2 < cols && whole(top + end + 1)) end++;
+            ctx.moveTo(X(idx[top + c]), Y(idx[top + c]));
+            for (let q = c + 1; q <= end + 1; q++) ctx.lineTo(X(idx[top + q]), Y(idx[top + q]));
+            // fill() closes each strip; closePath() would make the path quadratic in Chromium (see painter.ts).
+            for (let q = end + 1; q >= c; q--) ctx.lineTo(X(idx[bottom + q]), Y(idx[bottom + q]));
+            c = end + 1;
           }
         }
       }
