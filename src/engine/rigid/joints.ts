@@ -435,7 +435,10 @@ function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number)
   const iA = r.invInertia[a];
   const mB = b < 0 ? 0 : r.invMass[b];
   const iB = b < 0 ? 0 : r.invInertia[b];
-  const rA = at[0] * py - at[1] * px;
+  // The push across the axis acts where B's anchor is, for A too (Box2D's d + rA): A's anchor sits `along` the axis
+  // from there, and a lever to A's own anchor gave each correction a torque of about along · l1, which fed energy
+  // into two free bodies until they blew up.
+  const rA = (at[0] + at[6] - at[2]) * py - (at[1] + at[7] - at[3]) * px;
   const rB = at[4] * py - at[5] * px;
   const k11 = mA + mB + iA * rA * rA + iB * rB * rB;
   const k12 = iA * rA + iB * rB;

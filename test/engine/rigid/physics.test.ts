@@ -279,6 +279,36 @@ describe('rigid bodies: joints', () => {
     expect(world.bodyPose(bob).y).to.be.closeTo(1 + (m * g) / 100, 0.01 * (1 + (m * g) / 100));
   });
 
+  it('a prismatic joint between two free bodies keeps their kinetic energy and angular momentum (it does no work)', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false });
+      const a = world.addRigidBody({ points: box(2, 0.4), x: 0, y: 0, angularVelocity: 3, vx: 1 });
+      const b = world.addRigidBody({ points: box(1, 1), x: 2, y: 0, density: 2, vy: 2 });
+      world.addJoint({ type: 'prismatic', a, b, anchor: { x: 1, y: 0 } });
+      const energyAndMomentum = () => {
+        let ke = 0;
+        let l = 0;
+        for (const h of [a, b]) {
+          const { mass, inertia } = world.bodyMassInfo(h);
+          const v = world.bodyVelocity(h);
+          const p = world.bodyPose(h);
+          const w = world.bodyAngularVelocity(h);
+          ke += 0.5 * mass * (v.x * v.x + v.y * v.y) + 0.5 * inertia * w * w;
+          // About the origin: orbital (r × m v) plus spin; y grows downward, as the engine's angles do.
+          l += mass * (p.x * v.y - p.y * v.x) + inertia * w;
+        }
+        return [ke, l];
+      };
+      world.step();
+      const [ke0, l0] = energyAndMomentum();
+      // Before the fix: the energy ×24 after 2 s, 10^5 later, and the momentum changed sign.
+      for (let k = 0; k < 600; k++) world.step();
+      const [ke, l] = energyAndMomentum();
+      expect(Math.abs(l - l0) / Math.abs(l0), `${kernel}: angular momentum after 10 s`).to.be.lessThan(0.01);
+      expect(ke / ke0, `${kernel}: kinetic energy after 10 s`).to.be.within(0.98, 1.001);
+    }
+  });
+
   it('a revolute motor with enough torque turns a wheel at its speed; with too little it stalls against a load', () => {
     const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
     const wheel = world.addRigidBody({ radius: 0.5, x: 0, y: 0, collide: false });
