@@ -156,6 +156,29 @@ describe('body painters', () => {
     expect(paints.map((p) => [p.op, p.width])).to.deep.equal([['stroke', 2], ['fill', 2]]);
   });
 
+  it('a dense cloth draws every k-th grid line, through every k-th node and the last, so lines stay 6 px apart', () => {
+    const n = 21;
+    const body: TopologyBody = { key: 1, type: 'cloth', kind: 'cloth', indices: Int32Array.from({ length: n * n }, (_, i) => i), columns: n, rows: n };
+    const strokeOf = (px: number) => {
+      const r = recorder();
+      const pen: Pen = { ctx: r.ctx, X: (i) => (i % n) * px, Y: (i) => Math.floor(i / n) * px, scale: 1, offsetX: 0, offsetY: 0, topology: { version: 1, bodies: [body], links: [] }, poses: new Float64Array(0) };
+      PAINTERS.cloth.draw(pen, [0], { fill: null, stroke: '#00f', lineWidth: 1.5 });
+      return r.calls;
+    };
+    // 6 px apart: every line, every node (21 rows and 21 columns of 20 segments).
+    const sparse = strokeOf(6);
+    expect(sparse.filter((c) => c[0] === 'moveTo').length).to.equal(2 * n);
+    expect(sparse.filter((c) => c[0] === 'lineTo').length).to.equal(2 * n * (n - 1));
+    // 2 px apart: every third line and node (0, 3, …, 18, and the last, 20): 8 rows and 8 columns of 7 segments.
+    const dense = strokeOf(2);
+    const starts = dense.filter((c) => c[0] === 'moveTo').map((c) => [c[1], c[2]]);
+    expect(starts.slice(0, 8).map(([, y]) => y / 2)).to.deep.equal([0, 3, 6, 9, 12, 15, 18, 20]);
+    expect(starts.slice(8).map(([x]) => x / 2)).to.deep.equal([0, 3, 6, 9, 12, 15, 18, 20]);
+    const firstRow = dense.slice(2, 9).map((c) => c[1] / 2); // after beginPath and the row's moveTo
+    expect(firstRow).to.deep.equal([3, 6, 9, 12, 15, 18, 20]);
+    expect(dense.filter((c) => c[0] === 'lineTo').length).to.equal(16 * 7);
+  });
+
   it('a torn cloth leaves out the cells and links that tore', () => {
     // 3 × 3 grid on particles 0…8; the link from node 0 to its right neighbour broke.
     const bodies: TopologyBody[] = [{ key: 1, type: 'cloth', kind: 'cloth', indices: Int32Array.from({ length: 9 }, (_, i) => i), columns: 3, rows: 3, torn: Uint8Array.of(1, 0, 0, 0, 0, 0, 0, 0, 0) }];
