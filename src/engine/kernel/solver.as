@@ -864,6 +864,13 @@ export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: 
     let p0 = f64x2.div(f64x2.sub(f64x2.mul(k11, b0), f64x2.mul(k01, b1)), det);
     let p1 = f64x2.div(f64x2.sub(f64x2.mul(k00, b1), f64x2.mul(k01, b0)), det);
     const blocked = v128.and(both, block);
+    // A block that pushes one point and pulls the other (a rolling polygon's pivot): the pushing point alone.
+    const on0 = v128.and(blocked, v128.and(f64x2.ge(p0, zero), f64x2.lt(p1, zero)));
+    const on1 = v128.and(blocked, v128.and(f64x2.ge(p1, zero), f64x2.lt(p0, zero)));
+    if (v128.any_true(v128.or(on0, on1))) {
+      p0 = v128.bitselect(f64x2.div(b0, k00), v128.andnot(p0, on1), on0);
+      p1 = v128.bitselect(f64x2.div(b1, k11), v128.andnot(p1, on0), on1);
+    }
     if (!i64x2.all_true(blocked)) {
       const pf0 = f64x2.div(b0, k00);
       const pf1 = f64x2.div(f64x2.sub(b1, f64x2.mul(k01, pf0)), k11);

@@ -947,6 +947,10 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       if (det > 1e-9 * k00 * k11) {
         p0 = (k11 * (t0 - v0) - k01 * (t1 - v1)) / det;
         p1 = (k00 * (t1 - v1) - k01 * (t0 - v0)) / det;
+        // A block that pushes one point and pulls the other (a rolling polygon's pivot as its next corner lands):
+        // the pushing point alone. The pull held the pivot down and stopped the roll (polygons rolled 3-5× short).
+        if (p0 >= 0 && p1 < 0) [p0, p1] = [(t0 - v0) / k00, 0];
+        else if (p1 >= 0 && p0 < 0) [p0, p1] = [0, (t1 - v1) / k11];
       } else {
         p0 = (t0 - v0) / k00;
         p1 = (t1 - v1 - k01 * p0) / k11;
@@ -1003,8 +1007,17 @@ function pairVelocity(c: RigidContacts, r: BodyRows, i: number, h: number): void
     if (det > 1e-9 * k00 * k11) {
       pt[1] = (k11 * b0 - k01 * b1) / det;
       pt[5] = (k00 * b1 - k01 * b0) / det;
-      kick(c, r, i, 0);
-      kick(c, r, i + 1, 4);
+      // A block that pushes one point and pulls the other: the pushing point alone (as in the common case).
+      if (pt[1] >= 0 && pt[5] < 0) {
+        pt[1] = b0 / k00;
+        kick(c, r, i, 0);
+      } else if (pt[5] >= 0 && pt[1] < 0) {
+        pt[5] = b1 / k11;
+        kick(c, r, i + 1, 4);
+      } else {
+        kick(c, r, i, 0);
+        kick(c, r, i + 1, 4);
+      }
       return;
     }
   }
