@@ -3,16 +3,11 @@
 // number property is a physics-error like any bad value, not an uncaught exception.
 import { expect } from '@open-wc/testing';
 import { PhysicsSceneElement, type PhysicsBoxElement, type PhysicsErrorDetail } from '../../src/index.js';
-import { frames, mount, unmount, waitFor } from './helpers.js';
+import { afterEachScene, frames, mount, waitFor } from './helpers.js';
 
 describe('<physics-scene> API arguments', () => {
   let scene: PhysicsSceneElement | null = null;
-  const warn = console.warn;
-  afterEach(() => {
-    console.warn = warn;
-    unmount(scene);
-    scene = null;
-  });
+  afterEachScene(() => scene);
 
   it('step(n) takes a whole number from 0 to 100,000 and rejects anything else, the scene untouched', async () => {
     scene = await mount('width="10" height="10" paused', '<physics-box x="5" y="2" width="1" height="1"></physics-box>');

@@ -17,6 +17,18 @@ export async function mount(attrs: string, children: string, options: { width?: 
   return scene;
 }
 
+/**
+ * Within a describe: after each test, console.warn is put back (tests that collect warnings replace it) and the scene
+ * `current()` gives is removed with its container (again: a no-op).
+ */
+export function afterEachScene(current: () => Element | null): void {
+  const warn = console.warn;
+  afterEach(() => {
+    console.warn = warn;
+    unmount(current());
+  });
+}
+
 /** Removes a mounted scene with its container. */
 export function unmount(scene: Element | null | undefined): void {
   const box = scene?.parentElement;

@@ -3,7 +3,7 @@
 // of every type holding from markup. Paused scenes driven by step(n).
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
-import { colourDistance, drawn, mount, pixelAt, rgb, unmount } from './helpers.js';
+import { afterEachScene, colourDistance, drawn, mount, pixelAt, rgb } from './helpers.js';
 
 const WHITE = rgb('#ffffff');
 const RED = rgb('#ff0000');
@@ -45,12 +45,7 @@ function reports() {
 
 describe('rigid bodies in the page', () => {
   let scene: PhysicsSceneElement | null = null;
-  const warn = console.warn;
-  afterEach(() => {
-    console.warn = warn;
-    unmount(scene);
-    scene = null;
-  });
+  afterEachScene(() => scene);
 
   it('a turning box is drawn where its pose puts it: its pixels follow the angle', async () => {
     // A long thin box at (5, 5), turning clockwise on screen at 90°/s.

@@ -5,7 +5,7 @@
 import { expect } from '@open-wc/testing';
 import { AUTO_SUBSTEPS } from '../../src/engine/settings.js';
 import type { PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
-import { mount, unmount, waitFor } from './helpers.js';
+import { afterEachScene, mount, unmount, waitFor } from './helpers.js';
 
 const RIGID = `<physics-box x="4" y="2" width="1" height="1" angle="15"></physics-box>
   <physics-circle x="8" y="1" radius="0.5"></physics-circle>
@@ -31,12 +31,7 @@ async function mountPreset(tag: string): Promise<PhysicsSceneElement> {
 
 describe('<physics-scene substeps>', () => {
   let scene: PhysicsSceneElement | null = null;
-  const warn = console.warn;
-  afterEach(() => {
-    console.warn = warn;
-    unmount(scene);
-    scene = null;
-  });
+  afterEachScene(() => scene);
 
   it('defaults to "auto": a fresh element says so, with no attribute', () => {
     const el = document.createElement('physics-scene');
