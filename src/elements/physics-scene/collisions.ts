@@ -64,7 +64,8 @@ export class CollisionEventsController implements ReactiveController {
   readonly dispatch = (data: Float64Array, count: number): void => {
     for (let k = 0; k < count; k++) {
       const o = k * EVENT;
-      const [ka, kb] = [data[o + 1], data[o + 2]];
+      const ka = data[o + 1];
+      const kb = data[o + 2];
       const pair = ka < kb ? `${ka} ${kb}` : `${kb} ${ka}`;
       const begin = data[o] === 0;
       const told = this.touching.get(pair);

@@ -949,8 +949,14 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
         p1 = (k00 * (t1 - v1) - k01 * (t0 - v0)) / det;
         // A block that pushes one point and pulls the other (a rolling polygon's pivot as its next corner lands):
         // the pushing point alone. The pull held the pivot down and stopped the roll (polygons rolled 3-5× short).
-        if (p0 >= 0 && p1 < 0) [p0, p1] = [(t0 - v0) / k00, 0];
-        else if (p1 >= 0 && p0 < 0) [p0, p1] = [0, (t1 - v1) / k11];
+        // (Plain assignments: a destructured pair allocates an array in the hot loop.)
+        if (p0 >= 0 && p1 < 0) {
+          p0 = (t0 - v0) / k00;
+          p1 = 0;
+        } else if (p1 >= 0 && p0 < 0) {
+          p0 = 0;
+          p1 = (t1 - v1) / k11;
+        }
       } else {
         p0 = (t0 - v0) / k00;
         p1 = (t1 - v1 - k01 * p0) / k11;

@@ -100,7 +100,11 @@ function loopAround({ ctx, X, Y }: Pen, idx: Int32Array, n: number, r: number): 
     area += X(a) * Y(b) - X(b) * Y(a);
   }
   const out = area >= 0 ? r : -r;
-  const first = [0, 0, 0, 0];
+  // The first two points, for closeLoop (four locals: nothing allocated a frame).
+  let x0 = 0;
+  let y0 = 0;
+  let x1 = 0;
+  let y1 = 0;
   for (let q = 0; q < n; q++) {
     const i = idx[q];
     const prev = idx[(q + n - 1) % n];
@@ -113,9 +117,15 @@ function loopAround({ ctx, X, Y }: Pen, idx: Int32Array, n: number, r: number): 
     const y = Y(i) - tx * k;
     if (q === 0) ctx.moveTo(x, y);
     else ctx.lineTo(x, y);
-    if (q < 2) [first[2 * q], first[2 * q + 1]] = [x, y];
+    if (q === 0) {
+      x0 = x1 = x;
+      y0 = y1 = y;
+    } else if (q === 1) {
+      x1 = x;
+      y1 = y;
+    }
   }
-  closeLoop(ctx, first[0], first[1], first[n > 1 ? 2 : 0], first[n > 1 ? 3 : 1]);
+  closeLoop(ctx, x0, y0, x1, y1);
 }
 
 /** A radius line's colour on a disc drawn without a stroke. */
