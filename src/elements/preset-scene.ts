@@ -88,6 +88,11 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
     }
   }
 
+  /** Its generated bodies change with its behaviour (a respawn): a snapshot restores while the same bodies exist. */
+  protected override get snapshotsMatchMarkup(): boolean {
+    return false;
+  }
+
   /** Rebuilds the scene from its markup, at time 0 (where the preset's behaviour starts again too). */
   override async reset(): Promise<void> {
     await super.reset();

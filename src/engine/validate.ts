@@ -73,8 +73,16 @@ export const FORCE_SPEED = ['fx · timestep / mass (with the forces given since 
  * names[k] names component k ('vx + ix / mass').
  */
 export function pushSpeed(names: readonly [string, string], jx: number, jy: number, invMass: number, seconds = 1, vx = 0, vy = 0): void {
-  speed(names[0], vx + jx * invMass * seconds);
-  speed(names[1], vy + jy * invMass * seconds);
+  pushedSpeed(names[0], vx, vx + jx * invMass * seconds);
+  pushedSpeed(names[1], vy, vy + jy * invMass * seconds);
+}
+
+/**
+ * A speed component a push takes from `before` to `after`: refused past ±MAX_SPEED only when the push makes it
+ * larger (a body already past the limit may still be slowed, or pushed along another axis).
+ */
+export function pushedSpeed(name: string, before: number, after: number): void {
+  if (!(Math.abs(after) <= MAX_SPEED || Math.abs(after) <= Math.abs(before))) speed(name, after);
 }
 
 /** A finite number > 0. */

@@ -137,7 +137,9 @@ describe('<physics-scene> bad markup', () => {
        <physics-pin id="corner" body="b" particle="4" x="8" y="5"></physics-pin>
        <physics-pin id="end" body="r" particle="10" x="6" y="2"></physics-pin>
        <physics-pin id="again" body="r" particle="10" x="6" y="2"></physics-pin>
-       <physics-pin id="near" body="r" x="6.1" y="2"></physics-pin>`,
+       <physics-pin id="near" body="r" x="6.1" y="2"></physics-pin>
+       <physics-box id="plate" x="8" y="8" width="1" height="1"></physics-box>
+       <physics-pin id="centre" body="plate" particle="2" x="8" y="8"></physics-pin>`,
       { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
     );
     await waitFor(() => errors.length >= 4, 'the four refused pins reported');
@@ -155,9 +157,13 @@ describe('<physics-scene> bad markup', () => {
     expect(message('again')).to.include('not rigidly pinned already').and.include('got 10');
     expect(message('near')).to.include('particle 10');
     expect(warnings.length).to.equal(4);
-    // The one good pin holds the rope's end; nothing else was pinned.
+    // The good pins: the rope's end, and the rigid plate by its centre (any particle index of a rigid body: its one row).
     const d = await scene.diagnostics();
-    expect(d.linkCount).to.equal(1);
+    expect(d.linkCount).to.equal(2);
+    await scene.step(30);
+    const plate = scene.querySelector<PhysicsBoxElement>('#plate')!;
+    expect(plate.x).to.be.closeTo(8, 1e-9);
+    expect(plate.y).to.be.closeTo(8, 1e-9);
   });
 
   it('errors name the attribute that is at fault and the value that was refused: a script\'s value, a size too small for a mass, a share of mass per particle', async () => {

@@ -39,7 +39,8 @@ describe('<physics-scene> collision events', () => {
     scene = await mount('width="10" height="10" gravity="0 20" paused collision-events', `
       <physics-box id="floor" x="5" y="9.5" width="10" height="1" static></physics-box>
       <physics-box id="crate" x="3" y="7" width="1" height="1"></physics-box>
-      <physics-box id="chest" x="7" y="7" width="1" height="1"></physics-box>`);
+      <physics-box id="chest" x="7" y="7" width="1" height="1"></physics-box>
+      <physics-box id="rest" x="5" y="8.5" width="1" height="1"></physics-box>`);
     const s = scene;
     const log: string[] = [];
     const name = (el: Element | null) => el?.id ?? 'null';
@@ -47,6 +48,9 @@ describe('<physics-scene> collision events', () => {
     s.addEventListener('physics-collision', record('begin'));
     s.addEventListener('physics-collision-end', record('end'));
     const tally = (entry: string) => log.filter((l) => l === entry).length;
+    // The box resting on the floor from the start begins at the first step (the events are asked for at the load).
+    await s.step(1);
+    expect(tally('begin floor rest')).to.equal(1);
     await stepUntil(s, () => tally('begin crate floor') >= 1 && tally('begin chest floor') >= 1, 'both boxes touching the floor');
     await s.step(30);
     // At rest on the floor now (a landing may hop): counts from here on.
@@ -62,12 +66,17 @@ describe('<physics-scene> collision events', () => {
     s.querySelector('#chest')!.setAttribute('width', '1.2');
     await stepUntil(s, () => chestEnds() === 1 && chestBegins() === 1, 'the rebuilt chest to end and begin again');
     // A reset: every pair the page was told of ends at once, and begins again from the markup (the chest lands again).
+    const [restEnds, restBegins] = [since('end floor rest'), since('begin floor rest')];
     await s.reset();
     expect(chestEnds()).to.equal(2);
+    expect(restEnds()).to.equal(1);
+    // The resting box touches the floor from the rebuilt world's first step: it begins again there.
+    await s.step(1);
+    expect(restBegins()).to.equal(1);
     await stepUntil(s, () => chestBegins() >= 2, 'the chest to land again after the reset');
     await s.step(30);
     // Begins and ends alternate per pair; nothing ends twice; the crate is not heard of again.
-    for (const pair of ['chest floor', 'crate floor']) {
+    for (const pair of ['chest floor', 'crate floor', 'floor rest']) {
       const seq = log.filter((l) => l.endsWith(pair)).map((l) => l.split(' ')[0]);
       seq.forEach((kind, k) => expect(kind, `${pair} event ${k}: ${seq.join(', ')}`).to.equal(k % 2 === 0 ? 'begin' : 'end'));
     }

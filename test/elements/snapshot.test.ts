@@ -2,7 +2,7 @@
 // of another scene, one taken before the markup changed, a JSON copy or anything else is refused with a TypeError or
 // RangeError and leaves the simulation as it was.
 import { expect } from '@open-wc/testing';
-import type { PhysicsSceneElement } from '../../src/index.js';
+import type { PhysicsSceneElement, RagdollSimElement } from '../../src/index.js';
 import type { HostSnapshot } from '../../src/worker/protocol.js';
 import { mount, unmount } from './helpers.js';
 
@@ -54,6 +54,24 @@ describe('<physics-scene> snapshot() and restore()', () => {
     // Still its own simulation: it steps on, the circle falls.
     await s.step(30);
     expect(circle.y).to.be.above(y);
+  });
+
+  it('a <ragdoll-sim> restores its snapshot after its dolls respawned (its own behaviour changed its bodies, not the page)', async () => {
+    const box = document.createElement('div');
+    box.style.cssText = 'width: 480px; height: 300px; position: relative;';
+    const dolls = document.createElement('ragdoll-sim') as RagdollSimElement;
+    dolls.setAttribute('paused', '');
+    dolls.style.cssText = 'width: 100%; height: 100%';
+    box.append(dolls);
+    document.body.append(box);
+    s = dolls;
+    await dolls.ready;
+    const snap = await dolls.snapshot();
+    const hash = await dolls.stateHash();
+    for (let k = 0; k < 40 && dolls.respawned === 0; k++) await dolls.step(60);
+    expect(dolls.respawned, 'a respawn within 40 s').to.be.at.least(1);
+    await dolls.restore(snap);
+    expect(await dolls.stateHash()).to.equal(hash);
   });
 
   it('round-trips its own snapshot, also through structuredClone; a markup change since refuses it until undone', async () => {

@@ -16,7 +16,7 @@ const BODIES = `<physics-box id="crate" x="3" y="5" width="1.2" height="1.2" fil
 // Off the transform's origin (the box's centre, world (5, 5)), so that a mapping that ignores the rotation or the
 // mirroring presses elsewhere: under rotate(180deg) or scale(-1,1) the crate is drawn where #east is laid out, under
 // rotate(90deg) where #north is.
-const CASES: { name: string; transform: string; on: 'scene' | 'ancestor' }[] = [
+const CASES: { name: string; transform: string; on: 'scene' | 'ancestor'; rtl?: boolean }[] = [
   { name: 'no transform', transform: 'none', on: 'scene' },
   { name: 'scale(0.5)', transform: 'scale(0.5)', on: 'scene' },
   { name: 'rotate(30deg)', transform: 'rotate(30deg)', on: 'scene' },
@@ -26,6 +26,9 @@ const CASES: { name: string; transform: string; on: 'scene' | 'ancestor' }[] = [
   { name: 'skewX(20deg)', transform: 'skewX(20deg)', on: 'scene' },
   { name: 'perspective(600px) rotateY(35deg)', transform: 'perspective(600px) rotateY(35deg)', on: 'scene' },
   { name: 'rotate(30deg) on an ancestor', transform: 'rotate(30deg)', on: 'ancestor' },
+  // A right-to-left page: the corner markers' static position must not follow the page's direction.
+  { name: 'no transform, right-to-left page', transform: 'none', on: 'scene', rtl: true },
+  { name: 'rotate(30deg), right-to-left page', transform: 'rotate(30deg)', on: 'scene', rtl: true },
 ];
 
 /** Where the browser puts canvas point (x, y) (CSS pixels) on a page that transforms a box laid out at `origin`. */
@@ -55,10 +58,14 @@ function canvasPixel(canvas: HTMLCanvasElement, x: number, y: number): number[] 
 
 describe('<physics-scene> transformed by the page', () => {
   let scene: PhysicsSceneElement | null = null;
-  afterEach(() => unmount(scene));
+  afterEach(() => {
+    unmount(scene);
+    document.documentElement.removeAttribute('dir');
+  });
 
-  for (const { name, transform, on } of CASES) {
+  for (const { name, transform, on, rtl } of CASES) {
     it(`maps world ↔ viewport and drags the body under the pointer: ${name}`, async () => {
+      if (rtl) document.documentElement.dir = 'rtl';
       scene = await mount(`width="10" height="10" gravity="0 0" bounds="none" paused background="#ffffff"`, BODIES, { width: SIZE, height: SIZE });
       const s = scene;
       const [crate, east, north] = ['#crate', '#east', '#north'].map((id) => s.querySelector<PhysicsBoxElement>(id)!);

@@ -220,6 +220,19 @@ describe('bad input', () => {
     w.applyBodyImpulse(blob.body, -0.2e9 * mass, 0);
     w.step();
     expect(allFinite(w)).to.equal(true);
+    // A body past the limit (gravity took it there) may still be slowed, or pushed along another axis.
+    const fast = new World({ gravity: { x: 0, y: 10 } });
+    const q = fast.addParticle({ x: 0, y: 0, mass: 1, vy: 1e9 });
+    const wheel = createBox(fast, { x: 5, y: 0, width: 1, height: 1, mass: 1 });
+    fast.step();
+    expect(fast.getVelocity(q).y).to.be.above(1e9);
+    fast.applyImpulse(q, 1, 0);
+    fast.applyImpulse(q, 0, -1);
+    throwsNaming(() => fast.applyImpulse(q, 0, 1), RangeError, 'vy + iy / mass');
+    fast.setBodyAngularVelocity(wheel.body, 1e9);
+    const spinInertia = fast.bodyMassInfo(wheel.body).inertia;
+    fast.applyBodyImpulse(wheel.body, 0, -spinInertia, 5.5, 0); // slows the spin
+    throwsNaming(() => fast.applyBodyImpulse(wheel.body, 0, 10 * spinInertia, 5.5, 0), RangeError, 'the turn the impulse leaves');
   });
 
   it('negative mass, length, radius or stiffness throw', () => {

@@ -69,11 +69,19 @@ export class CollisionEventsController implements ReactiveController {
       const pair = ka < kb ? `${ka} ${kb}` : `${kb} ${ka}`;
       const begin = data[o] === 0;
       const told = this.touching.get(pair);
-      let a = this.options.elementOf(ka) ?? null;
-      let b = this.options.elementOf(kb) ?? null;
-      if (begin) this.touching.set(pair, ka < kb ? [a, b] : [b, a]);
-      else if (told) {
-        [a, b] = ka < kb ? told : [told[1], told[0]];
+      // Begins and ends alternate per pair, as the page was told: a world that starts its pairs afresh (a kernel
+      // change) begins pairs told already, and an end can come for a pair the page never heard begin (events asked
+      // for while it touched).
+      if (begin === (told !== undefined)) continue;
+      let a: Element | null;
+      let b: Element | null;
+      if (begin) {
+        a = this.options.elementOf(ka) ?? null;
+        b = this.options.elementOf(kb) ?? null;
+        this.touching.set(pair, ka < kb ? [a, b] : [b, a]);
+      } else {
+        a = ka < kb ? told![0] : told![1];
+        b = ka < kb ? told![1] : told![0];
         this.touching.delete(pair);
       }
       firePhysicsEvent(this.host, begin ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] });
@@ -90,8 +98,4 @@ export class CollisionEventsController implements ReactiveController {
     for (const [a, b] of pairs) firePhysicsEvent(this.host, 'physics-collision-end', { a, b, normal: { x: 0, y: 0 }, depth: 0 });
   }
 
-  /** The scene stopped: nothing is touching any more, and no one is told (the elements are no longer its). */
-  forgetAll(): void {
-    this.touching.clear();
-  }
 }

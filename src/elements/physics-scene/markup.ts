@@ -189,14 +189,14 @@ export class MarkupSync implements SceneHost {
 
   /**
    * Why `snapshot` is not a state of this scene as its markup is now (the same bodies and links by key, with the same
-   * descriptions), or null when it is. Another scene's snapshot, or one taken before the markup changed, would leave
+   * descriptions unless `descriptions` is false), or null when it is. Another scene's snapshot, or one taken before the markup changed, would leave
    * the simulation out of step with the page: bodies drawn with other elements' colours, poses read off other bodies.
    */
-  mismatch(snapshot: { bodies: readonly { key: number; desc: unknown }[]; links: readonly { key: number; desc: unknown }[] }): string | null {
+  mismatch(snapshot: { bodies: readonly { key: number; desc: unknown }[]; links: readonly { key: number; desc: unknown }[] }, descriptions = true): string | null {
     const here = new Map<number, string>();
     for (const [key, entry] of this.entries) if (entry.sent) here.set(key, entry.sent);
     const there = [...snapshot.bodies, ...snapshot.links];
-    const differ = there.filter(({ key, desc }) => here.get(key) !== JSON.stringify(desc)).length;
+    const differ = there.filter(({ key, desc }) => !here.has(key) || (descriptions && here.get(key) !== JSON.stringify(desc))).length;
     if (differ === 0 && there.length === here.size) return null;
     return (
       `restore() takes a snapshot of this scene with its markup as it is now: this one holds ${there.length} bodies and links, ` +

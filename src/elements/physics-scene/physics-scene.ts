@@ -89,7 +89,8 @@ export class PhysicsSceneElement extends LitElement {
   }
 
   static set callTimeout(ms: number) {
-    if (typeof ms !== 'number' || !(ms > 0)) throw new RangeError(`PhysicsSceneElement.callTimeout must be a number of milliseconds > 0, got ${String(ms)}`);
+    if (typeof ms !== 'number') throw new TypeError(`PhysicsSceneElement.callTimeout must be a number of milliseconds, got ${typeof ms}`);
+    if (!(ms > 0)) throw new RangeError(`PhysicsSceneElement.callTimeout must be > 0 (milliseconds), got ${ms}`);
     callTimeoutMs = ms;
   }
 
@@ -205,8 +206,6 @@ export class PhysicsSceneElement extends LitElement {
         this.loading = false;
         this.loaded = true;
         this.recovery.keepSnapshot();
-        // A restart's world tells its touching pairs anew.
-        this.collisions.endAll();
         for (const e of errors) this.problems.refused(e);
         // Visibility may have changed while the scene loaded.
         this.syncRunning();
@@ -254,6 +253,8 @@ export class PhysicsSceneElement extends LitElement {
       lost: () => {
         this.pointer.cancel();
         this.runningChanged(false);
+        // The restarted world tells its touching pairs anew.
+        this.collisions.endAll();
       },
       resumed: () => this.syncRunning(),
       report: (message, keep) => this.problems.report(this, 'worker', this.worker, message, keep),
@@ -365,6 +366,14 @@ export class PhysicsSceneElement extends LitElement {
     this.problems.set('preset', this, problems);
   }
 
+  /**
+   * Whether restore() asks a snapshot's bodies to be described as the markup describes them now (false: the same keys
+   * suffice; a preset's own behaviour changes its generated bodies, and its snapshots must still restore).
+   */
+  protected get snapshotsMatchMarkup(): boolean {
+    return true;
+  }
+
   /** Called when the scene starts or stops stepping (pause, scrolled away, hidden page). */
   protected runningChanged(_running: boolean): void {}
 
@@ -407,8 +416,9 @@ export class PhysicsSceneElement extends LitElement {
   async reset(): Promise<void> {
     const engine = await this.session.whenReady();
     if (!engine) return;
-    await engine.api.reset();
+    // Before the call: begins of the new world may arrive before its reply does.
     this.collisions.endAll();
+    await engine.api.reset();
     await engine.synced(0);
     this.recovery.keepSnapshot();
   }
@@ -446,10 +456,10 @@ export class PhysicsSceneElement extends LitElement {
       const got = s === null || typeof s !== 'object' ? String(s) : `an object without its ${['world', 'bodies', 'links', 'params'].filter((k) => typeof (s as Record<string, unknown>)[k] !== 'object' || (s as Record<string, unknown>)[k] === null).join(', ') || 'bodies and links as arrays'}`;
       throw new TypeError(`restore() takes an object snapshot() gave, got ${got}`);
     }
-    const mismatch = engine ? this.markup.mismatch(snapshot) : null;
+    const mismatch = engine ? this.markup.mismatch(snapshot, this.snapshotsMatchMarkup) : null;
     if (mismatch) throw new RangeError(mismatch);
-    await engine?.api.restore(snapshot);
     this.collisions.endAll();
+    await engine?.api.restore(snapshot);
     this.recovery.keepSnapshot();
   }
 
@@ -690,7 +700,8 @@ export class PhysicsSceneElement extends LitElement {
     this.loading = true;
     this.loaded = false;
     this.problems.clear();
-    this.collisions.forgetAll();
+    // The pairs the page was told of end (a worker change restarts the scene with the same elements).
+    this.collisions.endAll();
     this.pointer.cancel();
     this.keyboard.cancel();
     this.markup.reset();

@@ -36,6 +36,10 @@ export const sceneStyles = css`
   .stage {
     position: absolute;
     inset: 0;
+    /* The canvas's corner markers (stage.ts) sit at their static position, which a right-to-left or vertical page
+       would move to the other side. */
+    direction: ltr;
+    writing-mode: horizontal-tb;
   }
   /*
    * The only child in flow: the box's width where the layout asks for one from the content (a flex row, an

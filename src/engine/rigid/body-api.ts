@@ -6,7 +6,7 @@ import { knownNames, mass as massOf, MIN_INERTIA, objectOf, positive } from '../
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { topologyChanged } from '../pipeline/topology.js';
-import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushSpeed, speed } from '../validate.js';
+import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushedSpeed, pushSpeed, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
 import type { JointSide } from './joint-setup.js';
 import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
@@ -96,7 +96,7 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
   const turn = (px - p.x[r.i]) * jy - (py - p.y[r.i]) * jx;
   if (impulse) {
     pushSpeed(IMPULSE_SPEED, jx, jy, sleep.awakeInvMass(r.i, p), 1, p.vx[r.i], p.vy[r.i]);
-    speed('the turn the impulse leaves (angularVelocity + its turn / inertia)', p.omega[r.i] + turn * sleep.awakeInvInertia(r.i, p));
+    pushedSpeed('the turn the impulse leaves (angularVelocity + its turn / inertia)', p.omega[r.i], p.omega[r.i] + turn * sleep.awakeInvInertia(r.i, p));
   } else {
     pushSpeed(FORCE_SPEED, p.fx[r.i] + jx, p.fy[r.i] + jy, sleep.awakeInvMass(r.i, p), seconds);
     speed('the turn the force adds (with the step\'s earlier torques) · timestep / inertia', (p.torque[r.i] + turn) * sleep.awakeInvInertia(r.i, p) * seconds);

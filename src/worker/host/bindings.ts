@@ -128,6 +128,9 @@ export class Bindings {
       const error = this.#link(l);
       if (error) errors.push(error);
     }
+    // Events wanted: the new world tracks its pairs from its first step (its first read would take the pairs touching
+    // then as already touching, and a pair a reset put in contact would never begin).
+    if (this.#settings.params.events) void this.world.events;
     this.#changed();
     return errors;
   }
@@ -341,8 +344,9 @@ export class Bindings {
       return;
     }
     const idx = w.bodyParticleIndices(a.handle!);
-    if (d.particle !== undefined && d.particle >= idx.length) throw new RangeError(`particle must be less than the body's particle count (${idx.length}), got ${d.particle}`);
-    const i = d.particle !== undefined ? idx[d.particle] : this.nearest(idx, d.x, d.y);
+    // A rigid body is pinned by its centre whatever `particle` says (its one row); a body of particles by the one named.
+    if (!a.rigid && d.particle !== undefined && d.particle >= idx.length) throw new RangeError(`particle must be less than the body's particle count (${idx.length}), got ${d.particle}`);
+    const i = a.rigid ? idx[0] : d.particle !== undefined ? idx[d.particle] : this.nearest(idx, d.x, d.y);
     try {
       l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
     } catch (error) {
