@@ -55,7 +55,7 @@ describe('CollisionEventsController', () => {
     expect(r.collisions.wanted).to.equal(false);
   });
 
-  it('dispatches begin and end events naming the body elements, bubbling and composed', () => {
+  it('dispatches begin and end events naming the body elements, bubbling and composed; an end of a pair never begun is dropped', () => {
     const r = rig();
     host = r.host;
     document.body.append(host);
@@ -64,14 +64,16 @@ describe('CollisionEventsController', () => {
     document.addEventListener('physics-collision', record);
     document.addEventListener('physics-collision-end', record);
     try {
-      r.collisions.dispatch(new Float64Array([0, 1, 2, 0, -1, 0.02, 1, 2, 9, 0, 0, 0, 0, 0, 0, 0, 0, 0]), 2);
+      // Begin (1, 2); end (2, 9), never begun; end (2, 1): the pair begun, named either way round; begin again.
+      r.collisions.dispatch(new Float64Array([0, 1, 2, 0, -1, 0.02, 1, 2, 9, 0, 0, 0, 1, 2, 1, 0, 0, 0, 0, 2, 1, 0, 1, 0.01]), 4);
     } finally {
       document.removeEventListener('physics-collision', record);
       document.removeEventListener('physics-collision-end', record);
     }
     expect(seen).to.deep.equal([
       ['physics-collision', { a: r.a, b: r.b, normal: { x: 0, y: -1 }, depth: 0.02 }, true, true],
-      ['physics-collision-end', { a: r.b, b: null, normal: { x: 0, y: 0 }, depth: 0 }, true, true],
+      ['physics-collision-end', { a: r.b, b: r.a, normal: { x: 0, y: 0 }, depth: 0 }, true, true],
+      ['physics-collision', { a: r.b, b: r.a, normal: { x: 0, y: 1 }, depth: 0.01 }, true, true],
     ]);
   });
 });
