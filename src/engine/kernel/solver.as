@@ -361,6 +361,16 @@ export function rigidBegin(packets: usize, count: i32, maxPush: f64): void {
   }
 }
 
+/**
+ * The material points' offset along the tangent t = (−ny, nx): (pA − pB)·t, each point its body's centre plus its
+ * lever turned by the angle since the reference (first order).
+ */
+function offsetAlong(ax: v128, ay: v128, bx: v128, by: v128, dA: v128, dB: v128, mAx: v128, mAy: v128, mBx: v128, mBy: v128, nx: v128, ny: v128): v128 {
+  const ux = f64x2.sub(f64x2.sub(f64x2.add(ax, mAx), f64x2.mul(dA, mAy)), f64x2.sub(f64x2.add(bx, mBx), f64x2.mul(dB, mBy)));
+  const uy = f64x2.sub(f64x2.add(f64x2.add(ay, mAy), f64x2.mul(dA, mAx)), f64x2.add(f64x2.add(by, mBy), f64x2.mul(dB, mBx)));
+  return f64x2.add(f64x2.mul(f64x2.neg(ux), ny), f64x2.mul(uy, nx));
+}
+
 /** One position sweep over `count` packets: normal correction, then friction, per point. */
 export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
   const zero = f64x2.splat(0);
@@ -405,7 +415,9 @@ export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: 
     const gy = f64x2.sub(f64x2.add(f64x2.add(ay, lAy), f64x2.mul(dA, lAx)), f64x2.add(f64x2.add(by, lBy), f64x2.mul(dB, lBx)));
     const g = f64x2.sub(f64x2.add(f64x2.mul(gx, nx), f64x2.mul(gy, ny)), fld(pk, 224));
     const acts = f64x2.gt(g, zero);
-    if (!v128.any_true(acts)) continue;
+    // Apart and not touched yet this step: slip becomes the whole drift (contact-solver.ts followApart).
+    const apart = v128.not(v128.or(fld(pk, 320), acts));
+    if (!v128.any_true(v128.or(acts, apart))) continue;
     const imA = fld(pk, 160);
     const iiA = fld(pk, 176);
     const imB = fld(pk, 192);
@@ -447,11 +459,10 @@ export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: 
     const rtB = f64x2.add(f64x2.mul(mBx, nx), f64x2.mul(mBy, ny));
     const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
     const holds = v128.and(v128.and(acts, v128.and(f64x2.ne(mu, zero), f64x2.gt(lambda, zero))), f64x2.gt(w, zero));
-    if (v128.any_true(holds)) {
-      const ux = f64x2.sub(f64x2.sub(f64x2.add(ax, mAx), f64x2.mul(dA, mAy)), f64x2.sub(f64x2.add(bx, mBx), f64x2.mul(dB, mBy)));
-      const uy = f64x2.sub(f64x2.add(f64x2.add(ay, mAy), f64x2.mul(dA, mAx)), f64x2.add(f64x2.add(by, mBy), f64x2.mul(dB, mBx)));
-      const slip = fld(pk, 288);
-      const drift = f64x2.sub(f64x2.add(f64x2.mul(f64x2.neg(ux), ny), f64x2.mul(uy, nx)), slip);
+    if (v128.any_true(v128.or(holds, apart))) {
+      const offset = offsetAlong(ax, ay, bx, by, dA, dB, mAx, mAy, mBx, mBy, nx, ny);
+      const slip = v128.bitselect(offset, fld(pk, 288), apart);
+      const drift = f64x2.sub(offset, slip);
       const want = f64x2.div(drift, w);
       const limit = f64x2.mul(mu, impulseN);
       const before = fld(pk, 272);
@@ -647,9 +658,12 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
     const over0 = f64x2.gt(g0, zero);
     const over1 = f64x2.gt(g1, zero);
     const acts = v128.or(over0, over1);
-    if (!v128.any_true(acts)) continue;
-    // The manifold acts: weights, and what the velocity pass reads, for both points.
     const two = mf(pk, 7);
+    // Apart and neither point touched yet this step: both slips become the drift (contact-solver.ts followApart), by
+    // the friction code below, which leaves such a lane's bodies as they are.
+    const apart = v128.not(v128.or(acts, v128.or(v128.load(q0, 160), v128.load(q1, 160))));
+    if (!v128.any_true(v128.or(acts, apart))) continue;
+    // The manifold acts: weights, and what the velocity pass reads, for both points.
     const imA = mf(pk, 3);
     const iiA = mf(pk, 4);
     const imB = mf(pk, 5);
@@ -751,13 +765,9 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
     // normal corrections.
     const mu = mf(pk, 2);
     const loaded = v128.and(acts, v128.and(f64x2.ne(mu, zero), v128.or(f64x2.gt(lambda0, zero), f64x2.gt(lambda1, zero))));
-    if (v128.any_true(loaded)) {
-      const drift0 = f64x2.add(
-        f64x2.mul(f64x2.neg(f64x2.sub(f64x2.sub(f64x2.add(ax1, mA0x), f64x2.mul(dA, mA0y)), f64x2.sub(f64x2.add(bx1, mB0x), f64x2.mul(dB, mB0y)))), ny),
-        f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay1, mA0y), f64x2.mul(dA, mA0x)), f64x2.add(f64x2.add(by1, mB0y), f64x2.mul(dB, mB0x))), nx));
-      const drift1 = f64x2.add(
-        f64x2.mul(f64x2.neg(f64x2.sub(f64x2.sub(f64x2.add(ax1, mA1x), f64x2.mul(dA, mA1y)), f64x2.sub(f64x2.add(bx1, mB1x), f64x2.mul(dB, mB1y)))), ny),
-        f64x2.mul(f64x2.sub(f64x2.add(f64x2.add(ay1, mA1y), f64x2.mul(dA, mA1x)), f64x2.add(f64x2.add(by1, mB1y), f64x2.mul(dB, mB1x))), nx));
+    if (v128.any_true(v128.or(loaded, apart))) {
+      const drift0 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA0x, mA0y, mB0x, mB0y, nx, ny);
+      const drift1 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA1x, mA1y, mB1x, mB1y, nx, ny);
       const rtA0 = f64x2.add(f64x2.mul(mA0x, nx), f64x2.mul(mA0y, ny));
       const rtB0 = f64x2.add(f64x2.mul(mB0x, nx), f64x2.mul(mB0y, ny));
       const rtA1 = f64x2.add(f64x2.mul(mA1x, nx), f64x2.mul(mA1y, ny));
@@ -765,8 +775,9 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
       const w0 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA0), rtA0)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB0), rtB0)));
       const w1 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA1), rtA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB1), rtB1)));
       const kt01 = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA0), rtA1)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB0), rtB1)));
-      const slip = mf(pk, 9);
-      const drift = f64x2.sub(v128.bitselect(f64x2.mul(half, f64x2.add(drift0, drift1)), drift0, two), slip);
+      const offset = v128.bitselect(f64x2.mul(half, f64x2.add(drift0, drift1)), drift0, two);
+      const slip = v128.bitselect(offset, mf(pk, 9), apart);
+      const drift = f64x2.sub(offset, slip);
       const la = v128.bitselect(f64x2.mul(half, f64x2.add(rtA0, rtA1)), rtA0, two);
       const lb = v128.bitselect(f64x2.mul(half, f64x2.add(rtB0, rtB1)), rtB0, two);
       const w = v128.bitselect(f64x2.add(f64x2.mul(quarter, f64x2.add(w0, w1)), f64x2.mul(half, kt01)), w0, two);
@@ -786,22 +797,16 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
       bxN = f64x2.sub(bx1, f64x2.mul(tlB, ny));
       byN = f64x2.add(by1, f64x2.mul(tlB, nx));
       angBN = f64x2.add(angB1, f64x2.mul(f64x2.mul(iiB, lb), dt));
-      if (i64x2.all_true(v128.and(holds, two))) {
-        mput(pk, 8, total);
-        mput(pk, 9, slipped);
-        mput(pk, 10, slipped);
-      } else {
-        // A lane where friction does not act keeps its bodies and state exactly.
-        mput(pk, 8, v128.bitselect(total, before, holds));
-        mput(pk, 9, v128.bitselect(slipped, slip, holds));
-        mput(pk, 10, v128.bitselect(slipped, mf(pk, 10), v128.and(holds, two)));
-        axN = v128.bitselect(axN, ax1, holds);
-        ayN = v128.bitselect(ayN, ay1, holds);
-        angAN = v128.bitselect(angAN, angA1, holds);
-        bxN = v128.bitselect(bxN, bx1, holds);
-        byN = v128.bitselect(byN, by1, holds);
-        angBN = v128.bitselect(angBN, angB1, holds);
-      }
+      // A lane where friction does not act keeps its bodies and state exactly.
+      mput(pk, 8, v128.bitselect(total, before, holds));
+      mput(pk, 9, v128.bitselect(slipped, slip, holds));
+      mput(pk, 10, v128.bitselect(slipped, v128.bitselect(offset, mf(pk, 10), apart), v128.and(holds, two)));
+      axN = v128.bitselect(axN, ax1, holds);
+      ayN = v128.bitselect(ayN, ay1, holds);
+      angAN = v128.bitselect(angAN, angA1, holds);
+      bxN = v128.bitselect(bxN, bx1, holds);
+      byN = v128.bitselect(byN, by1, holds);
+      angBN = v128.bitselect(angBN, angB1, holds);
     }
     scatter2(x, oa0, oa1, axN);
     scatter2(y, oa0, oa1, ayN);

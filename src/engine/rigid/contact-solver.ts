@@ -334,6 +334,15 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       gap[j] = g1;
     }
     if (g0 <= 0 && g1 <= 0) {
+      // Apart, and not touched yet this step: friction's reference follows the bodies (see followApart).
+      if (touched[i] === 0 && (!two || touched[j] === 0)) {
+        let apart = -(ax + mA0x - dA * mA0y - (onRow ? bx + mB0x - dB * mB0y : rBx[i])) * ny + (ay + mA0y + dA * mA0x - (onRow ? by + mB0y + dB * mB0x : rBy[i])) * nx;
+        if (two) {
+          apart = 0.5 * (apart + (-(ax + mA1x - dA * mA1y - (onRow ? bx + mB1x - dB * mB1y : rBx[j])) * ny + (ay + mA1y + dA * mA1x - (onRow ? by + mB1y + dB * mB1x : rBy[j])) * nx));
+          slip[j] = apart;
+        }
+        slip[i] = apart;
+      }
       if (two) i++;
       continue;
     }
@@ -478,6 +487,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
 /** A lone point on the general path (B an edge point of a particle-built outline). */
 function solvePoint(c: RigidContacts, r: BodyRows, i: number): void {
   overlap(c, r, i, 0);
+  if (pt[0] <= 0) followApart(c, r, i, false);
   if (pt[0] <= 0 || c.wn[i] === 0) return;
   if (c.touched[i] === 0 || c.restitution[i] > 0) touch(c, r, i);
   pt[1] = pt[0] / c.wn[i];
@@ -490,7 +500,10 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
   overlap(c, r, i + 1, 4);
   const d0 = pt[0];
   const d1 = pt[4];
-  if (d0 <= 0 && d1 <= 0) return;
+  if (d0 <= 0 && d1 <= 0) {
+    followApart(c, r, i, true);
+    return;
+  }
   if (d0 > 0 && (c.touched[i] === 0 || c.restitution[i] > 0)) touch(c, r, i);
   if (d1 > 0 && (c.touched[i + 1] === 0 || c.restitution[i + 1] > 0)) touch(c, r, i + 1);
   const k00 = c.wn[i];
@@ -519,6 +532,26 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
     pt[5] = pt[4] / k11;
     pushApart(c, r, i + 1, 4);
   }
+}
+
+/**
+ * A point (a manifold's two: their mean) that has not touched yet this step and does not overlap now: its slip
+ * becomes its whole drift, so that when it lands later in the step friction holds it from about that substep's start,
+ * not from the step's. Friction would otherwise undo what it slid through the air before landing: a disc thrown at
+ * a floor left it spinning backwards, or faster than it rolled, depending on when in the step it landed. Overwrites
+ * pt[0..1], pt[4..5].
+ */
+function followApart(c: RigidContacts, r: BodyRows, i: number, two: boolean): void {
+  if (c.touched[i] !== 0 || (two && c.touched[i + 1] !== 0)) return;
+  c.slip[i] = 0;
+  drift(c, r, i, 0);
+  if (two) {
+    c.slip[i + 1] = 0;
+    drift(c, r, i + 1, 4);
+    pt[0] = 0.5 * (pt[0] + pt[4]);
+    c.slip[i + 1] = pt[0];
+  }
+  c.slip[i] = pt[0];
 }
 
 /** Point i's tangential drift since the step began, less what has slid, into pt[o]. */
