@@ -43,7 +43,7 @@ export const FIELDS = {
       narrowPhase: `its mode is settings.narrowphase; the rest is ${SCRATCH}`,
       motion: PER_STEP,
       events: "the last step's events (cleared by restore())",
-      eventTracker: 'which pairs touched in the last step (cleared by restore(): touching pairs report begin again)',
+      eventTracker: 'which pairs touched in the last step (cleared by a restore() that succeeds: touching pairs report begin again)',
       breaks: "the last step's broken links (cleared by restore())",
       hasBreakableLinks: "derived from the distance table's breakStrain",
       topologyDirty: 'rebuilt by restore()',
@@ -246,7 +246,6 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   ctx.rigidContacts.count = 0;
   ctx.events.count = 0;
   ctx.breaks.count = 0;
-  ctx.eventTracker.clear();
   ctx.collidersDirty = true;
   ctx.topologyDirty = true;
   rebuildTopology(ctx);

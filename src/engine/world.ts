@@ -818,5 +818,7 @@ export class World {
       restoreContext(this.ctx, before);
       throw error;
     }
+    // Only a restore that happened forgets which pairs touch (they begin again): a refused one keeps the events going.
+    this.ctx.eventTracker.clear();
   }
 }

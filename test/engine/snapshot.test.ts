@@ -105,4 +105,25 @@ describe('snapshot and restore', () => {
     const settings = { ...world.snapshot().settings, timestep: -1 };
     expect(() => world.restore({ ...world.snapshot(), settings })).to.throw(RangeError, /timestep/);
   });
+
+  it('a refused restore() keeps the collision events going: the resting pairs do not begin again', () => {
+    const { world } = buildScene({ ...catalogue.stack.make(), world: { ...catalogue.stack.make().world, sleeping: false } });
+    for (let k = 0; k < 60; k++) world.step();
+    const begins = (): number => {
+      const e = world.events;
+      let n = 0;
+      for (let i = 0; i < e.count; i++) if (e.type[i] === 0) n++;
+      return n;
+    };
+    begins();
+    world.step();
+    expect(begins(), 'a resting stack, events read from here on').to.equal(0);
+    expect(() => world.restore(JSON.parse(JSON.stringify(world.snapshot())) as WorldSnapshot)).to.throw(TypeError);
+    world.step();
+    expect(begins(), 'the step after a refused restore').to.equal(0);
+    // A restore that succeeds starts afresh: the touching pairs begin again.
+    world.restore(world.snapshot());
+    world.step();
+    expect(begins()).to.be.greaterThan(5);
+  });
 });
