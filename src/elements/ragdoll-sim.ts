@@ -42,7 +42,7 @@ const respawnAttribute = {
  * @fires physics-error - A bad attribute value or a failing engine (detail: `{element, attribute, value, message}`); the scene keeps running with the default.
  *
  * @csspart stage - The box that holds the canvas.
- * @csspart canvas - The p5 canvas.
+ * @csspart canvas - The p5 canvas. A margin, border or padding given to it is allowed for: pointers and coordinates map to its content box.
  * @csspart status - The loading message.
  * @csspart error - The visible list of current problems.
  * @csspart play-button - The play control (reduced motion, or paused with Space).

@@ -123,6 +123,53 @@ describe('<physics-scene> transformed by the page', () => {
     });
   }
 
+  it("a page's ::part(canvas) margin, border and padding: the view is mapped where its content box is, a press takes the body there", async () => {
+    const sheet = document.createElement('style');
+    sheet.textContent = 'physics-scene.framed::part(canvas) { margin: 12px 0 0 20px; border: 3px solid #000; padding: 5px 7px 4px 6px; }';
+    document.head.append(sheet);
+    try {
+      scene = await mount(`class="framed" width="10" height="10" gravity="0 0" bounds="none" paused background="#ffffff"`, BODIES, { width: SIZE, height: SIZE });
+      const s = scene;
+      const crate = s.querySelector<PhysicsBoxElement>('#crate')!;
+      await waitFor(() => s.canvas !== null, 'the canvas');
+      await simulated(s, crate);
+      await drawn(s, 2);
+      const canvas = s.canvas!;
+      const box = canvas.getBoundingClientRect();
+      // The content box: inside the 3 px border and the padding; its CSS size is what the renderer draws in.
+      const content = { left: box.left + 3 + 6, top: box.top + 3 + 5, width: box.width - 6 - 6 - 7, height: box.height - 6 - 5 - 4 };
+      expect(box.left - s.getBoundingClientRect().left, 'the margin moved the canvas').to.be.closeTo(20, 0.01);
+      for (const [x, y] of [[0, 0], [10, 0], [10, 10], [3, 5], [8.9, 1.1]]) {
+        const client = s.worldToClient(x, y);
+        expect(client.x, `client x of (${x}, ${y})`).to.be.closeTo(content.left + (x / 10) * content.width, 0.01);
+        expect(client.y, `client y of (${x}, ${y})`).to.be.closeTo(content.top + (y / 10) * content.height, 0.01);
+        const back = s.clientToWorld(client.x, client.y);
+        expect(back.x).to.be.closeTo(x, 1e-6);
+        expect(back.y).to.be.closeTo(y, 1e-6);
+      }
+      // The canvas shows the crate where worldToClient says (offsetX / offsetY count from the padding box).
+      const at = s.worldToClient(3, 5);
+      const seen = browserCanvasPoint(canvas, at.x, at.y);
+      expect(colourDistance(canvasPixel(canvas, seen.x - 6, seen.y - 5), rgb('#ff0000')), 'colour under the crate').to.be.below(8);
+      const press = (type: string, y: number) => {
+        const p = s.worldToClient(3, y);
+        const init = { clientX: p.x, clientY: p.y, pointerId: 9, pointerType: 'mouse', isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 };
+        canvas.dispatchEvent(new PointerEvent(type, { ...init, bubbles: true, composed: true, cancelable: true }));
+      };
+      press('pointerdown', 5);
+      await s.step(1);
+      for (let k = 1; k <= 10; k++) {
+        press('pointermove', 5 + 0.25 * k);
+        await s.step(2);
+      }
+      await s.step(30);
+      press('pointerup', 7.5);
+      expect(crate.y, 'the crate followed the drag').to.be.closeTo(7.5, 0.1);
+    } finally {
+      sheet.remove();
+    }
+  });
+
   it('a plane turned edge-on maps nothing (NaN) and a press on it takes nothing', async () => {
     scene = await mount(`width="10" height="10" gravity="0 0" bounds="none" paused`, BODIES, { width: SIZE, height: SIZE });
     const s = scene;

@@ -64,7 +64,7 @@ let callTimeoutMs = 8000;
  * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
  *
  * @csspart stage - The box that holds the canvas.
- * @csspart canvas - The p5 canvas.
+ * @csspart canvas - The p5 canvas. A margin, border or padding given to it is allowed for: pointers and coordinates map to its content box.
  * @csspart status - The loading message shown until the engine runs.
  * @csspart error - The visible list of current problems (bad attributes, a failing engine).
  * @csspart play-button - The play control, shown when the scene started paused for `prefers-reduced-motion` or was paused with Space.

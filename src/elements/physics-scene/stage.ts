@@ -161,11 +161,21 @@ export class StageController implements ReactiveController {
   private onScreen(): Matrix | null {
     const canvas = this.canvas;
     if (!canvas) return null;
-    const w = canvas.clientWidth;
-    const h = canvas.clientHeight;
+    let w = canvas.clientWidth;
+    let h = canvas.clientHeight;
     let corners: Point[];
-    if (this.corners?.beside(canvas)) corners = this.corners.read(w, h);
-    else {
+    if (this.corners?.beside(canvas)) {
+      // The view is drawn in the canvas's content box: a page's ::part(canvas) margin, border or padding moves it
+      // from where the markers start, and padding takes from clientWidth / clientHeight.
+      const style = getComputedStyle(canvas);
+      const left = parseFloat(style.paddingLeft) || 0;
+      const top = parseFloat(style.paddingTop) || 0;
+      w -= left + (parseFloat(style.paddingRight) || 0);
+      h -= top + (parseFloat(style.paddingBottom) || 0);
+      const x = (parseFloat(style.marginLeft) || 0) + (parseFloat(style.borderLeftWidth) || 0) + left;
+      const y = (parseFloat(style.marginTop) || 0) + (parseFloat(style.borderTopWidth) || 0) + top;
+      corners = this.corners.read(x, y, w, h);
+    } else {
       // A canvas that is not the renderer's own in the stage (unit tests' fakes): its box, exact for translation and
       // scale only.
       const r = canvas.getBoundingClientRect();
@@ -187,9 +197,8 @@ type Matrix = number[];
  */
 class CanvasCorners {
   private readonly marks: HTMLElement[];
-  /** The canvas size the markers are placed for. */
-  private w = 0;
-  private h = 0;
+  /** The content box (its offset from the canvas's margin box, and its size) the markers are placed for. */
+  private placed = '';
 
   constructor(private readonly container: HTMLElement) {
     this.marks = [0, 1, 2, 3].map(() => {
@@ -208,14 +217,19 @@ class CanvasCorners {
     return canvas.parentNode === this.container;
   }
 
-  /** The viewport positions of the canvas corners (0, 0), (w, 0), (w, h), (0, h), as laid out now. */
-  read(w: number, h: number): Point[] {
-    if (w !== this.w || h !== this.h) {
-      // Margins move each marker from the canvas's top-left corner to its own (written only on a resize).
-      this.w = w;
-      this.h = h;
-      this.marks[1].style.marginLeft = this.marks[2].style.marginLeft = `${w}px`;
-      this.marks[2].style.marginTop = this.marks[3].style.marginTop = `${h}px`;
+  /**
+   * The viewport positions of the corners (0, 0), (w, 0), (w, h), (0, h) of the canvas's content box, which starts
+   * (x, y) from its margin box, as laid out now.
+   */
+  read(x: number, y: number, w: number, h: number): Point[] {
+    const placed = `${x} ${y} ${w} ${h}`;
+    if (placed !== this.placed) {
+      // Margins move each marker from the canvas's top-left corner to its own (written only when the box changes).
+      this.placed = placed;
+      this.marks[0].style.marginLeft = this.marks[3].style.marginLeft = `${x}px`;
+      this.marks[1].style.marginLeft = this.marks[2].style.marginLeft = `${x + w}px`;
+      this.marks[0].style.marginTop = this.marks[1].style.marginTop = `${y}px`;
+      this.marks[2].style.marginTop = this.marks[3].style.marginTop = `${y + h}px`;
     }
     return this.marks.map((m) => {
       const r = m.getBoundingClientRect();
