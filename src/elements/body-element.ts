@@ -170,15 +170,16 @@ export abstract class PhysicsBodyElement extends LitElement {
   protected material(check: Checker, out: Record<string, unknown>, area: number | null, size = '', particles = 1): boolean {
     const mass = check.number('mass', this.mass, { positive: true, min: MIN_MASS });
     const density = check.number('density', this.density, { positive: true });
+    // The mass the engine makes from density (default 1) × area, when no mass is written.
+    const total = area === null ? NaN : (density ?? 1) * area;
     if (mass !== undefined) out.mass = mass;
-    else if (area !== null && !this.isStatic && !((density ?? 1) * area >= MIN_MASS * particles && Number.isFinite((density ?? 1) * area))) {
-      const total = (density ?? 1) * area;
+    else if (area !== null && !this.isStatic && !(total >= MIN_MASS * particles && Number.isFinite(total))) {
       const blame = density !== undefined || !size ? 'density' : size;
       const each = particles > 1 ? `, ${total / particles} for each of its ${particles} particles` : '';
       const rule = Number.isFinite(total) ? `below the smallest, ${MIN_MASS}${particles > 1 ? ' each' : ''}: set mass, or a larger size` : 'not a finite number: set mass';
       check.fail(blame, shownValue(this, blame), `gives a mass of ${total} (density × area${each}), ${rule}`);
       return false;
-    } else if (density !== undefined && area !== null && area > 0) out.mass = density * area;
+    } else if (density !== undefined && area !== null && area > 0) out.mass = total;
     if (this.isStatic) out.static = true;
     const friction = check.number('friction', this.friction, { min: 0 });
     if (friction !== undefined) out.friction = friction;
