@@ -40,7 +40,7 @@ const PACKET: usize = 80;
  * One Gauss–Seidel sweep over every distance constraint: the runs, then the packets (XPBD; h2 = substep²). `fresh`: the
  * first sweep of a substep, whose multipliers start at zero (saves a pass to clear them).
  */
-export function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, runCount: i32, packets: usize, count: i32, h2: f64, fresh: bool): void {
+function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, runCount: i32, packets: usize, count: i32, h2: f64, fresh: bool): void {
   for (let r = 0; r < runCount; r++) {
     const rec = runs + <usize>r * RUN;
     const a = <usize>load<i32>(rec);
@@ -224,7 +224,7 @@ function solvePackets(x: usize, y: usize, invMass: usize, packets: usize, count:
  * x += v·damp·h + a·h². With `forces`, the acceleration is gx + fx·invMass (the JS accelerate phase, fused: no
  * springs); without, it is read from the ax/ay columns. Columns are f64 arrays at the given byte addresses.
  */
-export function integrateVerlet(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, ax: usize, ay: usize, invMass: usize, n: i32, h: f64, damp: f64, forces: bool, gx: f64, gy: f64): void {
+function integrateVerlet(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, ax: usize, ay: usize, invMass: usize, n: i32, h: f64, damp: f64, forces: bool, gx: f64, gy: f64): void {
   if (forces) integrate(x, y, px, py, vx, vy, ax, ay, invMass, n, h, damp, true, gx, gy);
   else integrate(x, y, px, py, vx, vy, ax, ay, invMass, n, h, damp, false, gx, gy);
 }
@@ -255,7 +255,7 @@ export function integrateVerlet(x: usize, y: usize, px: usize, py: usize, vx: us
 }
 
 /** Velocities from the substep's motion: v = (x − px)·(1/h), rows [0, n) rounded up to even. */
-export function updateVelocities(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, n: i32, inv: f64): void {
+function updateVelocities(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, n: i32, inv: f64): void {
   const vinv = f64x2.splat(inv);
   for (let i = 0; i < n; i += 2) {
     const o = <usize>i << 3;
@@ -309,7 +309,7 @@ const RIGID_PACKET: usize = 448;
  * (read from their columns: the world's row has 0), λn, the impulses, slip and touched 0 (gap is written by every
  * sweep before it is read). A copy a field, no arithmetic: the same doubles as the table's.
  */
-export function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, invInertia: usize, packets: usize, world: usize): void {
+function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, invInertia: usize, packets: usize, world: usize): void {
   const column = cap << 3;
   const ints = stage + column * 10;
   for (let i = 0; i < n; i++) {
@@ -350,7 +350,7 @@ export function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, in
 }
 
 /** The substep's start (RigidContacts.beginSubstep): λn 0, allowances shrink by maxPush. */
-export function rigidBegin(packets: usize, count: i32, maxPush: f64): void {
+function rigidBegin(packets: usize, count: i32, maxPush: f64): void {
   const zero = f64x2.splat(0);
   const push = f64x2.splat(maxPush);
   for (let k = 0; k < count; k++) {
@@ -372,7 +372,7 @@ function offsetAlong(ax: v128, ay: v128, bx: v128, by: v128, dA: v128, dB: v128,
 }
 
 /** One position sweep over `count` packets: normal correction, then friction, per point. */
-export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
+function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
   const zero = f64x2.splat(0);
   for (let k = 0; k < count; k++) {
     const pk = packets + <usize>k * RIGID_PACKET;
@@ -489,7 +489,7 @@ export function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: 
 }
 
 /** The velocity pass (restitution 0): each point that acted this substep gets normal speed 0. */
-export function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32): void {
+function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32): void {
   const zero = f64x2.splat(0);
   for (let k = 0; k < count; k++) {
     const pk = packets + <usize>k * RIGID_PACKET;
@@ -523,6 +523,29 @@ export function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usi
     vbx = f64x2.add(vbx, f64x2.mul(mpB, nx));
     vby = f64x2.add(vby, f64x2.mul(mpB, ny));
     wb = f64x2.add(wb, f64x2.mul(fld(pk, 208), f64x2.mul(p, fld(pk, 416))));
+    // Friction for the impulse (contact-solver.ts impactFriction): the sliding at the contact cut by up to μ·p.
+    const imA = fld(pk, 160);
+    const iiA = fld(pk, 176);
+    const imB = fld(pk, 192);
+    const iiB = fld(pk, 208);
+    const mu = fld(pk, 144);
+    const rtA = f64x2.add(f64x2.mul(fld(pk, 336), nx), f64x2.mul(fld(pk, 352), ny));
+    const rtB = f64x2.add(f64x2.mul(fld(pk, 368), nx), f64x2.mul(fld(pk, 384), ny));
+    const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
+    // Only in the substep the point first acts in (its step's corrections are this substep's), as in the JS.
+    const slides = v128.and(v128.and(v128.and(f64x2.gt(p, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)), f64x2.eq(fld(pk, 256), fld(pk, 240)));
+    if (v128.any_true(slides)) {
+      // vt = −rvx·ny + rvy·nx + wb·rtB − wa·rtA; a lane that does not slide adds 0.
+      const vt = f64x2.sub(f64x2.add(f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(vbx, vax)), ny), f64x2.mul(f64x2.sub(vby, vay), nx)), f64x2.mul(wb, rtB)), f64x2.mul(wa, rtA));
+      const limit = f64x2.mul(mu, p);
+      const pt = v128.and(f64x2.pmax(f64x2.pmin(f64x2.div(f64x2.neg(vt), w), limit), f64x2.neg(limit)), slides);
+      vax = f64x2.add(vax, f64x2.mul(f64x2.mul(imA, pt), ny));
+      vay = f64x2.sub(vay, f64x2.mul(f64x2.mul(imA, pt), nx));
+      wa = f64x2.sub(wa, f64x2.mul(f64x2.mul(iiA, rtA), pt));
+      vbx = f64x2.sub(vbx, f64x2.mul(f64x2.mul(imB, pt), ny));
+      vby = f64x2.add(vby, f64x2.mul(f64x2.mul(imB, pt), nx));
+      wb = f64x2.add(wb, f64x2.mul(f64x2.mul(iiB, rtB), pt));
+    }
     scatter2(vx, oa0, oa1, vax);
     scatter2(vy, oa0, oa1, vay);
     scatter2(omega, oa0, oa1, wa);
@@ -560,7 +583,7 @@ const P1: usize = 16 + 16 * 30;
 }
 
 /** The substep's start for manifold packets: λn 0, allowances shrink by maxPush (+∞ stays +∞). */
-export function manifoldBegin(packets: usize, count: i32, maxPush: f64): void {
+function manifoldBegin(packets: usize, count: i32, maxPush: f64): void {
   const zero = f64x2.splat(0);
   const push = f64x2.splat(maxPush);
   for (let k = 0; k < count; k++) {
@@ -580,7 +603,7 @@ export function manifoldBegin(packets: usize, count: i32, maxPush: f64): void {
 }
 
 /** One position sweep over `count` manifold packets (solveRigidContacts' inline path, lane by lane). */
-export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
+function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, rs: usize, packets: usize, count: i32): void {
   const zero = f64x2.splat(0);
   const half = f64x2.splat(0.5);
   const quarter = f64x2.splat(0.25);
@@ -818,7 +841,7 @@ export function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, r
 }
 
 /** The velocity pass over manifold packets (restitution 0: target speed 0); h the substep's length. */
-export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32, h: f64): void {
+function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, count: i32, h: f64): void {
   const zero = f64x2.splat(0);
   const tiny = f64x2.splat(1e-9);
   const twice = f64x2.splat(2);
@@ -907,6 +930,28 @@ export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: 
       nvby = v128.bitselect(nvby, vby, kicks);
       nwb = v128.bitselect(nwb, wb, kicks);
     }
+    // Friction for the impulse, as for single points, at the first point's levers (a face's two points have the same
+    // lever along n, so the same turn and speed along t).
+    const imA = mf(pk, 3);
+    const iiA = mf(pk, 4);
+    const imB = mf(pk, 5);
+    const iiB = mf(pk, 6);
+    const mu = mf(pk, 2);
+    const rtA = f64x2.add(f64x2.mul(v128.load(q0, 16 * 11), nx), f64x2.mul(v128.load(q0, 16 * 12), ny));
+    const rtB = f64x2.add(f64x2.mul(v128.load(q0, 16 * 13), nx), f64x2.mul(v128.load(q0, 16 * 14), ny));
+    const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
+    const slides = v128.and(v128.and(kicks, f64x2.eq(v128.load(q0, 128), v128.load(q0, 112))), v128.and(v128.and(f64x2.gt(P, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)));
+    if (v128.any_true(slides)) {
+      const vt = f64x2.sub(f64x2.add(f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(nvbx, nvax)), ny), f64x2.mul(f64x2.sub(nvby, nvay), nx)), f64x2.mul(nwb, rtB)), f64x2.mul(nwa, rtA));
+      const limit = f64x2.mul(mu, P);
+      const pt = v128.and(f64x2.pmax(f64x2.pmin(f64x2.div(f64x2.neg(vt), w), limit), f64x2.neg(limit)), slides);
+      nvax = f64x2.add(nvax, f64x2.mul(f64x2.mul(imA, pt), ny));
+      nvay = f64x2.sub(nvay, f64x2.mul(f64x2.mul(imA, pt), nx));
+      nwa = f64x2.sub(nwa, f64x2.mul(f64x2.mul(iiA, rtA), pt));
+      nvbx = f64x2.sub(nvbx, f64x2.mul(f64x2.mul(imB, pt), ny));
+      nvby = f64x2.add(nvby, f64x2.mul(f64x2.mul(imB, pt), nx));
+      nwb = f64x2.add(nwb, f64x2.mul(f64x2.mul(iiB, rtB), pt));
+    }
     scatter2(vx, oa0, oa1, nvax);
     scatter2(vy, oa0, oa1, nvay);
     scatter2(omega, oa0, oa1, nwa);
@@ -915,3 +960,18 @@ export function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: 
     scatter2(omega, ob0, ob1, nwb);
   }
 }
+
+// The exports under one-letter names (wasm-kernel.ts KernelExports maps them back): a name is written in the module and
+// again in the JS that calls it, in every build that ships the kernel.
+export {
+  solveDistances as a,
+  integrateVerlet as b,
+  updateVelocities as c,
+  rigidLayout as d,
+  rigidBegin as e,
+  rigidSweep as f,
+  rigidVelocities as g,
+  manifoldBegin as h,
+  manifoldSweep as i,
+  manifoldVelocities as j,
+};

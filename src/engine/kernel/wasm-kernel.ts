@@ -59,46 +59,60 @@ const RUN_BYTES = 32;
 const PAIR_BYTES = [16, 32, 64];
 const PAGE = 65536;
 
+/**
+ * solver.as's exports, under the one-letter names it gives them (each name ships in the module and again here): the
+ * comment on each names its function there.
+ */
 interface KernelExports {
-  solveDistances(x: number, y: number, invMass: number, runs: number, runCount: number, packets: number, count: number, h2: number, fresh: boolean): void;
-  integrateVerlet(x: number, y: number, px: number, py: number, vx: number, vy: number, ax: number, ay: number, invMass: number, n: number, h: number, damp: number, forces: boolean, gx: number, gy: number): void;
-  updateVelocities(x: number, y: number, px: number, py: number, vx: number, vy: number, n: number, inv: number): void;
-  rigidBegin(packets: number, count: number, maxPush: number): void;
-  rigidSweep(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
-  rigidVelocities(vx: number, vy: number, omega: number, packets: number, count: number): void;
-  rigidLayout(stage: number, cap: number, n: number, invMass: number, invInertia: number, packets: number, world: number): void;
-  manifoldBegin(packets: number, count: number, maxPush: number): void;
-  manifoldSweep(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
-  manifoldVelocities(vx: number, vy: number, omega: number, packets: number, count: number, h: number): void;
+  /** solveDistances */
+  a(x: number, y: number, invMass: number, runs: number, runCount: number, packets: number, count: number, h2: number, fresh: boolean): void;
+  /** integrateVerlet */
+  b(x: number, y: number, px: number, py: number, vx: number, vy: number, ax: number, ay: number, invMass: number, n: number, h: number, damp: number, forces: boolean, gx: number, gy: number): void;
+  /** updateVelocities */
+  c(x: number, y: number, px: number, py: number, vx: number, vy: number, n: number, inv: number): void;
+  /** rigidBegin */
+  e(packets: number, count: number, maxPush: number): void;
+  /** rigidSweep */
+  f(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
+  /** rigidVelocities */
+  g(vx: number, vy: number, omega: number, packets: number, count: number): void;
+  /** rigidLayout */
+  d(stage: number, cap: number, n: number, invMass: number, invInertia: number, packets: number, world: number): void;
+  /** manifoldBegin */
+  h(packets: number, count: number, maxPush: number): void;
+  /** manifoldSweep */
+  i(x: number, y: number, angle: number, qangle: number, rc: number, rs: number, packets: number, count: number): void;
+  /** manifoldVelocities */
+  j(vx: number, vy: number, omega: number, packets: number, count: number, h: number): void;
 }
 
 export class WasmKernel {
   readonly name = 'wasm';
-  private memory = new WebAssembly.Memory({ initial: 1 });
-  private exports: KernelExports;
+  #memory = new WebAssembly.Memory({ initial: 1 });
+  #exports: KernelExports;
   /** Byte address of each column in the memory (valid while the columns are views into it). */
-  private readonly address = Object.fromEntries(COLUMNS.map((c) => [c, 0])) as Record<KernelColumn, number>;
+  readonly #address = Object.fromEntries(COLUMNS.map((c) => [c, 0])) as Record<KernelColumn, number>;
   /** Rows the columns have room for (their length; the memory holds SPARE_ROWS more, zero). */
-  private capacity = 0;
-  private runAddress = 0;
+  #capacity = 0;
+  #runAddress = 0;
   runCount = 0;
-  private runs: RunLayout | null = null;
+  #runs: RunLayout | null = null;
   /** Byte address of each run's lane data. */
-  private runData: Int32Array = new Int32Array(0);
-  private packetAddress = 0;
+  #runData: Int32Array = new Int32Array(0);
+  #packetAddress = 0;
   packetCount = 0;
   /** Per packet lane: the distance row it solves, -1 for padding. */
-  private packetRows: Int32Array = new Int32Array(0);
+  #packetRows: Int32Array = new Int32Array(0);
   /** Distance rows laid out (runs and packets): a different count means the table changed. */
-  private laidOutRows = -1;
+  #laidOutRows = -1;
   /** The memory as f64 and i32 words (made with each layout: the memory only grows then). */
-  private f64: Float64Array = new Float64Array(0);
-  private i32: Int32Array = new Int32Array(0);
+  #f64: Float64Array = new Float64Array(0);
+  #i32: Int32Array = new Int32Array(0);
   /** The constraints changed (find the runs again), or some limits did (copy them again). */
-  private structureChanged = true;
-  private limitsChanged = false;
+  #structureChanged = true;
+  #limitsChanged = false;
   /** No sweep has run since the multipliers were reset. */
-  private freshLambdas = true;
+  #freshLambdas = true;
   /** Layouts made (diagnostics and tests: steady stepping makes none). */
   layouts = 0;
   /** This step's rigid contacts run in the lanes (set by beginRigid, cleared by endRigid). */
@@ -109,30 +123,33 @@ export class WasmKernel {
   rigidLaneSteps = 0;
   rigidJsSteps = 0;
   /** Byte address of the rigid packets (after the distance data), room for how many bytes, and how many this step. */
-  private rigidAddress = 0;
-  private rigidCapacity = 0;
-  private rigidPackets = 0;
+  #rigidAddress = 0;
+  #rigidCapacity = 0;
+  #rigidPackets = 0;
   /** This step's contacts are laid out by manifold (some are pairs): manifold packets, else single-point packets. */
-  private manifolds = false;
+  #manifolds = false;
   /** The step's substep reals ([0]: the substep's length, which the manifolds' velocity pass reads). */
-  private substepReals: Float64Array = new Float64Array(1);
+  #substepReals: Float64Array = new Float64Array(1);
   /** Steps laid out by manifold (diagnostics and tests). */
   manifoldSteps = 0;
   /** Colouring: per row, masks of the colours it takes part in (with movable bodies: 0-31, 32-63; with a static body
    *  or the world: 0-31, 32-63). */
-  private masks = new Uint32Array(0);
+  #masks = new Uint32Array(0);
   /** Per contact: its colour (64 + k for the static colours), then its lane (packet s >> 1, lane s & 1). */
-  private colourOf = new Int16Array(0);
-  private slotOf = new Int32Array(0);
-  private readonly batchSize = new Int32Array(2 * COLOURS);
-  private readonly batchCursor = new Int32Array(2 * COLOURS + 1);
+  #colourOf = new Int16Array(0);
+  #slotOf = new Int32Array(0);
+  readonly #batchSize = new Int32Array(2 * COLOURS);
+  readonly #batchCursor = new Int32Array(2 * COLOURS + 1);
 
-  constructor(private readonly module: WebAssembly.Module) {
-    this.exports = this.instantiate();
+  readonly #module: WebAssembly.Module;
+
+  constructor(module: WebAssembly.Module) {
+    this.#module = module;
+    this.#exports = this.#instantiate();
   }
 
-  private instantiate(): KernelExports {
-    return new WebAssembly.Instance(this.module, { env: { memory: this.memory } }).exports as unknown as KernelExports;
+  #instantiate(): KernelExports {
+    return new WebAssembly.Instance(this.#module, { env: { memory: this.#memory } }).exports as unknown as KernelExports;
   }
 
   /**
@@ -141,32 +158,32 @@ export class WasmKernel {
    * every typed-array access of the JS code after it (measured: S3 under the JS solver 2.65 → 3.35 ms a step, the
    * narrow phase and the rigid solver alike, once any memory in the process had grown).
    */
-  private replaceMemory(bytes: number, keep: boolean): void {
-    const old = this.memory;
-    this.memory = new WebAssembly.Memory({ initial: Math.ceil(bytes / PAGE) });
-    if (keep) new Uint8Array(this.memory.buffer).set(new Uint8Array(old.buffer));
-    this.exports = this.instantiate();
+  #replaceMemory(bytes: number, keep: boolean): void {
+    const old = this.#memory;
+    this.#memory = new WebAssembly.Memory({ initial: Math.ceil(bytes / PAGE) });
+    if (keep) new Uint8Array(this.#memory.buffer).set(new Uint8Array(old.buffer));
+    this.#exports = this.#instantiate();
   }
 
   /** Bodies, particles or constraints were added, removed or restored. */
   topologyChanged(): void {
-    this.structureChanged = true;
+    this.#structureChanged = true;
   }
 
   /** Some links' limits changed (they broke). */
   distanceLimitsChanged(): void {
-    this.limitsChanged = true;
+    this.#limitsChanged = true;
   }
 
   /** Before a step's substeps: the columns live in the memory, the runs and packets match the constraints. */
   beginStep(ctx: StepContext): void {
     const { particles: p, constraints } = ctx;
     const c = constraints.distances;
-    let layout = this.structureChanged || c.count !== this.laidOutRows;
-    for (const name of COLUMNS) if (p[name].buffer !== this.memory.buffer) layout = true;
+    let layout = this.#structureChanged || c.count !== this.#laidOutRows;
+    for (const name of COLUMNS) if (p[name].buffer !== this.#memory.buffer) layout = true;
     // A link whose limits no longer fit its run's kind (only a break changes them, and a broken link fits any kind).
-    if (!layout && this.limitsChanged && !this.copyLimits(c)) layout = true;
-    if (layout) this.layOut(ctx);
+    if (!layout && this.#limitsChanged && !this.#copyLimits(c)) layout = true;
+    if (layout) this.#layOut(ctx);
   }
 
   /**
@@ -174,37 +191,26 @@ export class WasmKernel {
    * fused; the ax/ay columns are then not written); null: read from ax/ay (springs added to them).
    */
   integrateVerlet(p: ParticleStore, h: number, damp: number, gravity: { x: number; y: number } | null): void {
-    const m = this.address;
-    if (gravity) this.exports.integrateVerlet(m.x, m.y, m.px, m.py, m.vx, m.vy, m.fx, m.fy, m.invMass, p.count, h, damp, true, gravity.x, gravity.y);
-    else this.exports.integrateVerlet(m.x, m.y, m.px, m.py, m.vx, m.vy, m.ax, m.ay, m.invMass, p.count, h, damp, false, 0, 0);
+    const m = this.#address;
+    if (gravity) this.#exports.b(m.x, m.y, m.px, m.py, m.vx, m.vy, m.fx, m.fy, m.invMass, p.count, h, damp, true, gravity.x, gravity.y);
+    else this.#exports.b(m.x, m.y, m.px, m.py, m.vx, m.vy, m.ax, m.ay, m.invMass, p.count, h, damp, false, 0, 0);
   }
 
   updateVelocities(p: ParticleStore, h: number): void {
-    const m = this.address;
-    this.exports.updateVelocities(m.x, m.y, m.px, m.py, m.vx, m.vy, p.count, 1 / h);
+    const m = this.#address;
+    this.#exports.c(m.x, m.y, m.px, m.py, m.vx, m.vy, p.count, 1 / h);
   }
 
   /** The multipliers start each substep at zero: the next sweep does not read them. */
   resetLambdas(): void {
-    this.freshLambdas = true;
+    this.#freshLambdas = true;
   }
 
   solveDistances(h2: number): void {
     if (this.runCount === 0 && this.packetCount === 0) return;
-    const m = this.address;
-    this.exports.solveDistances(m.x, m.y, m.invMass, this.runAddress, this.runCount, this.packetAddress, this.packetCount, h2, this.freshLambdas);
-    this.freshLambdas = false;
-  }
-
-  /** Bytes of memory the kernel holds (diagnostics). */
-  get memoryBytes(): number {
-    return this.memory.buffer.byteLength;
-  }
-
-  /** Distance rows solved in runs and in packets (diagnostics and tests). */
-  get layoutCounts(): { runs: number; runLinks: number; packetLinks: number } {
-    const runLinks = this.runs ? this.runs.rows.reduce((n, r) => n + (r >= 0 ? 1 : 0), 0) : 0;
-    return { runs: this.runCount, runLinks, packetLinks: this.packetRows.reduce((n, r) => n + (r >= 0 ? 1 : 0), 0) };
+    const m = this.#address;
+    this.#exports.a(m.x, m.y, m.invMass, this.#runAddress, this.runCount, this.#packetAddress, this.packetCount, h2, this.#freshLambdas);
+    this.#freshLambdas = false;
   }
 
   /**
@@ -224,19 +230,19 @@ export class WasmKernel {
       return false;
     }
     const manifolds = fit === 2;
-    let layout = this.structureChanged;
-    for (const name of COLUMNS) if (p[name].buffer !== this.memory.buffer) layout = true;
-    if (layout) this.layOut(ctx);
+    let layout = this.#structureChanged;
+    for (const name of COLUMNS) if (p[name].buffer !== this.#memory.buffer) layout = true;
+    if (layout) this.#layOut(ctx);
     const n = c.count;
-    const rows = this.capacity + 2;
-    if (this.masks.length < 4 * rows) this.masks = new Uint32Array(4 * rows);
-    if (this.colourOf.length < n) {
-      this.colourOf = new Int16Array(2 * n);
-      this.slotOf = new Int32Array(2 * n);
+    const rows = this.#capacity + 2;
+    if (this.#masks.length < 4 * rows) this.#masks = new Uint32Array(4 * rows);
+    if (this.#colourOf.length < n) {
+      this.#colourOf = new Int16Array(2 * n);
+      this.#slotOf = new Int32Array(2 * n);
     }
     const { a: A, b: B, pair } = c;
     const { invMass, invInertia } = p;
-    const { masks, colourOf, batchSize: size, batchCursor: cursor } = this;
+    const masks = this.#masks, colourOf = this.#colourOf, size = this.#batchSize, cursor = this.#batchCursor;
     let packets: number;
     if (this.rigidSerial) {
       // One contact (one manifold) a packet, in list order.
@@ -286,17 +292,17 @@ export class WasmKernel {
       for (let k = 0; k < 2 * COLOURS; k++) cursor[k + 1] = cursor[k] + ((size[k] + 1) & ~1);
       packets = cursor[2 * COLOURS] >> 1;
     }
-    this.manifolds = manifolds;
-    this.substepReals = ctx.substepReals;
+    this.#manifolds = manifolds;
+    this.#substepReals = ctx.substepReals;
     // Single points: their columns staged after the packets (whole columns: STAGED bytes a row of the table).
     const bytes = manifolds ? packets * MANIFOLD_PACKET : align16(packets * RIGID_PACKET) + c.a.length * STAGED;
-    if (bytes > this.rigidCapacity) this.growRigid(p, bytes);
+    if (bytes > this.#rigidCapacity) this.#growRigid(p, bytes);
     if (manifolds) {
-      this.writeManifolds(c, p.invMass, p.invInertia);
+      this.#writeManifolds(c, p.invMass, p.invInertia);
       this.manifoldSteps++;
     }
-    this.rigidPackets = packets;
-    if (!manifolds) this.writeRigid(c);
+    this.#rigidPackets = packets;
+    if (!manifolds) this.#writeRigid(c);
     this.rigidLanes = true;
     this.rigidLaneSteps++;
     return true;
@@ -304,20 +310,20 @@ export class WasmKernel {
 
   /** A substep's start for the lanes (as prepareRigidContacts': no correction yet, allowances shrink by maxPush). */
   rigidBeginSubstep(maxPush: number): void {
-    if (this.manifolds) this.exports.manifoldBegin(this.rigidAddress, this.rigidPackets, maxPush);
-    else this.exports.rigidBegin(this.rigidAddress, this.rigidPackets, maxPush);
+    if (this.#manifolds) this.#exports.h(this.#rigidAddress, this.#rigidPackets, maxPush);
+    else this.#exports.e(this.#rigidAddress, this.#rigidPackets, maxPush);
   }
 
   rigidSweep(): void {
-    const m = this.address;
-    if (this.manifolds) this.exports.manifoldSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
-    else this.exports.rigidSweep(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.rigidAddress, this.rigidPackets);
+    const m = this.#address;
+    if (this.#manifolds) this.#exports.i(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.#rigidAddress, this.#rigidPackets);
+    else this.#exports.f(m.x, m.y, m.angle, m.qangle, m.rc, m.rs, this.#rigidAddress, this.#rigidPackets);
   }
 
   rigidVelocities(): void {
-    const m = this.address;
-    if (this.manifolds) this.exports.manifoldVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets, this.substepReals[0]);
-    else this.exports.rigidVelocities(m.vx, m.vy, m.omega, this.rigidAddress, this.rigidPackets);
+    const m = this.#address;
+    if (this.#manifolds) this.#exports.j(m.vx, m.vy, m.omega, this.#rigidAddress, this.#rigidPackets, this.#substepReals[0]);
+    else this.#exports.g(m.vx, m.vy, m.omega, this.#rigidAddress, this.#rigidPackets);
   }
 
   /**
@@ -328,10 +334,10 @@ export class WasmKernel {
    */
   endRigid(c: RigidContacts): void {
     this.rigidLanes = false;
-    const { f64, i32, slotOf } = this;
+    const f64 = this.#f64, i32 = this.#i32, slotOf = this.#slotOf;
     const { allowance, slip, touched, pair } = c;
-    const manifolds = this.manifolds;
-    const base = this.rigidAddress >> 3;
+    const manifolds = this.#manifolds;
+    const base = this.#rigidAddress >> 3;
     for (let i = 0, n = c.count; i < n; i++) {
       const s = slotOf[i];
       if (!manifolds) {
@@ -361,17 +367,17 @@ export class WasmKernel {
   }
 
   /** Room for `needed` bytes of rigid packets (half as much again): the memory grows, the column views are made again. */
-  private growRigid(p: ParticleStore, needed: number): void {
-    this.rigidCapacity = Math.ceil(needed * 1.5);
-    const bytes = this.rigidAddress + this.rigidCapacity;
-    if (bytes > this.memory.buffer.byteLength) {
+  #growRigid(p: ParticleStore, needed: number): void {
+    this.#rigidCapacity = Math.ceil(needed * 1.5);
+    const bytes = this.#rigidAddress + this.#rigidCapacity;
+    if (bytes > this.#memory.buffer.byteLength) {
       // A new memory with the old bytes: the column views are made again on it.
-      this.replaceMemory(Math.max(bytes, this.memory.buffer.byteLength * 1.5), true);
-      const buffer = this.memory.buffer;
-      this.f64 = new Float64Array(buffer);
-      this.i32 = new Int32Array(buffer);
+      this.#replaceMemory(Math.max(bytes, this.#memory.buffer.byteLength * 1.5), true);
+      const buffer = this.#memory.buffer;
+      this.#f64 = new Float64Array(buffer);
+      this.#i32 = new Int32Array(buffer);
       const columns = p as unknown as Record<KernelColumn, Float64Array>;
-      for (const name of COLUMNS) columns[name] = new Float64Array(buffer, this.address[name], this.capacity);
+      for (const name of COLUMNS) columns[name] = new Float64Array(buffer, this.#address[name], this.#capacity);
     }
   }
 
@@ -380,14 +386,14 @@ export class WasmKernel {
    * memory after the packets (a memcpy each) with each contact's lane: the same copies as twenty stores a contact from
    * JS, which cost more (10,000 circles: layout and colouring 0.92 → 0.65 ms a step, S3 0.15 → 0.10 ms).
    */
-  private writeRigid(c: RigidContacts): void {
-    const { f64, i32, slotOf, colourOf, batchSize: size, batchCursor: cursor } = this;
+  #writeRigid(c: RigidContacts): void {
+    const f64 = this.#f64, i32 = this.#i32, slotOf = this.#slotOf, colourOf = this.#colourOf, size = this.#batchSize, cursor = this.#batchCursor;
     const n = c.count;
     const serial = this.rigidSerial;
-    if (serial) for (let i = 0; i < n; i++) this.padRigid(2 * i + 1);
-    else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.padRigid(cursor[k + 1] - 1);
+    if (serial) for (let i = 0; i < n; i++) this.#pad(2 * i + 1, RIGID_F64, RIGID_FIELDS, 2 * RF.allowance);
+    else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.#pad(cursor[k + 1] - 1, RIGID_F64, RIGID_FIELDS, 2 * RF.allowance);
     const cap = c.a.length;
-    const stage = this.rigidAddress + align16(this.rigidPackets * RIGID_PACKET);
+    const stage = this.#rigidAddress + align16(this.#rigidPackets * RIGID_PACKET);
     const { nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
     f64.set(nx, stage / 8);
     f64.set(ny, stage / 8 + cap);
@@ -403,26 +409,26 @@ export class WasmKernel {
     i32.set(c.a, ints);
     i32.set(c.b, ints + cap);
     for (let i = 0; i < n; i++) i32[ints + 2 * cap + i] = slotOf[i] = serial ? 2 * i : cursor[colourOf[i]]++;
-    this.exports.rigidLayout(stage, cap, n, this.address.invMass, this.address.invInertia, this.rigidAddress, (this.capacity + 1) * 8);
+    this.#exports.d(stage, cap, n, this.#address.invMass, this.#address.invInertia, this.#rigidAddress, (this.#capacity + 1) * 8);
   }
 
   /**
    * Each manifold's lane (a lone point: its second point inactive, allowance +∞): the rows' byte offsets, the shared
    * fields, each point's geometry and state.
    */
-  private writeManifolds(c: RigidContacts, invMass: Float64Array, invInertia: Float64Array): void {
-    const { f64, i32, slotOf, colourOf, batchSize: size, batchCursor: cursor } = this;
-    const base = this.rigidAddress >> 3;
-    const world = (this.capacity + 1) * 8;
+  #writeManifolds(c: RigidContacts, invMass: Float64Array, invInertia: Float64Array): void {
+    const f64 = this.#f64, i32 = this.#i32, slotOf = this.#slotOf, colourOf = this.#colourOf, size = this.#batchSize, cursor = this.#batchCursor;
+    const base = this.#rigidAddress >> 3;
+    const world = (this.#capacity + 1) * 8;
     const n = c.count;
     const serial = this.rigidSerial;
     const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
     if (serial) {
       for (let i = 0, s = 1; i < n; i++, s += 2) {
-        this.padManifold(s);
+        this.#f64[this.#pad(s, MANIFOLD_F64, MANIFOLD_FIELDS, 38) + 74] = Infinity;
         if (pair[i] === 1) i++;
       }
-    } else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.padManifold(cursor[k + 1] - 1);
+    } else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.#f64[this.#pad(cursor[k + 1] - 1, MANIFOLD_F64, MANIFOLD_FIELDS, 38) + 74] = Infinity;
     // Field k of a lane at f64 word w + 2k (w: its packet's first field, plus the lane); point p's fields from
     // k = 12 + 18p (see solver.as). Literal offsets: this loop runs once a step over every manifold.
     for (let i = 0, m = 0; i < n; i++, m++) {
@@ -495,34 +501,23 @@ export class WasmKernel {
     }
   }
 
-  /** A padding manifold lane: the spare row on both sides, apart (allowances 1 and +∞), no friction. */
-  private padManifold(s: number): void {
-    const { f64, i32 } = this;
-    const base = this.rigidAddress / 8;
-    const w = base + (s >> 1) * MANIFOLD_F64 + 2 + (s & 1);
-    const q = 2 * (base + (s >> 1) * MANIFOLD_F64) + (s & 1);
-    i32[q] = this.capacity * 8;
-    i32[q + 2] = this.capacity * 8;
-    for (let field = 0; field < MANIFOLD_FIELDS; field++) f64[w + 2 * field] = 0;
-    // Allowances of points 0 and 1 (fields 18 and 36).
-    f64[w + 36] = 1;
-    f64[w + 72] = Infinity;
-  }
-
-  /** A padding lane: the spare row on both sides, apart (allowance 1), no friction. */
-  private padRigid(s: number): void {
-    const { f64, i32 } = this;
-    const base = this.rigidAddress / 8;
-    const w = base + (s >> 1) * RIGID_F64 + (s & 1);
-    const q = 2 * (base + (s >> 1) * RIGID_F64) + (s & 1);
-    i32[q] = this.capacity * 8;
-    i32[q + 2] = this.capacity * 8;
-    for (let field = 1; field <= RIGID_FIELDS; field++) f64[w + 2 * field] = 0;
-    f64[w + 2 * RF.allowance] = 1;
+  /**
+   * A padding lane `s` of packets `words` f64 words long: the spare row on both sides, its f64 fields 1..`fields`
+   * (words 2, 4, … of the lane) zero, and 1 at its word `allowance` (apart: it never acts, no friction). Returns the
+   * lane's first f64 word.
+   */
+  #pad(s: number, words: number, fields: number, allowance: number): number {
+    const f64 = this.#f64;
+    const packet = this.#rigidAddress / 8 + (s >> 1) * words;
+    const w = packet + (s & 1);
+    this.#i32[2 * packet + (s & 1)] = this.#i32[2 * packet + (s & 1) + 2] = this.#capacity * 8;
+    for (let field = 1; field <= fields; field++) f64[w + 2 * field] = 0;
+    f64[w + allowance] = 1;
+    return w;
   }
 
   /** Places the particle columns, the runs and the coloured packets in the memory (growing it if needed). */
-  private layOut(ctx: StepContext): void {
+  #layOut(ctx: StepContext): void {
     const { particles: p, sleep } = ctx;
     const c = ctx.constraints.distances;
     const capacity = p.x.length;
@@ -532,8 +527,8 @@ export class WasmKernel {
     // Immovable particles may share a packet: pinned and static ones, not those that only sleep (they wake).
     const awakeInvMass = p.invMass.map((w, i) => (i < p.count ? sleep.awakeInvMass(i, p) : w));
     const slack = Uint8Array.from(c.minLength.subarray(0, c.count), (lo, row) => (lo === c.maxLength[row] ? 0 : 1));
-    this.packetRows = runs.leftover.length > 0 ? colourRows(c.count, c.a, c.b, slack, awakeInvMass, 2, runs.leftover) : new Int32Array(0);
-    const packetCount = this.packetRows.length / 2;
+    this.#packetRows = runs.leftover.length > 0 ? colourRows(c.count, c.a, c.b, slack, awakeInvMass, 2, runs.leftover) : new Int32Array(0);
+    const packetCount = this.#packetRows.length / 2;
     const runCount = runs.lanes.length;
     const runData = new Int32Array(runCount);
     let dataBytes = 0;
@@ -546,53 +541,53 @@ export class WasmKernel {
     const dataAddress = runAddress + align16(runCount * RUN_BYTES);
     const packetAddress = dataAddress + dataBytes;
     const rigidAddress = align16(packetAddress + packetCount * PACKET_BYTES);
-    const bytes = rigidAddress + this.rigidCapacity;
+    const bytes = rigidAddress + this.#rigidCapacity;
     // (Everything is written again below: the new memory need not keep the old bytes.)
-    if (bytes > this.memory.buffer.byteLength) this.replaceMemory(bytes * 1.5, false);
-    const buffer = this.memory.buffer;
-    this.f64 = new Float64Array(buffer);
-    this.i32 = new Int32Array(buffer);
+    if (bytes > this.#memory.buffer.byteLength) this.#replaceMemory(bytes * 1.5, false);
+    const buffer = this.#memory.buffer;
+    this.#f64 = new Float64Array(buffer);
+    this.#i32 = new Int32Array(buffer);
     COLUMNS.forEach((name, k) => {
       const address = k * columnBytes;
       const full = new Float64Array(buffer, address, capacity + SPARE_ROWS);
       full.fill(0);
       full.set(saved[k]);
       (p as unknown as Record<KernelColumn, Float64Array>)[name] = full.subarray(0, capacity);
-      this.address[name] = address;
+      this.#address[name] = address;
     });
-    this.capacity = capacity;
+    this.#capacity = capacity;
     // The rigid lanes' world row: at the origin, rotation (1, 0), inverse mass and inertia 0.
-    this.f64[(this.address.rc >> 3) + capacity + 1] = 1;
-    this.rigidAddress = rigidAddress;
+    this.#f64[(this.#address.rc >> 3) + capacity + 1] = 1;
+    this.#rigidAddress = rigidAddress;
     // Run records.
     for (let k = 0; k < runCount; k++) {
       const r = (runAddress + k * RUN_BYTES) >> 2;
       runData[k] += dataAddress;
-      this.i32[r] = runs.first[k] * 8;
-      this.i32[r + 1] = runs.second[k] * 8;
-      this.i32[r + 2] = (runs.laneStart[k + 1] - runs.laneStart[k]) / 2;
-      this.i32[r + 3] = runs.interleaved[k] | (runs.kind[k] << 1);
-      this.i32[r + 4] = runData[k];
+      this.#i32[r] = runs.first[k] * 8;
+      this.#i32[r + 1] = runs.second[k] * 8;
+      this.#i32[r + 2] = (runs.laneStart[k + 1] - runs.laneStart[k]) / 2;
+      this.#i32[r + 3] = runs.interleaved[k] | (runs.kind[k] << 1);
+      this.#i32[r + 4] = runData[k];
     }
-    this.runs = runs;
-    this.runData = runData;
-    this.runAddress = runAddress;
+    this.#runs = runs;
+    this.#runData = runData;
+    this.#runAddress = runAddress;
     this.runCount = runCount;
-    this.packetAddress = packetAddress;
+    this.#packetAddress = packetAddress;
     this.packetCount = packetCount;
-    this.laidOutRows = c.count;
-    this.f64.fill(0, dataAddress / 8, rigidAddress / 8);
-    this.writePackets(c);
-    this.copyLimits(c);
-    this.structureChanged = false;
+    this.#laidOutRows = c.count;
+    this.#f64.fill(0, dataAddress / 8, rigidAddress / 8);
+    this.#writePackets(c);
+    this.#copyLimits(c);
+    this.#structureChanged = false;
     this.layouts++;
   }
 
   /** Particle offsets of each packet; padding lanes point at a spare row (index `capacity`, inverse mass 0). */
-  private writePackets(c: DistanceConstraints): void {
-    const { packetRows: rows, i32 } = this;
-    const dummy = this.capacity * 8;
-    const base = this.packetAddress >> 2;
+  #writePackets(c: DistanceConstraints): void {
+    const rows = this.#packetRows, i32 = this.#i32;
+    const dummy = this.#capacity * 8;
+    const base = this.#packetAddress >> 2;
     for (let lane = 0, n = rows.length; lane < n; lane++) {
       const row = rows[lane];
       const ints = base + (lane >> 1) * PACKET_I32 + (lane & 1);
@@ -605,15 +600,15 @@ export class WasmKernel {
    * Limits and compliance of every lane from the distance table. False when a row no longer fits its run's kind (the
    * runs must be found again).
    */
-  private copyLimits(c: DistanceConstraints): boolean {
-    const { f64 } = this;
+  #copyLimits(c: DistanceConstraints): boolean {
+    const f64 = this.#f64;
     const { minLength, maxLength, compliance } = c;
-    this.limitsChanged = false;
-    const runs = this.runs;
+    this.#limitsChanged = false;
+    const runs = this.#runs;
     if (runs) {
       for (let k = 0; k < this.runCount; k++) {
         const kind = runs.kind[k] as RunKind;
-        const data = this.runData[k] / 8;
+        const data = this.#runData[k] / 8;
         const start: number = runs.laneStart[k];
         const end: number = runs.laneStart[k + 1];
         for (let lane: number = start; lane < end; lane++) {
@@ -633,8 +628,8 @@ export class WasmKernel {
         }
       }
     }
-    const base = this.packetAddress / 8;
-    const rows = this.packetRows;
+    const base = this.#packetAddress / 8;
+    const rows = this.#packetRows;
     for (let lane = 0, n = rows.length; lane < n; lane++) {
       const row = rows[lane];
       if (row < 0) continue;

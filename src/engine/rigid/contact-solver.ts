@@ -918,53 +918,9 @@ function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  * rotation they share, and a box dropped flat would bounce crooked. A point whose partner acted while it was itself
  * within two substeps' approach of touching (a box landing flat by a hair's tilt) joins it.
  */
-/**
- * Coulomb's friction for the part of an impact that restitution adds (impulse P along n, after the position sweep's
- * share): the sliding at the contact (a manifold's: at its points' midpoint) is cut by up to μ·P, never past rolling.
- * The position sweep's friction is bounded by its normal correction, which a bounce does not include; without this a
- * bouncing disc kept much of its slide when it landed late in a substep (vx 4.1 where Coulomb gives 3.33).
- */
-function bounceFriction(c: RigidContacts, r: BodyRows, i: number, two: boolean, P: number): void {
-  const { vx, vy, omega, invMass, invInertia } = r;
-  const j = two ? i + 1 : i;
-  const ia = c.a[i];
-  const ib = c.b[i];
-  const nx = c.nx[i];
-  const ny = c.ny[i];
-  const lax = 0.5 * (c.lAx[i] + c.lAx[j]);
-  const lay = 0.5 * (c.lAy[i] + c.lAy[j]);
-  const lbx = 0.5 * (c.lBx[i] + c.lBx[j]);
-  const lby = 0.5 * (c.lBy[i] + c.lBy[j]);
-  const wa = omega[ia];
-  const wb = ib >= 0 ? omega[ib] : 0;
-  const rvx = (ib >= 0 ? vx[ib] : 0) - vx[ia];
-  const rvy = (ib >= 0 ? vy[ib] : 0) - vy[ia];
-  // B's speed relative to A's along t = (−ny, nx) at the contact, and the weight along t there.
-  const vt = -(rvx - wb * lby + wa * lay) * ny + (rvy + wb * lbx - wa * lax) * nx;
-  const rtA = lax * nx + lay * ny;
-  const rtB = lbx * nx + lby * ny;
-  const imA = invMass[ia];
-  const imB = ib >= 0 ? invMass[ib] : 0;
-  const w = imA + invInertia[ia] * rtA * rtA + (ib >= 0 ? imB + invInertia[ib] * rtB * rtB : 0);
-  if (!(w > 0)) return;
-  const limit = c.friction[i] * P;
-  let pt = -vt / w;
-  if (pt > limit) pt = limit;
-  else if (pt < -limit) pt = -limit;
-  // Along t: A back, B forward.
-  vx[ia] += imA * pt * ny;
-  vy[ia] -= imA * pt * nx;
-  omega[ia] -= invInertia[ia] * rtA * pt;
-  if (ib >= 0) {
-    vx[ib] -= imB * pt * ny;
-    vy[ib] += imB * pt * nx;
-    omega[ib] += invInertia[ib] * rtB * pt;
-  }
-}
-
 export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
   const { vx, vy, omega, invMass, invInertia } = r;
-  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution } = c;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, impulseN, friction } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     if (B2[i] >= 0 || (two && B2[i + 1] >= 0)) {
@@ -1055,7 +1011,43 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       vy[ib] += imB * P * ny;
       omega[ib] += invInertia[ib] * (p0 * rnB[i] + (two ? p1 * rnB[j] : 0));
     }
-    if (e > 0 && P > 0 && c.friction[i] > 0) bounceFriction(c, r, i, two, P);
+    // Coulomb's friction for this impulse, in the substep the point first acts in (its step's corrections are this
+    // substep's): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
+    // so the same turn and speed along t) is cut by up to μ·P, never past rolling. The sweep's friction is bounded by
+    // the sweep's normal corrections, and a landing late in a substep has little overlap there: this pass stops most
+    // of its approach (and restitution adds its bounce). Without it a box thrown onto the floor came to rest anywhere
+    // within 2.7 units of where Coulomb's law puts it, depending on when in the step it landed, and a bouncing disc kept
+    // much of its slide. Inline: a rarely run function is left unoptimised, and its arithmetic allocates. (The kernel's
+    // velocity passes do the same, lane by lane.)
+    const mu = friction[i];
+    if (P > 0 && mu > 0 && impulseN[i] === lambdaN[i]) {
+      // The levers' components along n (their cross products with t = (−ny, nx)), and the weight along t.
+      const rtA = lAx[i] * nx + lAy[i] * ny;
+      const rtB = lBx[i] * nx + lBy[i] * ny;
+      const iiA = invInertia[ia];
+      const imB = ib >= 0 ? invMass[ib] : 0;
+      const iiB = ib >= 0 ? invInertia[ib] : 0;
+      const w = imA + iiA * rtA * rtA + (imB + iiB * rtB * rtB);
+      if (w > 0) {
+        // B's speed relative to A's along t at the contact.
+        const tvx = (ib >= 0 ? vx[ib] : 0) - vx[ia];
+        const tvy = (ib >= 0 ? vy[ib] : 0) - vy[ia];
+        const vt = -tvx * ny + tvy * nx + (ib >= 0 ? omega[ib] : 0) * rtB - omega[ia] * rtA;
+        const limit = mu * P;
+        let pt = -vt / w;
+        if (pt > limit) pt = limit;
+        else if (pt < -limit) pt = -limit;
+        // Along t: A back, B forward.
+        vx[ia] += imA * pt * ny;
+        vy[ia] -= imA * pt * nx;
+        omega[ia] -= iiA * rtA * pt;
+        if (ib >= 0) {
+          vx[ib] -= imB * pt * ny;
+          vy[ib] += imB * pt * nx;
+          omega[ib] += iiB * rtB * pt;
+        }
+      }
+    }
     if (two) i++;
   }
   if (c.shockCount > 0) shockVelocity(c, r);

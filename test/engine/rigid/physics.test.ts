@@ -3,7 +3,7 @@
 // pyramid that stand (a heavy box placed or dropped on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
 // colliding with rigid bodies.
 import { expect } from 'chai';
-import { createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
+import { createCircle, createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
 
 const g = 9.81;
 const box = (hw: number, hh: number): Vec2[] => [
@@ -135,6 +135,39 @@ describe('rigid bodies: impacts', () => {
           expect(spin, at).to.be.closeTo(rolling, 0.03);
           expect(energy(), at).to.be.lessThan(before * 1.001);
         }
+  });
+
+  it('a box or a ball thrown onto the floor comes to rest where Coulomb says, wherever in a step it lands', () => {
+    // Thrown at vx = 5 from 3 units above the floor (g = 10, μ = 0.3, e = 0): the landing's friction takes μ·vn off
+    // vx (vn = √(2·g·3)), then it slides to rest in v²/(2·μ·g). The sweep's friction alone once depended on the overlap
+    // the landing substep reached: the box came to rest anywhere from 2.35 to 4.61 (the ball 2.16 to 4.86).
+    const g = 10;
+    const mu = 0.3;
+    const restFrom = (height: number): number => {
+      const vn = Math.sqrt(2 * g * height);
+      const after = 5 - mu * vn;
+      return -3 + (5 * vn) / g + (after * after) / (2 * mu * g);
+    };
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const shape of ['ball', 'box'] as const) {
+        const misses: number[] = [];
+        for (let k = 0; k < 12; k++) {
+          const world = new World({ kernel, sleeping: false, gravity: { x: 0, y: g } });
+          world.addRigidBody({ points: box(100, 0.5), x: 0, y: 0.5, type: 'static', friction: mu });
+          let x: () => number;
+          if (shape === 'box') {
+            const b = world.addRigidBody({ points: box(1, 0.1), x: -3, y: -3.1 + 0.0137 * k, vx: 5, friction: mu });
+            x = () => world.bodyPose(b).x;
+          } else {
+            const ball = createCircle(world, { x: -3, y: -3.5 + 0.0137 * k, radius: 0.5, model: 'particles', friction: mu, vx: 5 });
+            x = () => world.getPosition(ball.particles[0]).x;
+          }
+          steps(world, 300);
+          misses.push(x() - restFrom(3 - 0.0137 * k));
+        }
+        const at = `${kernel}, ${shape}: rests this far from Coulomb's point: ${misses.map((e) => e.toFixed(3)).join(' ')}`;
+        for (const miss of misses) expect(Math.abs(miss), at).to.be.below(shape === 'ball' ? 0.01 : 0.1);
+      }
   });
 
   it("a disc that slides through its bounce takes Coulomb's tangential impulse, μ times the normal one, wherever in a step it lands", () => {
