@@ -569,12 +569,28 @@ export class World {
     return handle;
   }
 
-  /** Changes how a body collides (any subset of the options; the rest keep their values). */
+  /**
+   * Changes how a body collides (any subset of the options; the rest keep their values). A rigid body collides with
+   * its own outline: its shape is 'none' (no collisions) or 'polygon' (its outline), and it takes no parts.
+   */
   setCollider(body: Handle, options: ColliderOptions): void {
     const { bodies, colliders } = this.ctx;
     const slot = bodies.slotOf(body);
     knownNames('collider option', objectOf('collider options', options), OPTION_NAMES.collider);
-    this.writeCollider(slot, resolveCollider({ ...colliders.optionsOf(slot, bodies.parts[slot]), ...options }, bodies.particles[slot].length));
+    if (!this.ctx.rigidShapes.source(slot)) {
+      this.writeCollider(slot, resolveCollider({ ...colliders.optionsOf(slot, bodies.parts[slot]), ...options }, bodies.particles[slot].length));
+      return;
+    }
+    if (options.parts !== undefined) throw new RangeError(`parts: a rigid body collides with its own outline, got ${JSON.stringify(options.parts)}`);
+    if (options.shape !== undefined && options.shape !== 'none' && options.shape !== 'polygon') {
+      throw new RangeError(`shape of a rigid body must be "polygon" (its outline) or "none", got ${describeValue(options.shape)}`);
+    }
+    // Its collider reads as 'none' until a step has made it a rigid one (Polygon before that, as addRigidBody writes it).
+    const off = colliders.kind[slot] === ColliderKind.None;
+    const now = { ...colliders.optionsOf(slot, undefined), shape: off ? 'none' : 'polygon', parts: undefined } as const;
+    this.writeCollider(slot, resolveCollider({ ...now, ...options }, 3));
+    // Collisions switched on again must find what it now overlaps.
+    this.ctx.sleep.wakeBody(slot, bodies.particles[slot], this.particles);
   }
 
   private writeCollider(slot: number, o: ResolvedCollider): void {

@@ -53,8 +53,8 @@ function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, runCoun
     else if (shape == 1) sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, true, STICK);
     else if (shape == 2) sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, false, LIMITS);
     else if (shape == 3) sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, true, LIMITS);
-    else if (shape == 4) sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, false, COMPLIANT);
-    else sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, true, COMPLIANT);
+    // Compliant runs (soft links: rarer, and bound by their divisions) share one loop, which picks its lanes by a mask.
+    else sweepRun(x, y, invMass, a, b, pairs, data, h2, fresh, shape == 5, COMPLIANT, true);
   }
   solvePackets(x, y, invMass, packets, count, h2, fresh);
 }
@@ -64,18 +64,34 @@ function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, runCoun
 }
 
 /** Pairs of lanes of one run: parallel lanes (a + k, b + k), or interleaved lanes (a + 2k, a + 2k + 1). */
-@inline function sweepRun(x: usize, y: usize, invMass: usize, a: usize, b: usize, pairs: i32, data: usize, h2: f64, fresh: bool, interleaved: bool, kind: i32): void {
+@inline function sweepRun(x: usize, y: usize, invMass: usize, a: usize, b: usize, pairs: i32, data: usize, h2: f64, fresh: bool, interleaved: bool, kind: i32, mixed: bool = false): void {
   const vh2 = f64x2.splat(h2);
   const zero = f64x2.splat(0);
   const one = f64x2.splat(1);
   const tinyLength = f64x2.splat(1e-12);
   const step: usize = interleaved ? 32 : 16;
+  // mixed: `interleaved` is known only when the loop runs; the lanes are picked by this mask from both halves.
+  const im = i64x2.splat(interleaved ? -1 : 0);
   for (let k = 0; k < pairs; k++) {
     const oa = a + <usize>k * step;
-    const ob = b + <usize>k * step;
+    const ob = mixed ? (interleaved ? oa + 16 : b + <usize>k * step) : b + <usize>k * step;
     const pk = data + <usize>k * laneBytes(kind);
     let xa: v128, ya: v128, xb: v128, yb: v128, wa: v128, wb: v128;
-    if (interleaved) {
+    if (mixed) {
+      // Interleaved: the halves at oa and oa + 16, the a's and the b's shuffled out; parallel: the halves themselves.
+      const x0 = v128.load(x + oa);
+      const x1 = v128.load(x + ob);
+      const y0 = v128.load(y + oa);
+      const y1 = v128.load(y + ob);
+      const w0 = v128.load(invMass + oa);
+      const w1 = v128.load(invMass + ob);
+      xa = v128.bitselect(f64x2.shuffle(x0, x1, 0, 2), x0, im);
+      xb = v128.bitselect(f64x2.shuffle(x0, x1, 1, 3), x1, im);
+      ya = v128.bitselect(f64x2.shuffle(y0, y1, 0, 2), y0, im);
+      yb = v128.bitselect(f64x2.shuffle(y0, y1, 1, 3), y1, im);
+      wa = v128.bitselect(f64x2.shuffle(w0, w1, 0, 2), w0, im);
+      wb = v128.bitselect(f64x2.shuffle(w0, w1, 1, 3), w1, im);
+    } else if (interleaved) {
       // Particles a, a + 1 (lane 0) and a + 2, a + 3 (lane 1): two loads, then the a's and the b's.
       const x0 = v128.load(x + oa);
       const x1 = v128.load(x + oa, 16);
@@ -147,7 +163,12 @@ function solveDistances(x: usize, y: usize, invMass: usize, runs: usize, runCoun
     const nya = f64x2.add(ya, f64x2.mul(f64x2.mul(wa, s), dy));
     const nxb = f64x2.sub(xb, f64x2.mul(f64x2.mul(wb, s), dx));
     const nyb = f64x2.sub(yb, f64x2.mul(f64x2.mul(wb, s), dy));
-    if (interleaved) {
+    if (mixed) {
+      v128.store(x + oa, v128.bitselect(f64x2.shuffle(nxa, nxb, 0, 2), nxa, im));
+      v128.store(x + ob, v128.bitselect(f64x2.shuffle(nxa, nxb, 1, 3), nxb, im));
+      v128.store(y + oa, v128.bitselect(f64x2.shuffle(nya, nyb, 0, 2), nya, im));
+      v128.store(y + ob, v128.bitselect(f64x2.shuffle(nya, nyb, 1, 3), nyb, im));
+    } else if (interleaved) {
       v128.store(x + oa, f64x2.shuffle(nxa, nxb, 0, 2));
       v128.store(x + oa, f64x2.shuffle(nxa, nxb, 1, 3), 16);
       v128.store(y + oa, f64x2.shuffle(nya, nyb, 0, 2));
@@ -225,17 +246,14 @@ function solvePackets(x: usize, y: usize, invMass: usize, packets: usize, count:
  * springs); without, it is read from the ax/ay columns. Columns are f64 arrays at the given byte addresses.
  */
 function integrateVerlet(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, ax: usize, ay: usize, invMass: usize, n: i32, h: f64, damp: f64, forces: bool, gx: f64, gy: f64): void {
-  if (forces) integrate(x, y, px, py, vx, vy, ax, ay, invMass, n, h, damp, true, gx, gy);
-  else integrate(x, y, px, py, vx, vy, ax, ay, invMass, n, h, damp, false, gx, gy);
-}
-
-@inline function integrate(x: usize, y: usize, px: usize, py: usize, vx: usize, vy: usize, ax: usize, ay: usize, invMass: usize, n: i32, h: f64, damp: f64, forces: bool, gx: f64, gy: f64): void {
   const vh = f64x2.splat(h);
   const vh2 = f64x2.splat(h * h);
   const vdamp = f64x2.splat(damp);
   const vgx = f64x2.splat(gx);
   const vgy = f64x2.splat(gy);
   const zero = f64x2.splat(0);
+  // One loop for both (a select where it was two loops: the same doubles, 200 bytes less of the kernel's budget).
+  const fused = i64x2.splat(forces ? -1 : 0);
   for (let i = 0; i < n; i += 2) {
     const o = <usize>i << 3;
     const w = v128.load(invMass + o);
@@ -245,8 +263,10 @@ function integrateVerlet(x: usize, y: usize, px: usize, py: usize, vx: usize, vy
     v128.store(px + o, cx);
     v128.store(py + o, cy);
     // With forces, ax and ay are the columns fx and fy: a = g + f·invMass, as accelerate() computes it.
-    const accx = forces ? f64x2.add(vgx, f64x2.mul(v128.load(ax + o), w)) : v128.load(ax + o);
-    const accy = forces ? f64x2.add(vgy, f64x2.mul(v128.load(ay + o), w)) : v128.load(ay + o);
+    const lx = v128.load(ax + o);
+    const ly = v128.load(ay + o);
+    const accx = v128.bitselect(f64x2.add(vgx, f64x2.mul(lx, w)), lx, fused);
+    const accy = v128.bitselect(f64x2.add(vgy, f64x2.mul(ly, w)), ly, fused);
     const nx = f64x2.add(cx, f64x2.add(f64x2.mul(f64x2.mul(v128.load(vx + o), vdamp), vh), f64x2.mul(accx, vh2)));
     const ny = f64x2.add(cy, f64x2.add(f64x2.mul(f64x2.mul(v128.load(vy + o), vdamp), vh), f64x2.mul(accy, vh2)));
     v128.store(x + o, v128.bitselect(nx, cx, movable));
@@ -311,7 +331,7 @@ const RIGID_PACKET: usize = 448;
  */
 function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, invInertia: usize, packets: usize, world: usize): void {
   const column = cap << 3;
-  const ints = stage + column * 10;
+  const ints = stage + column * 11;
   for (let i = 0; i < n; i++) {
     const j = <usize>i << 3;
     const q = ints + (<usize>i << 2);
@@ -345,6 +365,7 @@ function rigidLayout(stage: usize, cap: usize, n: i32, invMass: usize, invInerti
     store<f64>(f, 0, 256);
     store<f64>(f, 0, 272);
     store<f64>(f, 0, 288);
+    store<f64>(f, load<f64>(stage + 10 * column + j), 304);
     store<i64>(f, 0, 320);
   }
 }
@@ -515,25 +536,25 @@ function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usize, cou
     const v = f64x2.add(f64x2.mul(ux, nx), f64x2.mul(uy, ny));
     const k00 = fld(pk, 432);
     const p = v128.and(f64x2.div(f64x2.sub(zero, v), k00), v128.and(acted, f64x2.gt(k00, zero)));
-    const mpA = f64x2.mul(fld(pk, 160), p);
-    const mpB = f64x2.mul(fld(pk, 192), p);
-    vax = f64x2.sub(vax, f64x2.mul(mpA, nx));
-    vay = f64x2.sub(vay, f64x2.mul(mpA, ny));
-    wa = f64x2.sub(wa, f64x2.mul(fld(pk, 176), f64x2.mul(p, fld(pk, 400))));
-    vbx = f64x2.add(vbx, f64x2.mul(mpB, nx));
-    vby = f64x2.add(vby, f64x2.mul(mpB, ny));
-    wb = f64x2.add(wb, f64x2.mul(fld(pk, 208), f64x2.mul(p, fld(pk, 416))));
-    // Friction for the impulse (contact-solver.ts impactFriction): the sliding at the contact cut by up to μ·p.
     const imA = fld(pk, 160);
     const iiA = fld(pk, 176);
     const imB = fld(pk, 192);
     const iiB = fld(pk, 208);
+    const mpA = f64x2.mul(imA, p);
+    const mpB = f64x2.mul(imB, p);
+    vax = f64x2.sub(vax, f64x2.mul(mpA, nx));
+    vay = f64x2.sub(vay, f64x2.mul(mpA, ny));
+    wa = f64x2.sub(wa, f64x2.mul(iiA, f64x2.mul(p, fld(pk, 400))));
+    vbx = f64x2.add(vbx, f64x2.mul(mpB, nx));
+    vby = f64x2.add(vby, f64x2.mul(mpB, ny));
+    wb = f64x2.add(wb, f64x2.mul(iiB, f64x2.mul(p, fld(pk, 416))));
+    // Friction for the impulse (contact-solver.ts, the velocity pass): the sliding at a landing cut by up to μ·p.
     const mu = fld(pk, 144);
     const rtA = f64x2.add(f64x2.mul(fld(pk, 336), nx), f64x2.mul(fld(pk, 352), ny));
     const rtB = f64x2.add(f64x2.mul(fld(pk, 368), nx), f64x2.mul(fld(pk, 384), ny));
     const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
     // Only in the substep the point first acts in (its step's corrections are this substep's), as in the JS.
-    const slides = v128.and(v128.and(v128.and(f64x2.gt(p, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)), f64x2.eq(fld(pk, 256), fld(pk, 240)));
+    const slides = v128.and(v128.and(v128.and(f64x2.gt(p, zero), f64x2.gt(mu, zero)), v128.and(f64x2.gt(w, zero), f64x2.lt(fld(pk, 304), zero))), f64x2.eq(fld(pk, 256), fld(pk, 240)));
     if (v128.any_true(slides)) {
       // vt = −rvx·ny + rvy·nx + wb·rtB − wa·rtA; a lane that does not slide adds 0.
       const vt = f64x2.sub(f64x2.add(f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(vbx, vax)), ny), f64x2.mul(f64x2.sub(vby, vay), nx)), f64x2.mul(wb, rtB)), f64x2.mul(wa, rtA));
@@ -570,7 +591,7 @@ function rigidVelocities(vx: usize, vy: usize, omega: usize, packets: usize, cou
 //    10 slip (point 1)  11 kn01 (written by the sweep)
 //   point p at k = 12 + 18p: +0 rAx +1 rAy +2 rBx +3 rBy +4 radA +5 radB +6 allowance +7 lambdaN +8 impulseN +9 gap
 //    +10 touched (all-ones lanes)  +11 lAx +12 lAy +13 lBx +14 lBy +15 rnA +16 rnB +17 wn (written by the sweep)
-const MANIFOLD_PACKET: usize = 784;
+const MANIFOLD_PACKET: usize = 800;
 const P0: usize = 16 + 16 * 12;
 const P1: usize = 16 + 16 * 30;
 
@@ -911,10 +932,14 @@ function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, 
     const kicks = v128.and(acted, v128.not(v128.and(f64x2.eq(p0, zero), f64x2.eq(p1, zero))));
     if (!v128.any_true(kicks)) continue;
     const P = f64x2.add(p0, p1);
-    const mpA = f64x2.mul(mf(pk, 3), P);
-    const mpB = f64x2.mul(mf(pk, 5), P);
-    const tA = f64x2.mul(mf(pk, 4), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 15)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 15)), two)));
-    const tB = f64x2.mul(mf(pk, 6), f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 16)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 16)), two)));
+    const imA = mf(pk, 3);
+    const iiA = mf(pk, 4);
+    const imB = mf(pk, 5);
+    const iiB = mf(pk, 6);
+    const mpA = f64x2.mul(imA, P);
+    const mpB = f64x2.mul(imB, P);
+    const tA = f64x2.mul(iiA, f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 15)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 15)), two)));
+    const tB = f64x2.mul(iiB, f64x2.add(f64x2.mul(p0, v128.load(q0, 16 * 16)), v128.and(f64x2.mul(p1, v128.load(q1, 16 * 16)), two)));
     let nvax = f64x2.sub(vax, f64x2.mul(mpA, nx));
     let nvay = f64x2.sub(vay, f64x2.mul(mpA, ny));
     let nwa = f64x2.sub(wa, tA);
@@ -932,15 +957,11 @@ function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, 
     }
     // Friction for the impulse, as for single points, at the first point's levers (a face's two points have the same
     // lever along n, so the same turn and speed along t).
-    const imA = mf(pk, 3);
-    const iiA = mf(pk, 4);
-    const imB = mf(pk, 5);
-    const iiB = mf(pk, 6);
     const mu = mf(pk, 2);
     const rtA = f64x2.add(f64x2.mul(v128.load(q0, 16 * 11), nx), f64x2.mul(v128.load(q0, 16 * 12), ny));
     const rtB = f64x2.add(f64x2.mul(v128.load(q0, 16 * 13), nx), f64x2.mul(v128.load(q0, 16 * 14), ny));
     const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
-    const slides = v128.and(v128.and(kicks, f64x2.eq(v128.load(q0, 128), v128.load(q0, 112))), v128.and(v128.and(f64x2.gt(P, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)));
+    const slides = v128.and(v128.and(v128.and(kicks, f64x2.lt(mf(pk, 48), zero)), f64x2.eq(v128.load(q0, 128), v128.load(q0, 112))), v128.and(v128.and(f64x2.gt(P, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)));
     if (v128.any_true(slides)) {
       const vt = f64x2.sub(f64x2.add(f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(nvbx, nvax)), ny), f64x2.mul(f64x2.sub(nvby, nvay), nx)), f64x2.mul(nwb, rtB)), f64x2.mul(nwa, rtA));
       const limit = f64x2.mul(mu, P);

@@ -35,15 +35,15 @@ const RIGID_PACKET = 448;
 const RIGID_F64 = RIGID_PACKET / 8;
 const RF = { allowance: 14, slip: 18, touched: 20 };
 const RIGID_FIELDS = 27;
-/** Bytes a row of the contact table takes staged for the kernel's layout (ten f64 columns, three i32: solver.as rigidLayout). */
-const STAGED = 92;
+/** Bytes a row of the contact table takes staged for the kernel's layout (eleven f64 columns, three i32: solver.as rigidLayout). */
+const STAGED = 100;
 /**
  * Bytes per packet of two manifolds (one a lane, each with its two points; see solver.as), its f64 words, and the
  * field indices: shared fields, then point p's at MP + 18p + field.
  */
-const MANIFOLD_PACKET = 784;
+const MANIFOLD_PACKET = 800;
 const MANIFOLD_F64 = MANIFOLD_PACKET / 8;
-const MANIFOLD_FIELDS = 48;
+const MANIFOLD_FIELDS = 49;
 /** Colours of the greedy colouring (two 32-bit masks a row), for contacts between movable bodies and for the rest. */
 const COLOURS = 64;
 
@@ -405,7 +405,8 @@ export class WasmKernel {
     f64.set(radB, stage / 8 + 7 * cap);
     f64.set(friction, stage / 8 + 8 * cap);
     f64.set(allowance, stage / 8 + 9 * cap);
-    const ints = stage / 4 + 20 * cap;
+    f64.set(c.depth, stage / 8 + 10 * cap);
+    const ints = stage / 4 + 22 * cap;
     i32.set(c.a, ints);
     i32.set(c.b, ints + cap);
     for (let i = 0; i < n; i++) i32[ints + 2 * cap + i] = slotOf[i] = serial ? 2 * i : cursor[colourOf[i]]++;
@@ -422,7 +423,7 @@ export class WasmKernel {
     const world = (this.#capacity + 1) * 8;
     const n = c.count;
     const serial = this.rigidSerial;
-    const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
+    const { a: A, b: B, pair, nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance, depth } = c;
     if (serial) {
       for (let i = 0, s = 1; i < n; i++, s += 2) {
         this.#f64[this.#pad(s, MANIFOLD_F64, MANIFOLD_FIELDS, 38) + 74] = Infinity;
@@ -456,6 +457,8 @@ export class WasmKernel {
       const t = two ? -1 : 0;
       i32[2 * w + 28] = t;
       i32[2 * w + 29] = t;
+      // Field 48: the smaller depth at detection (negative: some point was apart, a landing: its impulse gets friction).
+      f64[w + 96] = depth[j] < depth[i] ? depth[j] : depth[i];
       // impulseT and both points' slip start at 0, as λn, impulseN and touched below: stored, not copied (the narrow
       // phase starts every point there, and the prepare only zeroes λn again). Gap: every sweep writes it first.
       f64[w + 16] = 0;

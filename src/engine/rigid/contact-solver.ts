@@ -920,7 +920,7 @@ function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  */
 export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
   const { vx, vy, omega, invMass, invInertia } = r;
-  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, impulseN, friction } = c;
+  const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, impulseN, friction, depth } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     const two = pair[i] === 1;
     if (B2[i] >= 0 || (two && B2[i + 1] >= 0)) {
@@ -1011,8 +1011,9 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       vy[ib] += imB * P * ny;
       omega[ib] += invInertia[ib] * (p0 * rnB[i] + (two ? p1 * rnB[j] : 0));
     }
-    // Coulomb's friction for this impulse, in the substep the point first acts in (its step's corrections are this
-    // substep's): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
+    // Coulomb's friction for this impulse, for a landing (a point apart when the step began: contacts that go on
+    // touching are left to the sweep, whose friction they load from the start) in the substep it first acts in (its
+    // step's corrections are this substep's): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
     // so the same turn and speed along t) is cut by up to μ·P, never past rolling. The sweep's friction is bounded by
     // the sweep's normal corrections, and a landing late in a substep has little overlap there: this pass stops most
     // of its approach (and restitution adds its bounce). Without it a box thrown onto the floor came to rest anywhere
@@ -1020,7 +1021,7 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     // much of its slide. Inline: a rarely run function is left unoptimised, and its arithmetic allocates. (The kernel's
     // velocity passes do the same, lane by lane.)
     const mu = friction[i];
-    if (P > 0 && mu > 0 && impulseN[i] === lambdaN[i]) {
+    if (P > 0 && mu > 0 && (depth[i] < 0 || (two && depth[j] < 0)) && impulseN[i] === lambdaN[i]) {
       // The levers' components along n (their cross products with t = (−ny, nx)), and the weight along t.
       const rtA = lAx[i] * nx + lAy[i] * ny;
       const rtB = lBx[i] * nx + lBy[i] * ny;

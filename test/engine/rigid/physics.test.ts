@@ -605,3 +605,31 @@ describe('rigid bodies: kinematic bodies and particles', () => {
     expect(world.bodyPose(swing).angle).to.not.be.closeTo(0, 0.1);
   });
 });
+
+describe('rigid bodies: changing how they collide', () => {
+  it('setCollider changes a rigid body’s friction while it slides, turns its collisions off and on, and refuses parts', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, sleeping: false, gravity: { x: 0, y: g } });
+      world.addRigidBody({ points: box(100, 0.5), x: 0, y: 0.5, type: 'static', friction: 1 });
+      // A flat crate (it slides, it does not tip).
+      const crate = world.addRigidBody({ points: box(0.5, 0.1), x: 0, y: -0.1, vx: 10, friction: 0 });
+      steps(world, 30);
+      // Pairs take √(μa·μb): 0 so far, so it keeps its speed.
+      expect(world.bodyVelocity(crate).x, `${kernel}: frictionless`).to.be.closeTo(10, 1e-6);
+      world.setCollider(crate, { friction: 0.25 });
+      steps(world, 30);
+      expect(world.bodyVelocity(crate).x, `${kernel}: slowed by μ·g over 0.5 s, μ = √0.25`).to.be.closeTo(10 - 0.5 * g * 0.5, 0.05);
+      expect(world.bodyPose(crate).y, `${kernel}: still on the floor`).to.be.closeTo(-0.1, 0.01);
+      world.setCollider(crate, { shape: 'none' });
+      steps(world, 10);
+      expect(world.bodyPose(crate).y, `${kernel}: through the floor`).to.be.greaterThan(0);
+      world.setBodyPose(crate, 0, -3, 0);
+      world.setBodyVelocity(crate, 0, 0);
+      world.setCollider(crate, { shape: 'polygon' });
+      steps(world, 60);
+      expect(world.bodyPose(crate).y, `${kernel}: on the floor again`).to.be.closeTo(-0.1, 0.01);
+      expect(() => world.setCollider(crate, { parts: [[0, 1, 2]] })).to.throw(RangeError, /parts/);
+      expect(() => world.setCollider(crate, { shape: 'particles' })).to.throw(RangeError, /shape/);
+    }
+  });
+});
