@@ -2,7 +2,7 @@
 // Setup-time code: it checks every option and names the one at fault.
 import type { ParticleStore } from '../particles.js';
 import type { JointOptions, Vec2 } from '../options.js';
-import { compliance, coordinate, finite, nonNegative, oneOf, stiffness } from '../validate.js';
+import { compliance, coordinate, finite, nonNegative, oneOf, speed, stiffness } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
 import { JointKind } from './joints.js';
 
@@ -92,7 +92,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   limits(row, o.lowerAngle, o.upperAngle, 'lowerAngle', 'upperAngle');
   if (o.maxMotorTorque !== undefined || o.motorSpeed !== undefined) {
     row.motor = 1;
-    row.motorSpeed = finite('motorSpeed', o.motorSpeed ?? 0);
+    row.motorSpeed = speed('motorSpeed', o.motorSpeed ?? 0);
     row.maxMotorTorque = o.maxMotorTorque === undefined ? Infinity : nonNegative('maxMotorTorque', o.maxMotorTorque);
   }
   return row;

@@ -81,6 +81,8 @@ describe('rigid bodies: bad input', () => {
     throwsNaming(() => world.addJoint({ type: 'revolute', a, anchor: { x: Number.NaN, y: 0 } }), RangeError, 'anchor.x');
     throwsNaming(() => world.addJoint({ type: 'revolute', a, lowerAngle: 1, upperAngle: -1 }), RangeError, 'lowerAngle', 'upperAngle');
     throwsNaming(() => world.addJoint({ type: 'revolute', a, maxMotorTorque: -5 }), RangeError, 'maxMotorTorque', '-5');
+    // A motor's speed is a speed: within ±1e9, as angularVelocity is (1e300 spun the body to 1e300 rad/s).
+    throwsNaming(() => world.addJoint({ type: 'revolute', a, motorSpeed: 1e300 }), RangeError, 'motorSpeed', '1e+300');
     throwsNaming(() => world.addJoint({ type: 'prismatic', a, b, axis: { x: 0, y: 0 } }), RangeError, 'axis');
     throwsNaming(() => world.addJoint({ type: 'distance', a, b, lower: 3, upper: 1 }), RangeError, 'lower', 'upper');
     throwsNaming(() => world.addJoint({ type: 'spring', a, b, stiffness: 0 }), RangeError, 'stiffness', '0');
