@@ -49,6 +49,7 @@ export const FIELDS = {
       topologyDirty: 'rebuilt by restore()',
       collidersDirty: 'rebuilt by restore()',
       freeMovableParticles: 'rebuilt by restore()',
+      pinMoved: 'a request for the next step (restore() puts the pins where the snapshot had them)',
       particleRows: 'rebuilt by restore()',
       measureTimings: "the caller's diagnostics switch, not simulation state",
       timings: "the last step's diagnostics",

@@ -481,6 +481,8 @@ export class World {
   setPinTarget(pin: Handle, x: number, y: number): void {
     const row = this.ctx.constraints.rowOf(pin, Kind.Pin, 'pin');
     wakeParticle(this.ctx, this.pins.p[row]);
+    // A particle of no body has no body to wake: a settled world would not step, and it would stay where it was.
+    this.ctx.pinMoved = true;
     this.pins.tx[row] = coordinate('x', x);
     this.pins.ty[row] = coordinate('y', y);
   }

@@ -79,6 +79,8 @@ export class StepContext {
   collidersDirty = false;
   /** Movable particles that belong to no body (they never sleep). */
   freeMovableParticles = 0;
+  /** A pin of a particle that belongs to no body was moved: the next step runs, settled or not. */
+  pinMoved = false;
   /** Movable rows that are not rigid bodies (particles of any body or none): 'auto' substeps depend on it. */
   particleRows = 0;
 

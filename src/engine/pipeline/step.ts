@@ -45,6 +45,7 @@ export function step(ctx: StepContext, dt: number): void {
     return;
   }
   const t0 = ctx.measureTimings ? performance.now() : 0;
+  ctx.pinMoved = false;
   recordStartPositions(ctx);
   detectCollisions(ctx, dt);
   kernelAtWork(ctx)?.beginStep(ctx);
@@ -189,7 +190,7 @@ export function advance(ctx: StepContext, elapsed: number, afterStep?: () => voi
 /** True when every body is asleep and no free particle moves: a step then does no work. */
 export function isSettled(ctx: StepContext): boolean {
   const sleep = ctx.sleep;
-  return !ctx.topologyDirty && sleep.enabled && sleep.awakeCount === 0 && ctx.freeMovableParticles === 0 && ctx.constraints.grabs.count === 0;
+  return !ctx.topologyDirty && !ctx.pinMoved && sleep.enabled && sleep.awakeCount === 0 && ctx.freeMovableParticles === 0 && ctx.constraints.grabs.count === 0;
 }
 
 /**

@@ -60,6 +60,26 @@ export function setBodyPose(ctx: StepContext, body: Handle, x: number, y: number
   const r = rigidOf(ctx, body);
   setPose(ctx.particles, r.i, r.source, coordinate('x', x), coordinate('y', y), finite('angle', angle));
   wake(ctx, r.slot);
+  wakeNear(ctx, r.slot);
+}
+
+/**
+ * Wakes the bodies whose last bounding boxes meet body `slot`'s (where it was): what rested on a body that is moved
+ * away (or a ground lowered under it) falls, where it stayed asleep in mid-air, no contact with a moving body left to
+ * wake it. (Where the body arrives, its contacts wake what they touch.)
+ */
+function wakeNear(ctx: StepContext, slot: number): void {
+  const { colliders: c, bodies } = ctx;
+  if (slot >= c.minX.length) return;
+  const margin = 0.01;
+  const x0 = c.minX[slot] - margin;
+  const y0 = c.minY[slot] - margin;
+  const x1 = c.maxX[slot] + margin;
+  const y1 = c.maxY[slot] + margin;
+  for (let s = 0, n = Math.min(bodies.ids.high, c.minX.length); s < n; s++) {
+    if (s === slot || !bodies.ids.alive[s] || c.minX[s] > x1 || c.maxX[s] < x0 || c.minY[s] > y1 || c.maxY[s] < y0) continue;
+    wake(ctx, s);
+  }
 }
 
 export function bodyVelocity(ctx: StepContext, body: Handle): Vec2 {

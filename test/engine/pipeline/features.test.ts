@@ -244,6 +244,40 @@ describe('pipeline: sleeping', () => {
     expect(world.bodyCentroid(ball.body).y).to.be.below(-10); // it landed on the stack, not through it
   });
 
+  it('moving a body with setBodyPose wakes what rested on it, and what it rested on: the box above falls, or follows a lowered ground', () => {
+    const square = [{ x: -0.5, y: -0.5 }, { x: 0.5, y: -0.5 }, { x: 0.5, y: 0.5 }, { x: -0.5, y: 0.5 }];
+    const slab = [{ x: -20, y: -0.5 }, { x: 20, y: -0.5 }, { x: 20, y: 0.5 }, { x: -20, y: 0.5 }];
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, sleeping: true });
+      const ground = world.addRigidBody({ x: 0, y: 10, points: slab, type: 'static' });
+      const under = world.addRigidBody({ x: 0, y: 9, points: square });
+      const over = world.addRigidBody({ x: 0, y: 8, points: square });
+      for (let k = 0; k < 120; k++) world.step();
+      expect(world.settled, `${kernel}: asleep`).to.equal(true);
+      // The lower box teleported away: the upper one (asleep, on nothing now) falls onto the ground.
+      world.setBodyPose(under, 10, 9, 0);
+      for (let k = 0; k < 60; k++) world.step();
+      expect(world.bodyPose(over).y, `${kernel}: fell onto the ground`).to.be.closeTo(9, 0.01);
+      for (let k = 0; k < 120; k++) world.step();
+      // The ground lowered by 0.5: the boxes on it follow.
+      world.setBodyPose(ground, 0, 10.5, 0);
+      for (let k = 0; k < 60; k++) world.step();
+      expect(world.bodyPose(over).y, `${kernel}: followed the ground down`).to.be.closeTo(9.5, 0.01);
+      expect(world.bodyPose(under).y, `${kernel}: the other one too`).to.be.closeTo(9.5, 0.01);
+    }
+  });
+
+  it('setPinTarget moves a pinned particle of no body in a settled world', () => {
+    const world = new World({ sleeping: true });
+    const p = world.addParticle({ x: 0, y: 0 });
+    const pin = world.addPin(p, {});
+    world.step();
+    expect(world.settled).to.equal(true);
+    world.setPinTarget(pin, 1, 1);
+    world.step();
+    expect(world.getPosition(p)).to.deep.equal({ x: 1, y: 1 });
+  });
+
   it('a sleeping body about to be hit wakes before the solve: a pendulum ball passes its momentum to a resting one', () => {
     // Two balls of a Newton's cradle: the second hangs still long enough to sleep; the first, let go from 45°, hits it
     // at the bottom. Elastic, equal masses: the first stops and the second leaves with its speed. Woken only after
