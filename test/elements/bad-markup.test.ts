@@ -40,7 +40,7 @@ describe('<physics-scene> bad markup', () => {
     const d = await scene.diagnostics();
     expect(d.bodyCount).to.equal(1);
     expect(d.linkCount).to.equal(0);
-    expect(scene.style.getPropertyValue('--physics-scene-aspect')).to.equal('16 / 10');
+    expect(scene.style.getPropertyValue('--physics-scene-view-aspect')).to.equal('16 / 10');
     const box = scene.querySelector<PhysicsBoxElement>('#box')!;
     await waitFor(() => box.y > 2.5, 'the good box to fall');
     // Fixing the markup brings the body in, without another error.

@@ -214,6 +214,29 @@ describe('embedding', () => {
     await waitFor(() => row.canvas?.getBoundingClientRect().width === 300, 'the flex-row embed\'s canvas at 300 px');
     for (const el of [row, inline, float, narrow, block]) el.remove();
   });
+
+  it('--physics-scene-aspect overrides the ratio of the view: on the element, from a stylesheet, or from an ancestor', async () => {
+    const sheet = document.createElement('style');
+    sheet.textContent = '.wide-embed { --physics-scene-aspect: 3 / 1; }';
+    document.head.append(sheet);
+    const page = document.createElement('div');
+    page.style.width = '600px';
+    page.innerHTML =
+      '<physics-scene width="12" height="9"></physics-scene>' +
+      '<physics-scene width="12" height="9" style="--physics-scene-aspect: 2 / 1"></physics-scene>' +
+      '<physics-scene class="wide-embed" width="12" height="9"></physics-scene>' +
+      '<div style="--physics-scene-aspect: 1 / 1"><cloth-sim></cloth-sim></div>';
+    spacers.push(page, sheet);
+    document.body.append(page);
+    const [own, inline, styled, inherited] = page.querySelectorAll<PhysicsSceneElement>('physics-scene, cloth-sim');
+    await Promise.all([own, inline, styled, inherited].map((el) => el.updateComplete));
+    const height = (el: Element) => Math.round(el.getBoundingClientRect().height);
+    expect(height(own), 'the view\'s own 12 / 9').to.equal(450);
+    expect(height(inline), 'inline 2 / 1').to.equal(300);
+    expect(height(styled), 'a stylesheet\'s 3 / 1').to.equal(200);
+    expect(height(inherited), 'an ancestor\'s 1 / 1').to.equal(600);
+    expect(inline.getAttribute('style'), 'the page\'s inline style kept').to.contain('--physics-scene-aspect: 2 / 1');
+  });
 });
 
 /** A component that renders its own <cloth-sim> in its shadow root, as a framework component would. */

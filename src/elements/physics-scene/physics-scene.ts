@@ -76,7 +76,7 @@ let callTimeoutMs = 8000;
  * too. Body and link elements are never shown.
  * @slot - The scene's body and link elements (never shown themselves), and fallback text.
  *
- * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height).
+ * @cssprop --physics-scene-aspect - Aspect ratio of the element when its height is not set (default: width / height); set on the element, in a stylesheet or on an ancestor, it overrides the view's.
  */
 export class PhysicsSceneElement extends LitElement {
   static override styles: CSSResultGroup = sceneStyles;
@@ -623,7 +623,9 @@ export class PhysicsSceneElement extends LitElement {
 
   protected override updated(changed: PropertyValues): void {
     const { width, height } = this.settings.config;
-    this.style.setProperty('--physics-scene-aspect', `${width} / ${height}`);
+    // The view's ratio under its own name: a page's --physics-scene-aspect (on the element, in a stylesheet, or
+    // inherited) takes precedence over it (styles.ts), where writing that property here overwrote the page's.
+    this.style.setProperty('--physics-scene-view-aspect', `${width} / ${height}`);
     if (!this.session.live) return;
     const params = changedParams(changed.keys(), this.params());
     if (Object.keys(params).length > 0) this.session.send('setParams', params);

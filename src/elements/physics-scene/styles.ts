@@ -16,7 +16,7 @@ export const sceneStyles = css`
   :host {
     display: block;
     position: relative;
-    aspect-ratio: var(--physics-scene-aspect, 16 / 9);
+    aspect-ratio: var(--physics-scene-aspect, var(--physics-scene-view-aspect, 16 / 9));
     overflow: hidden;
     touch-action: manipulation;
     user-select: none;
