@@ -7,7 +7,7 @@
 import { expect } from '@open-wc/testing';
 import { PhysicsSceneElement, type PhysicsErrorDetail } from '../../src/index.js';
 import { liveResources } from '../../src/worker/resources.js';
-import { TimeoutError, WorkerDiedError } from '../../src/worker/client.js';
+import { EngineStoppedError, TimeoutError, WorkerDiedError } from '../../src/worker/client.js';
 import { mount, unmount, waitFor } from './helpers.js';
 
 /** Tracks the workers made and still live (not terminated), by replacing the global Worker during a test. */
@@ -237,7 +237,13 @@ describe('fault recovery', () => {
     expect(box.textContent).to.match(/not restarted: 2 restarts within 60 s/);
     expect(s.mode).to.equal(null);
     await s.ready;
-    expect(await s.step(1)).to.equal(0);
+    // Stopped, and saying so: not running, and every engine call rejects with an EngineStoppedError.
+    expect(s.running).to.equal(false);
+    for (const call of [() => s.step(1), () => s.reset(), () => s.stateHash(), () => s.diagnostics(), () => s.snapshot()]) {
+      const error = await call().then(() => null, (e: unknown) => e);
+      expect(error, String(call)).to.be.instanceOf(EngineStoppedError);
+      expect((error as Error).message).to.match(/is stopped: its engine failed/);
+    }
     // Nothing happens any more: no restart, no worker, no pending call, no drawing.
     const drawn = s.renderedFrames;
     await sleep(2600);
@@ -247,6 +253,14 @@ describe('fault recovery', () => {
     expect(liveResources()).to.deep.include({ workers: 0, hosts: 0, pendingCalls: 0 });
     expect(s.renderedFrames - drawn).to.be.at.most(1);
     expect(uncaught.seen).to.deep.equal([]);
+    // Put in the page again (later than the same task, which is a move that keeps what it has), it starts afresh.
+    const parent = s.parentElement!;
+    s.remove();
+    await sleep(0);
+    parent.append(s);
+    await s.ready;
+    expect(await s.step(2)).to.be.greaterThan(0);
+    expect(s.running).to.equal(true);
   });
 
   it('a hung worker: a call fails with a TimeoutError naming it within callTimeout, others with WorkerDiedError; then a restart', async () => {

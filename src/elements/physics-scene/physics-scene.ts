@@ -4,7 +4,7 @@
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
 import { loadP5, type DrawHook } from '../../render/renderer.js';
-import { maxWorkers, setMaxWorkers } from '../../worker/client.js';
+import { EngineStoppedError, maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import type { Problem } from '../checks.js';
 import type { SceneHost } from '../scene-host.js';
@@ -283,7 +283,10 @@ export class PhysicsSceneElement extends LitElement {
     bodies: () => this.pickableBodies(),
     bounds: (key) => this.outlines.bounds(key),
     push: (key, dx, dy) => this.pushBody(key, dx, dy),
-    reset: () => void this.reset(),
+    // R on a scene stopped for good does nothing (its error box says why).
+    reset: () => void this.reset().catch((error: unknown) => {
+      if (!(error instanceof EngineStoppedError)) throw error;
+    }),
     ring: () => this.renderRoot?.querySelector<HTMLElement>('.ring') ?? null,
     liveRegion: () => this.renderRoot?.querySelector<HTMLElement>('.announcer') ?? null,
   });
@@ -329,9 +332,9 @@ export class PhysicsSceneElement extends LitElement {
     return this.stage.canvas;
   }
 
-  /** True while the engine steps: not paused, on screen and the page visible. */
+  /** True while the engine steps: not paused, on screen, the page visible, and not stopped after an engine failure. */
   get running(): boolean {
-    return this.visibility.running;
+    return this.visibility.running && !this.recovery.gaveUp;
   }
 
   /** True while the element is in the document, on screen and the page is visible (frames are drawn). */
@@ -397,13 +400,12 @@ export class PhysicsSceneElement extends LitElement {
   /**
    * Takes `n` fixed steps now (also while paused). Resolves to the step count once the page has the state after them:
    * body elements' `x`, `y` and `angle` then read it (also of bodies a markup change rebuilt just before). On a scene
-   * not in the page this and the other engine calls (reset, stateHash, diagnostics, snapshot, restore) reject with an
-   * `EngineStoppedError`. `n` is a whole number from 0 to 100,000 (a RangeError or TypeError otherwise).
+   * not in the page, or stopped after its engine failed past `max-restarts`, this and the other engine calls (reset,
+   * stateHash, diagnostics, snapshot, restore) reject with an `EngineStoppedError`. `n` is a whole number from 0 to 100,000 (a RangeError or TypeError otherwise).
    */
   async step(n = 1): Promise<number> {
     checkSteps(n);
-    const engine = await this.session.whenReady();
-    if (!engine) return 0;
+    const engine = await this.session.running();
     const count = await engine.api.step(n);
     // The frame with the topology it was drawn with: a rebuild's topology travels apart from the frame, and without it
     // the rebuilt bodies have no pose yet.
@@ -414,8 +416,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Rebuilds the scene from its markup, at time 0. */
   async reset(): Promise<void> {
-    const engine = await this.session.whenReady();
-    if (!engine) return;
+    const engine = await this.session.running();
     // Before the call: begins of the new world may arrive before its reply does.
     this.collisions.endAll();
     await engine.api.reset();
@@ -431,8 +432,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** A hash of the full simulation state: equal markup and equal steps give equal hashes in every mode. */
   async stateHash(): Promise<string> {
-    const engine = await this.session.whenReady();
-    return engine ? engine.api.stateHash() : '';
+    return (await this.session.running()).api.stateHash();
   }
 
   /**
@@ -450,16 +450,16 @@ export class PhysicsSceneElement extends LitElement {
    * the markup changed; the simulation is then left as it was.
    */
   async restore(snapshot: HostSnapshot): Promise<void> {
-    const engine = await this.session.whenReady();
+    const engine = await this.session.running();
     const s = snapshot as Partial<HostSnapshot> | null;
     if (s === null || typeof s !== 'object' || !Array.isArray(s.bodies) || !Array.isArray(s.links) || typeof s.world !== 'object' || s.world === null || typeof s.params !== 'object' || s.params === null) {
       const got = s === null || typeof s !== 'object' ? String(s) : `an object without its ${['world', 'bodies', 'links', 'params'].filter((k) => typeof (s as Record<string, unknown>)[k] !== 'object' || (s as Record<string, unknown>)[k] === null).join(', ') || 'bodies and links as arrays'}`;
       throw new TypeError(`restore() takes an object snapshot() gave, got ${got}`);
     }
-    const mismatch = engine ? this.markup.mismatch(snapshot, this.snapshotsMatchMarkup) : null;
+    const mismatch = this.markup.mismatch(snapshot, this.snapshotsMatchMarkup);
     if (mismatch) throw new RangeError(mismatch);
     this.collisions.endAll();
-    await engine?.api.restore(snapshot);
+    await engine.api.restore(snapshot);
     this.recovery.keepSnapshot();
   }
 

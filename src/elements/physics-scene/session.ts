@@ -178,10 +178,13 @@ export class EngineSession implements ReactiveController, EngineCommands {
     return this.current;
   }
 
-  /** The engine once ready; throws when there is none. */
+  /**
+   * The engine once ready. An EngineStoppedError when there is none: the scene stopped for good after its engine
+   * failed (past max-restarts), where resolving with a made-up result would hide it.
+   */
   async running(): Promise<Engine> {
     const engine = await this.whenReady();
-    if (!engine) throw new Error('<physics-scene> is not running');
+    if (!engine) throw new EngineStoppedError('<physics-scene> is stopped: its engine failed (see its physics-error); add it to the page again to restart it');
     return engine;
   }
 
