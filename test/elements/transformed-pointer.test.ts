@@ -123,9 +123,10 @@ describe('<physics-scene> transformed by the page', () => {
     });
   }
 
-  it("a page's ::part(canvas) margin, border and padding: the view is mapped where its content box is, a press takes the body there", async () => {
+  for (const sizing of ['content-box', 'border-box'])
+  it(`a page's ::part(canvas) margin, border and padding (${sizing}): the view is mapped where its content box is, a press takes the body there`, async () => {
     const sheet = document.createElement('style');
-    sheet.textContent = 'physics-scene.framed::part(canvas) { margin: 12px 0 0 20px; border: 3px solid #000; padding: 5px 7px 4px 6px; }';
+    sheet.textContent = `physics-scene.framed::part(canvas) { margin: 12px 0 0 20px; border: 3px solid #000; padding: 5px 7px 4px 6px; box-sizing: ${sizing}; }`;
     document.head.append(sheet);
     try {
       scene = await mount(`class="framed" width="10" height="10" gravity="0 0" bounds="none" paused background="#ffffff"`, BODIES, { width: SIZE, height: SIZE });

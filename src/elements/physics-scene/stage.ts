@@ -170,11 +170,15 @@ export class StageController implements ReactiveController {
       const style = getComputedStyle(canvas);
       const left = parseFloat(style.paddingLeft) || 0;
       const top = parseFloat(style.paddingTop) || 0;
-      w -= left + (parseFloat(style.paddingRight) || 0);
-      h -= top + (parseFloat(style.paddingBottom) || 0);
       const x = (parseFloat(style.marginLeft) || 0) + (parseFloat(style.borderLeftWidth) || 0) + left;
       const y = (parseFloat(style.marginTop) || 0) + (parseFloat(style.borderTopWidth) || 0) + top;
-      corners = this.corners.read(x, y, w, h);
+      const cw = w - left - (parseFloat(style.paddingRight) || 0);
+      const ch = h - top - (parseFloat(style.paddingBottom) || 0);
+      corners = this.corners.read(x, y, cw, ch);
+      // The view is drawn for the canvas's CSS size (p5 writes it on the canvas), which its content box shows whole:
+      // smaller under box-sizing: border-box with padding or a border.
+      w = parseFloat(canvas.style.width) || cw;
+      h = parseFloat(canvas.style.height) || ch;
     } else {
       // A canvas that is not the renderer's own in the stage (unit tests' fakes): its box, exact for translation and
       // scale only.
