@@ -111,6 +111,9 @@ const arg = new Float64Array(7);
 /** What turnRow() turns a row by, times its inverse inertia (a typed array, like arg). */
 const by = new Float64Array(1);
 
+/** The relative angle correctWeld() holds, past the joint's refAngle: 0 for a weld, a limit's bound for a revolute. */
+const weldAngle = new Float64Array(1);
+
 /** Turns row i (−1: the world, which does not turn) by sign × by[0] × its inverse inertia. */
 function turnRow(r: BodyRows, i: number, sign: number): void {
   if (i < 0) return;
@@ -279,7 +282,7 @@ function correctWeld(j: Joints, r: BodyRows, i: number, a: number, b: number): v
   const k33 = iA + iB;
   const e1 = -(at[2] - at[6]) - alphaT * j.lambda[i];
   const e2 = -(at[3] - at[7]) - alphaT * j.lambdaY[i];
-  const e3 = -(r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i]);
+  const e3 = -(r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i] - weldAngle[0]);
   // Cramer's rule on the symmetric 3×3 (no rotation freedom at all: fall back to the point alone).
   const c11 = k22 * k33 - k23 * k23;
   const c12 = k13 * k23 - k12 * k33;
@@ -308,23 +311,6 @@ function correctWeld(j: Joints, r: BodyRows, i: number, a: number, b: number): v
   turnRow(r, b, -1);
 }
 
-/**
- * Turns A and B towards their rest angle (θA − θB = refAngle: a weld, a prismatic joint) or, `limited`, back into
- * refAngle + [lower, upper] (a revolute joint's limits), sharing the turn by inverse inertia.
- */
-function correctAngle(j: Joints, r: BodyRows, i: number, a: number, b: number, limited: boolean): void {
-  const rel = r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i];
-  const e = !limited ? rel : rel < j.lower[i] ? rel - j.lower[i] : rel > j.upper[i] ? rel - j.upper[i] : 0;
-  if (e === 0) return;
-  const iA = r.invInertia[a];
-  const iB = b < 0 ? 0 : r.invInertia[b];
-  const w = iA + iB;
-  if (w === 0) return;
-  by[0] = e / w;
-  turnRow(r, a, -1);
-  turnRow(r, b, 1);
-}
-
 /** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
@@ -343,16 +329,22 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
     }
     if (kind === JointKind.Weld) {
       loadAnchors(j, r, i);
+      weldAngle[0] = 0;
       correctWeld(j, r, i, a, b);
       continue;
     }
     if (kind === JointKind.Revolute) {
-      // Limits first, then the point, which their turn moved; the motor last: before the point, the point's turn
-      // undid part of it every substep, and a motor held no load (a rod pivoted at its end sagged at 0.075 rad/s
-      // under gravity whatever its torque, and a 1 rad/s motor ran at 0.89-1.08).
-      if (j.limit[i] === 1) correctAngle(j, r, i, a, b, true);
+      // Past a limit: the point and the bound at once, as a weld at the bound. One after the other, the angle's turn
+      // about the centre of mass left the centre moving, and the point turned that back into spin: a rod pivoted at
+      // its end rebounded from its limit at 0.42 of its speed. Then the motor: before the point, the point's turn
+      // undid part of it every substep, and a motor held no load (a rod pivoted at its end sagged at 0.075 rad/s under
+      // gravity whatever its torque, and a 1 rad/s motor ran at 0.89-1.08).
       loadAnchors(j, r, i);
-      correctPoint(j, r, i, a, b);
+      const rel = j.limit[i] === 1 ? r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i] : 0;
+      if (j.limit[i] === 1 && (rel < j.lower[i] || rel > j.upper[i])) {
+        weldAngle[0] = rel < j.lower[i] ? j.lower[i] : j.upper[i];
+        correctWeld(j, r, i, a, b);
+      } else correctPoint(j, r, i, a, b);
       if (j.motor[i] === 1) solveMotor(j, r, i, a, b);
       continue;
     }

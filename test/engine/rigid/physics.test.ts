@@ -462,6 +462,28 @@ describe('rigid bodies: joints', () => {
     expect(w2.bodyPose(lever).angle).to.be.greaterThan(0.5);
   });
 
+  it('a revolute limit stops a rod pivoted at its end dead (an inelastic stop), its pivot in place', () => {
+    // No gravity, spinning at 5 rad/s into upperAngle 1. The limit was solved apart from the point: the angle's turn
+    // left the rod's centre moving, the point turned that back into spin, and it rebounded at 0.42 of its speed.
+    for (const substeps of ['auto', 20] as const) {
+      const world = new World({ sleeping: false, substeps, gravity: { x: 0, y: 0 } });
+      const rod = world.addRigidBody({ points: box(1, 0.1), x: 1, y: 0, vy: 5, angularVelocity: 5, collide: false });
+      world.addJoint({ type: 'revolute', a: rod, anchor: { x: 0, y: 0 }, lowerAngle: -1, upperAngle: 1 });
+      let gap = 0;
+      let most = 0;
+      steps(world, 60, () => {
+        const p = world.bodyPose(rod);
+        gap = Math.max(gap, Math.hypot(p.x - Math.cos(p.angle), p.y - Math.sin(p.angle)));
+        most = Math.max(most, p.angle);
+      });
+      const at = `substeps ${substeps}`;
+      expect(world.bodyPose(rod).angle, `${at}: at its limit`).to.be.closeTo(1, 1e-3);
+      expect(Math.abs(world.bodyAngularVelocity(rod)), `${at}: no rebound`).to.be.lessThan(1e-3);
+      expect(most, `${at}: not past it`).to.be.lessThan(1.001);
+      expect(gap, `${at}: the pivot's largest gap`).to.be.lessThan(1e-3);
+    }
+  });
+
   it('a revolute motor with enough torque holds a load still, and drives it at its speed, its pivot in place', () => {
     // A rod 2 long pivoted at its end, level under gravity: the load torque is m·g·1. The motor once ran before the
     // point constraint, whose turn undid part of it every substep: it sagged at 0.075 rad/s whatever its torque.
