@@ -42,6 +42,15 @@ async function expectSteps(scene: PhysicsSceneElement): Promise<void> {
 describe('embedding', () => {
   let scene: PhysicsSceneElement | null = null;
   const spacers: HTMLElement[] = [];
+  /** A block `width` px wide holding `html` (test markup), in the page until the test ends. */
+  const pageOf = (width: number, html: string): HTMLElement => {
+    const page = document.createElement('div');
+    page.style.width = `${width}px`;
+    page.innerHTML = html;
+    spacers.push(page);
+    document.body.append(page);
+    return page;
+  };
   afterEach(async () => {
     unmount(scene);
     scene = null;
@@ -185,16 +194,14 @@ describe('embedding', () => {
   it('has a width where the layout sizes it by its content (flex row, inline-block, float), and fills a block', async () => {
     // A CMS puts an embed beside a label or in a shrink-to-fit box: it takes 300 px there, as a canvas or a video would,
     // keeping its aspect ratio (it was 0 × 0: nothing on the page); in a plain block it still fills the container.
-    const page = document.createElement('div');
-    page.style.width = '640px';
-    page.innerHTML =
+    const page = pageOf(
+      640,
       '<div style="display:flex"><span>label</span><cloth-sim></cloth-sim></div>' +
-      '<span style="display:inline-block"><cloth-sim></cloth-sim></span>' +
-      '<div style="float:left"><physics-scene width="12" height="9"></physics-scene></div><div style="clear:both"></div>' +
-      '<div style="display:flex;width:200px"><span>label</span><cloth-sim></cloth-sim></div>' +
-      '<cloth-sim></cloth-sim>';
-    spacers.push(page);
-    document.body.append(page);
+        '<span style="display:inline-block"><cloth-sim></cloth-sim></span>' +
+        '<div style="float:left"><physics-scene width="12" height="9"></physics-scene></div><div style="clear:both"></div>' +
+        '<div style="display:flex;width:200px"><span>label</span><cloth-sim></cloth-sim></div>' +
+        '<cloth-sim></cloth-sim>',
+    );
     const [row, inline, float, narrow, block] = page.querySelectorAll<PhysicsSceneElement>('cloth-sim, physics-scene');
     await Promise.all([row, inline, float, narrow, block].map((el) => el.updateComplete));
     const size = (el: Element) => {
@@ -219,15 +226,14 @@ describe('embedding', () => {
     const sheet = document.createElement('style');
     sheet.textContent = '.wide-embed { --physics-scene-aspect: 3 / 1; }';
     document.head.append(sheet);
-    const page = document.createElement('div');
-    page.style.width = '600px';
-    page.innerHTML =
+    spacers.push(sheet);
+    const page = pageOf(
+      600,
       '<physics-scene width="12" height="9"></physics-scene>' +
-      '<physics-scene width="12" height="9" style="--physics-scene-aspect: 2 / 1"></physics-scene>' +
-      '<physics-scene class="wide-embed" width="12" height="9"></physics-scene>' +
-      '<div style="--physics-scene-aspect: 1 / 1"><cloth-sim></cloth-sim></div>';
-    spacers.push(page, sheet);
-    document.body.append(page);
+        '<physics-scene width="12" height="9" style="--physics-scene-aspect: 2 / 1"></physics-scene>' +
+        '<physics-scene class="wide-embed" width="12" height="9"></physics-scene>' +
+        '<div style="--physics-scene-aspect: 1 / 1"><cloth-sim></cloth-sim></div>',
+    );
     const [own, inline, styled, inherited] = page.querySelectorAll<PhysicsSceneElement>('physics-scene, cloth-sim');
     await Promise.all([own, inline, styled, inherited].map((el) => el.updateComplete));
     const height = (el: Element) => Math.round(el.getBoundingClientRect().height);
