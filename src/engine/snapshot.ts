@@ -49,7 +49,7 @@ export const FIELDS = {
       topologyDirty: 'rebuilt by restore()',
       collidersDirty: 'rebuilt by restore()',
       freeMovableParticles: 'rebuilt by restore()',
-      pinMoved: 'a request for the next step (restore() puts the pins where the snapshot had them)',
+      pinMoved: 'a request for the next step, cleared by restore() (the pins are where the snapshot had them)',
       particleRows: 'rebuilt by restore()',
       measureTimings: "the caller's diagnostics switch, not simulation state",
       timings: "the last step's diagnostics",
@@ -247,6 +247,7 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   ctx.rigidContacts.count = 0;
   ctx.events.count = 0;
   ctx.breaks.count = 0;
+  ctx.pinMoved = false;
   ctx.collidersDirty = true;
   ctx.topologyDirty = true;
   rebuildTopology(ctx);

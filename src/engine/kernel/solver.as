@@ -437,7 +437,7 @@ function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, 
     const g = f64x2.sub(f64x2.add(f64x2.mul(gx, nx), f64x2.mul(gy, ny)), fld(pk, 224));
     const acts = f64x2.gt(g, zero);
     // Apart and not touched yet this step: slip becomes the whole drift (contact-solver.ts followApart).
-    const apart = v128.not(v128.or(fld(pk, 320), acts));
+    const apart = v128.andnot(f64x2.ne(fld(pk, 144), zero), v128.or(fld(pk, 320), acts));
     if (!v128.any_true(v128.or(acts, apart))) continue;
     const imA = fld(pk, 160);
     const iiA = fld(pk, 176);
@@ -705,7 +705,7 @@ function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usiz
     const two = mf(pk, 7);
     // Apart and neither point touched yet this step: both slips become the drift (contact-solver.ts followApart), by
     // the friction code below, which leaves such a lane's bodies as they are.
-    const apart = v128.not(v128.or(acts, v128.or(v128.load(q0, 160), v128.load(q1, 160))));
+    const apart = v128.andnot(f64x2.ne(mf(pk, 2), zero), v128.or(acts, v128.or(v128.load(q0, 160), v128.load(q1, 160))));
     if (!v128.any_true(v128.or(acts, apart))) continue;
     // The manifold acts: weights, and what the velocity pass reads, for both points.
     const imA = mf(pk, 3);
@@ -961,7 +961,8 @@ function manifoldVelocities(vx: usize, vy: usize, omega: usize, packets: usize, 
     const rtA = f64x2.add(f64x2.mul(v128.load(q0, 16 * 11), nx), f64x2.mul(v128.load(q0, 16 * 12), ny));
     const rtB = f64x2.add(f64x2.mul(v128.load(q0, 16 * 13), nx), f64x2.mul(v128.load(q0, 16 * 14), ny));
     const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
-    const slides = v128.and(v128.and(v128.and(kicks, f64x2.lt(mf(pk, 48), zero)), f64x2.eq(v128.load(q0, 128), v128.load(q0, 112))), v128.and(v128.and(f64x2.gt(P, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)));
+    // A landing: every point apart when the step began (field 48: the larger depth), none acting before this substep.
+    const slides = v128.and(v128.and(v128.and(kicks, f64x2.lt(mf(pk, 48), zero)), v128.and(f64x2.eq(v128.load(q0, 128), v128.load(q0, 112)), f64x2.eq(v128.load(q1, 128), v128.load(q1, 112)))), v128.and(v128.and(f64x2.gt(P, zero), f64x2.gt(mu, zero)), f64x2.gt(w, zero)));
     if (v128.any_true(slides)) {
       const vt = f64x2.sub(f64x2.add(f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(nvbx, nvax)), ny), f64x2.mul(f64x2.sub(nvby, nvay), nx)), f64x2.mul(nwb, rtB)), f64x2.mul(nwa, rtA));
       const limit = f64x2.mul(mu, P);

@@ -457,8 +457,8 @@ export class WasmKernel {
       const t = two ? -1 : 0;
       i32[2 * w + 28] = t;
       i32[2 * w + 29] = t;
-      // Field 48: the smaller depth at detection (negative: some point was apart, a landing: its impulse gets friction).
-      f64[w + 96] = depth[j] < depth[i] ? depth[j] : depth[i];
+      // Field 48: the larger depth at detection (negative: every point was apart, a landing whose impulse gets friction).
+      f64[w + 96] = depth[j] > depth[i] ? depth[j] : depth[i];
       // impulseT and both points' slip start at 0, as λn, impulseN and touched below: stored, not copied (the narrow
       // phase starts every point there, and the prepare only zeroes λn again). Gap: every sweep writes it first.
       f64[w + 16] = 0;

@@ -335,7 +335,7 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
     }
     if (g0 <= 0 && g1 <= 0) {
       // Apart, and not touched yet this step: friction's reference follows the bodies (see followApart).
-      if (touched[i] === 0 && (!two || touched[j] === 0)) {
+      if (friction[i] !== 0 && touched[i] === 0 && (!two || touched[j] === 0)) {
         let apart = -(ax + mA0x - dA * mA0y - (onRow ? bx + mB0x - dB * mB0y : rBx[i])) * ny + (ay + mA0y + dA * mA0x - (onRow ? by + mB0y + dB * mB0x : rBy[i])) * nx;
         if (two) {
           apart = 0.5 * (apart + (-(ax + mA1x - dA * mA1y - (onRow ? bx + mB1x - dB * mB1y : rBx[j])) * ny + (ay + mA1y + dA * mA1x - (onRow ? by + mB1y + dB * mB1x : rBy[j])) * nx));
@@ -487,8 +487,11 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
 /** A lone point on the general path (B an edge point of a particle-built outline). */
 function solvePoint(c: RigidContacts, r: BodyRows, i: number): void {
   overlap(c, r, i, 0);
-  if (pt[0] <= 0) followApart(c, r, i, false);
-  if (pt[0] <= 0 || c.wn[i] === 0) return;
+  if (pt[0] <= 0) {
+    followApart(c, r, i, false);
+    return;
+  }
+  if (c.wn[i] === 0) return;
   if (c.touched[i] === 0 || c.restitution[i] > 0) touch(c, r, i);
   pt[1] = pt[0] / c.wn[i];
   pushApart(c, r, i, 0);
@@ -542,7 +545,7 @@ function solvePair(c: RigidContacts, r: BodyRows, i: number): void {
  * pt[0..1], pt[4..5].
  */
 function followApart(c: RigidContacts, r: BodyRows, i: number, two: boolean): void {
-  if (c.touched[i] !== 0 || (two && c.touched[i + 1] !== 0)) return;
+  if (c.friction[i] === 0 || c.touched[i] !== 0 || (two && c.touched[i + 1] !== 0)) return;
   c.slip[i] = 0;
   drift(c, r, i, 0);
   if (two) {
@@ -1011,9 +1014,9 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       vy[ib] += imB * P * ny;
       omega[ib] += invInertia[ib] * (p0 * rnB[i] + (two ? p1 * rnB[j] : 0));
     }
-    // Coulomb's friction for this impulse, for a landing (a point apart when the step began: contacts that go on
-    // touching are left to the sweep, whose friction they load from the start) in the substep it first acts in (its
-    // step's corrections are this substep's): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
+    // Coulomb's friction for this impulse, for a landing (every point of it apart when the step began, and none
+    // acting before this substep: its step's corrections are this substep's; contacts that go on touching are left to
+    // the sweep, whose friction they load from the start): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
     // so the same turn and speed along t) is cut by up to μ·P, never past rolling. The sweep's friction is bounded by
     // the sweep's normal corrections, and a landing late in a substep has little overlap there: this pass stops most
     // of its approach (and restitution adds its bounce). Without it a box thrown onto the floor came to rest anywhere
@@ -1021,7 +1024,7 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     // much of its slide. Inline: a rarely run function is left unoptimised, and its arithmetic allocates. (The kernel's
     // velocity passes do the same, lane by lane.)
     const mu = friction[i];
-    if (P > 0 && mu > 0 && (depth[i] < 0 || (two && depth[j] < 0)) && impulseN[i] === lambdaN[i]) {
+    if (P > 0 && mu > 0 && depth[i] < 0 && impulseN[i] === lambdaN[i] && (!two || (depth[j] < 0 && impulseN[j] === lambdaN[j]))) {
       // The levers' components along n (their cross products with t = (−ny, nx)), and the weight along t.
       const rtA = lAx[i] * nx + lAy[i] * ny;
       const rtB = lBx[i] * nx + lBy[i] * ny;

@@ -311,6 +311,19 @@ function correctWeld(j: Joints, r: BodyRows, i: number, a: number, b: number): v
   turnRow(r, b, -1);
 }
 
+/**
+ * A limited revolute joint past a bound (anchors loaded): the point and the bound at once, as a weld at the bound.
+ * False (nothing done) within its limits or without them.
+ */
+function holdLimit(j: Joints, r: BodyRows, i: number, a: number, b: number): boolean {
+  if (j.limit[i] !== 1) return false;
+  const rel = r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i];
+  if (rel >= j.lower[i] && rel <= j.upper[i]) return false;
+  weldAngle[0] = rel < j.lower[i] ? j.lower[i] : j.upper[i];
+  correctWeld(j, r, i, a, b);
+  return true;
+}
+
 /** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
@@ -340,12 +353,16 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
       // undid part of it every substep, and a motor held no load (a rod pivoted at its end sagged at 0.075 rad/s under
       // gravity whatever its torque, and a 1 rad/s motor ran at 0.89-1.08).
       loadAnchors(j, r, i);
-      const rel = j.limit[i] === 1 ? r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i] : 0;
-      if (j.limit[i] === 1 && (rel < j.lower[i] || rel > j.upper[i])) {
-        weldAngle[0] = rel < j.lower[i] ? j.lower[i] : j.upper[i];
-        correctWeld(j, r, i, a, b);
-      } else correctPoint(j, r, i, a, b);
-      if (j.motor[i] === 1) solveMotor(j, r, i, a, b);
+      if (!holdLimit(j, r, i, a, b)) correctPoint(j, r, i, a, b);
+      if (j.motor[i] === 1) {
+        solveMotor(j, r, i, a, b);
+        // A motor driving into its limit (a flipper) turned it past the bound and off its pivot: the limit has the
+        // last word.
+        if (j.limit[i] === 1) {
+          loadAnchors(j, r, i);
+          holdLimit(j, r, i, a, b);
+        }
+      }
       continue;
     }
     // Distance: only outside [lower, upper]; a soft one is a damped spring.

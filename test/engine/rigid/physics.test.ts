@@ -3,7 +3,7 @@
 // pyramid that stand (a heavy box placed or dropped on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
 // colliding with rigid bodies.
 import { expect } from 'chai';
-import { createCircle, createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
+import { createBox, createCircle, createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
 
 const g = 9.81;
 const box = (hw: number, hh: number): Vec2[] => [
@@ -484,6 +484,24 @@ describe('rigid bodies: joints', () => {
     }
   });
 
+  it('a revolute motor driving into its limit stops there (a flipper), its pivot in place', () => {
+    // With the motor solved last, it turned the rod past its bound and off its pivot (to 6 rad, the pivot 5.5 off).
+    for (const maxMotorTorque of [undefined, 1e4])
+      for (const motorSpeed of [3, 30]) {
+        const world = new World({ sleeping: false });
+        const rod = world.addRigidBody({ points: box(1, 0.1), x: 1, y: 0, collide: false });
+        world.addJoint({ type: 'revolute', a: rod, anchor: { x: 0, y: 0 }, lowerAngle: -0.5, upperAngle: 0.5, motorSpeed, maxMotorTorque });
+        let gap = 0;
+        steps(world, 60, () => {
+          const p = world.bodyPose(rod);
+          gap = Math.max(gap, Math.hypot(p.x - Math.cos(p.angle), p.y - Math.sin(p.angle)));
+        });
+        const at = `torque ${maxMotorTorque}, speed ${motorSpeed}`;
+        expect(world.bodyPose(rod).angle, `${at}: at its limit`).to.be.closeTo(0.5, 2e-3);
+        expect(gap, `${at}: the pivot's largest gap`).to.be.lessThan(5e-3);
+      }
+  });
+
   it('a revolute motor with enough torque holds a load still, and drives it at its speed, its pivot in place', () => {
     // A rod 2 long pivoted at its end, level under gravity: the load torque is m·g·1. The motor once ran before the
     // point constraint, whose turn undid part of it every substep: it sagged at 0.075 rad/s whatever its torque.
@@ -649,6 +667,22 @@ describe('rigid bodies: kinematic bodies and particles', () => {
     expect(deepest).to.be.lessThan(0.02);
     expect(my, "the cloth fell off").to.be.lessThan(4);
     expect(world.bodyPose(swing).angle).to.not.be.closeTo(0, 0.1);
+  });
+});
+
+describe('rigid bodies: contacts that never touch', () => {
+  it('a disc gliding just clear of a particle-built box is not pushed (its speculative points stay apart)', () => {
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const vx of [3, -3])
+        for (const gap of [0.02, 0.05]) {
+          const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false });
+          createBox(world, { x: 0, y: 0, width: 6, height: 1, model: 'particles', mass: 1000 });
+          const y = -1 - gap;
+          const disc = world.addRigidBody({ x: -vx * 0.3, y, radius: 0.5, vx });
+          let moved = 0;
+          steps(world, 30, () => (moved = Math.max(moved, Math.abs(world.bodyPose(disc).y - y))));
+          expect(moved, `${kernel}, vx ${vx}, ${gap} clear`).to.equal(0);
+        }
   });
 });
 
