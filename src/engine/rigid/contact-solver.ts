@@ -557,7 +557,7 @@ function followApart(c: RigidContacts, r: BodyRows, i: number, two: boolean): vo
   c.slip[i] = pt[0];
 }
 
-/** Point i's tangential drift since the step began, less what has slid, into pt[o]. */
+/** Point i's tangential drift since the step began, less its slip (slid, or flown before landing), into pt[o]. */
 function drift(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   const ia = c.a[i];
   const d = r.angle[ia] - r.qangle[ia];
@@ -1014,15 +1014,15 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       vy[ib] += imB * P * ny;
       omega[ib] += invInertia[ib] * (p0 * rnB[i] + (two ? p1 * rnB[j] : 0));
     }
-    // Coulomb's friction for this impulse, for a landing (every point of it apart when the step began, and none
-    // acting before this substep: its step's corrections are this substep's; contacts that go on touching are left to
-    // the sweep, whose friction they load from the start): the sliding at point i (a manifold's first point: a face's two points have the same lever along n,
-    // so the same turn and speed along t) is cut by up to μ·P, never past rolling. The sweep's friction is bounded by
-    // the sweep's normal corrections, and a landing late in a substep has little overlap there: this pass stops most
-    // of its approach (and restitution adds its bounce). Without it a box thrown onto the floor came to rest anywhere
-    // within 2.7 units of where Coulomb's law puts it, depending on when in the step it landed, and a bouncing disc kept
-    // much of its slide. Inline: a rarely run function is left unoptimised, and its arithmetic allocates. (The kernel's
-    // velocity passes do the same, lane by lane.)
+    // Coulomb's friction for this impulse, for a landing (every point of it apart when the step began, none acting
+    // before this substep: its step's corrections are this substep's). Contacts that go on touching are left to the
+    // sweep, whose friction they load from the start. The sliding at point i (a manifold's first point: a face's two
+    // points have the same lever along n, so the same turn and speed along t) is cut by up to μ·P, never past rolling.
+    // The sweep's friction is bounded by the sweep's normal corrections, and a landing late in a substep has little
+    // overlap there: this pass stops most of its approach (and restitution adds its bounce). Without it a box thrown
+    // onto the floor came to rest anywhere within 2.7 units of where Coulomb's law puts it, depending on when in the
+    // step it landed, and a bouncing disc kept much of its slide. Inline: a rarely run function is left unoptimised,
+    // and its arithmetic allocates. (The kernel's velocity passes do the same, lane by lane.)
     const mu = friction[i];
     if (P > 0 && mu > 0 && depth[i] < 0 && impulseN[i] === lambdaN[i] && (!two || (depth[j] < 0 && impulseN[j] === lambdaN[j]))) {
       // The levers' components along n (their cross products with t = (−ny, nx)), and the weight along t.

@@ -15,8 +15,9 @@ import type { BodyRows } from './rows.js';
  *
  * Per substep, for each point: the overlap d = (qA − qB)·n (n from A to B); if d > 0 both sides move apart along n by
  * d shared by generalised inverse mass (λn); then friction: the tangential drift of the two material points since
- * the step began, (pA − pB)·t − slip, is undone up to Coulomb's μ·λn (static friction holds exactly, a larger drift
- * slides and the excess becomes slip). After the substep's velocities are derived, the velocity pass sets each
+ * the step began (for a point that lands during the step: since about the substep it lands in), (pA − pB)·t − slip,
+ * is undone up to Coulomb's μ·λn (static friction holds exactly, a larger drift slides and the excess becomes slip);
+ * a landing's velocity-pass impulse gets its Coulomb friction there too. After the substep's velocities are derived, the velocity pass sets each
  * acting point's normal velocity to −e times its approach speed for an impact, 0 otherwise (two points of one
  * manifold together, by a 2×2 solve, so a box dropped flat bounces flat).
  */
@@ -43,7 +44,10 @@ export class RigidContacts extends Table {
   restitution = new Float64Array(16);
   /** Normal correction of the current substep (XPBD multiplier, in position units × mass): > 0 when the point acted. */
   lambdaN = new Float64Array(16);
-  /** Tangential distance the point has slid since the step began (friction holds the rest). */
+  /**
+   * Tangential distance the point has slid since the step began (friction holds the rest); until it first touches,
+   * its whole drift (contact-solver.ts followApart: what slid through the air is not held).
+   */
   slip = new Float64Array(16);
   /** Overlap tolerated this substep: an old deep overlap is pushed out at a bounded speed, not in one substep. */
   allowance = new Float64Array(16);
