@@ -117,6 +117,9 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   // Room for every slot's record (bodies were added: not within a step's usual work).
   if (discRecords.data.length < 8 * c.minX.length) discRecords.data = new Float64Array(8 * c.minX.length);
   const discs = discRecords.data;
+  discRecords.vx = vx;
+  discRecords.vy = vy;
+  discRecords.dt[0] = dt;
   let fastest = 0;
   let smallest = Infinity;
   for (let k = 0; k < c.activeCount; k++) {

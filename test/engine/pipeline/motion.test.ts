@@ -31,7 +31,7 @@ describe('pipeline: motion', () => {
     }
   });
 
-  it('two discs thrown head-on at 300 units/s each stop against each other, neither passing the other', () => {
+  it('two discs thrown at each other at 300 units/s, 0.1 off head-on, glance off each other: neither passes through the other', () => {
     for (const speed of [300, 60, 20]) {
       const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
       // 10 units a step each at 300 units/s: far more than the gap of 2 and the discs' size.
@@ -42,7 +42,9 @@ describe('pipeline: motion', () => {
         world.step();
         const pa = world.bodyCentroid(a.body);
         const pb = world.bodyCentroid(b.body);
-        expect(pa.x, `at ${speed} units/s, step ${k}`).to.be.below(pb.x);
+        // They roll off each other (the hit is 5.7° off head-on) and may end past each other in x, but only around:
+        // never in x past each other while their paths still overlap in y.
+        if (pa.x >= pb.x) expect(Math.abs(pb.y - pa.y), `at ${speed} units/s, step ${k}`).to.be.above(0.99);
         closest = Math.min(closest, Math.hypot(pb.x - pa.x, pb.y - pa.y));
       }
       // Touching is 1 apart; the overlap at the hit stays within a hundredth of a diameter.
