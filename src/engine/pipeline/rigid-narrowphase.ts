@@ -379,9 +379,13 @@ function discPairs(pairs: PairList, order: Int32Array | null, q: number, end: nu
       const vx = discRecords.vx[rowB] - discRecords.vx[rowA];
       const vy = discRecords.vy[rowB] - discRecords.vy[rowA];
       const along = dx * vx + dy * vy;
-      if (along < 0) {
+      const v2 = vx * vx + vy * vy;
+      // Closing in so slowly that the line of centres turns by less than 10⁻³ rad in two steps (a pile at rest): it
+      // stays as it is, without the square roots.
+      const dt = discRecords.dt[0];
+      if (along < 0 && 4e6 * v2 * dt * dt > (ra + rb) * (ra + rb)) {
         const reachSq = d2 - (ra + rb) * (ra + rb);
-        const discriminant = along * along - (vx * vx + vy * vy) * reachSq;
+        const discriminant = along * along - v2 * reachSq;
         if (discriminant >= 0) {
           // The smaller root, in the form that needs no division by |v|² (which may be 0). Much later than this step
           // (a resting pair barely closing in), the line of centres now stays: the straight path is only good for about
@@ -390,7 +394,7 @@ function discPairs(pairs: PairList, order: Int32Array | null, q: number, end: nu
           const hx = dx + vx * t;
           const hy = dy + vy * t;
           const h = Math.sqrt(hx * hx + hy * hy);
-          if (t <= 2 * discRecords.dt[0] && h > 1e-12) {
+          if (t <= 2 * dt && h > 1e-12) {
             nx = hx / h;
             ny = hy / h;
             // The gap along that normal, as the solver measures it: (ra + rb) − (centre B − centre A)·n.
