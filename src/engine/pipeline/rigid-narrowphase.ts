@@ -99,14 +99,19 @@ export class RigidNarrowPhase {
     }
     if (ka === RigidShapeKind.Circle) {
       this.circle(shapes, p, a, ia, 1);
+      this.sweep(p, ia, ib, shapes.radius[a]);
       for (let q = shapes.partStart[b], qEnd = q + shapes.partCount[b]; q < qEnd; q++) {
         this.tests++;
         shapes.viewPart(q, this.viewB);
         if (collidePolygonCircle(this.viewB, true, m)) this.emit(p, ia, ib, a, b, out);
       }
+      m.query[9] = 0;
       return;
     }
-    if (kb === RigidShapeKind.Circle) this.circle(shapes, p, b, ib, 1);
+    if (kb === RigidShapeKind.Circle) {
+      this.circle(shapes, p, b, ib, 1);
+      this.sweep(p, ib, ia, shapes.radius[b]);
+    }
     for (let q = shapes.partStart[a], qEnd = q + shapes.partCount[a]; q < qEnd; q++) {
       shapes.viewPart(q, this.viewA);
       if (kb === RigidShapeKind.Circle) {
@@ -120,6 +125,23 @@ export class RigidNarrowPhase {
         if (collidePolygons(this.viewA, this.viewB, m)) this.emit(p, ia, ib, a, b, out);
       }
     }
+    m.query[9] = 0;
+  }
+
+  /**
+   * The query's sweep for a rigid disc (row `disc`, radius r) against a rigid polygon (row `polygon`): the disc's
+   * velocity relative to the polygon's, over two steps (see discPairs), unless the polygon turns more than 0.1 rad in
+   * that time (its corners do not move straight) or the disc closes in too slowly to matter (a disc at rest on a floor).
+   */
+  private sweep(p: ParticleStore, disc: number, polygon: number, r: number): void {
+    const q = this.manifold.query;
+    const reach = 2 * discRecords.dt[0];
+    const vx = p.vx[disc] - p.vx[polygon];
+    const vy = p.vy[disc] - p.vy[polygon];
+    const turn = p.omega[polygon] * reach;
+    q[7] = vx;
+    q[8] = vy;
+    q[9] = turn * turn <= 0.01 && 1e6 * (vx * vx + vy * vy) * reach * reach > r * r ? reach : 0;
   }
 
   /** A rigid body against a particle-built outline: B's side of each point is a point on one of its edges. */

@@ -200,6 +200,101 @@ describe('rigid manifolds', () => {
     expect(collidePolygons(lifted, ground, out)).to.equal(false);
   });
 
+  it('polygon–circle swept: a circle apart and closing in takes the normal where its straight path first touches (brute force: the path sampled)', () => {
+    const r = rng(1234);
+    const out = new ContactManifold();
+    const closest = (P: PolygonRef, px: number, py: number): [number, number] => {
+      let best = Infinity;
+      let at: [number, number] = [0, 0];
+      for (let k = 0; k < P.count; k++) {
+        const k2 = (k + 1) % P.count;
+        const ex = P.x[k2] - P.x[k];
+        const ey = P.y[k2] - P.y[k];
+        const t = Math.max(0, Math.min(1, ((px - P.x[k]) * ex + (py - P.y[k]) * ey) / (ex * ex + ey * ey)));
+        const d = Math.hypot(px - P.x[k] - t * ex, py - P.y[k] - t * ey);
+        if (d < best) [best, at] = [d, [P.x[k] + t * ex, P.y[k] + t * ey]];
+      }
+      return at;
+    };
+    let hits = 0;
+    let corners = 0;
+    let grazing = 0;
+    for (let trial = 0; trial < 1500; trial++) {
+      const P = randomConvex(r, 0, 0, 1);
+      const rad = 0.1 + 0.6 * r();
+      const angle = r() * 2 * Math.PI;
+      const cx = (1.2 + rad + r()) * Math.cos(angle);
+      const cy = (1.2 + rad + r()) * Math.sin(angle);
+      if (outlineDistance(P, cx, cy) <= rad) continue;
+      // Aimed roughly at the polygon, often past its corners; up to 3 units within the sweep's time of 1.
+      const aim = angle + Math.PI + (r() - 0.5) * 1.6;
+      const speed = 3 * r();
+      const vx = speed * Math.cos(aim);
+      const vy = speed * Math.sin(aim);
+      // The oracle: the first time on the path within 1 that the circle touches (fine samples, then bisection).
+      const gap = (t: number) => outlineDistance(P, cx + vx * t, cy + vy * t) - rad;
+      const N = 4000;
+      let touch = -1;
+      let least = Infinity;
+      for (let i = 1; i <= N && touch < 0; i++) {
+        least = Math.min(least, gap(i / N));
+        if (gap(i / N) <= 0) {
+          let lo = (i - 1) / N;
+          let hi = i / N;
+          for (let b = 0; b < 60; b++) [lo, hi] = gap((lo + hi) / 2) <= 0 ? [lo, (lo + hi) / 2] : [(lo + hi) / 2, hi];
+          touch = hi;
+        }
+      }
+      // Paths that come within 10⁻⁶ of touching, or touch for less than a sample: not decided by the samples.
+      if (touch < 0 && least < 1e-3) {
+        grazing++;
+        continue;
+      }
+      for (const circleIsA of [false, true]) {
+        out.query.set([10, cx, cy, rad, 0, 0, 0, vx, vy, 0]);
+        expect(collidePolygonCircle(P, circleIsA, out)).to.equal(true);
+        const still = [out.nx, out.ny, out.depth[0]];
+        out.query.set([10, cx, cy, rad, 0, 0, 0, vx, vy, 1]);
+        expect(collidePolygonCircle(P, circleIsA, out)).to.equal(true);
+        const sign = circleIsA ? -1 : 1;
+        const at = `trial ${trial}, circle ${circleIsA ? 'A' : 'B'}`;
+        if (touch < 0) {
+          // No touch within the sweep: as found where it is.
+          expect([out.nx, out.ny, out.depth[0]], at).to.deep.equal(still);
+          continue;
+        }
+        const hx = cx + vx * touch;
+        const hy = cy + vy * touch;
+        const [qx, qy] = closest(P, hx, hy);
+        const d = Math.hypot(hx - qx, hy - qy);
+        expect(sign * out.nx, at).to.be.closeTo((hx - qx) / d, 1e-6);
+        expect(sign * out.ny, at).to.be.closeTo((hy - qy) / d, 1e-6);
+        // The gap along that normal, as the solver measures it (negative: apart), and B's point back from edge/α.
+        const [px, py] = circleIsA ? [out.pBx[0], out.pBy[0]] : [out.pAx[0], out.pAy[0]];
+        expect(outlineDistance(P, px, py), at).to.be.lessThan(1e-9);
+        expect(out.depth[0], at).to.be.closeTo(rad - ((cx - px) * (hx - qx) + (cy - py) * (hy - qy)) / d, 1e-9);
+        expect(out.depth[0], at).to.be.lessThan(0);
+        if (circleIsA) {
+          const e = out.edgeB[0];
+          const e2 = (e + 1) % P.count;
+          const al = out.alphaB[0];
+          expect(P.x[e] + al * (P.x[e2] - P.x[e]), at).to.be.closeTo(px, 1e-9);
+          expect(P.y[e] + al * (P.y[e2] - P.y[e]), at).to.be.closeTo(py, 1e-9);
+        }
+        if (!circleIsA) {
+          hits++;
+          if (Array.from(P.x).some((x, k) => Math.hypot(x - qx, P.y[k] - qy) < 1e-9)) corners++;
+        }
+      }
+    }
+    console.log(`      swept circles: ${hits} paths touching (${corners} at a corner), ${grazing} grazing left out`);
+    // Enough of each kind to mean something: faces and corners met first, paths that miss.
+    expect(hits).to.be.greaterThan(300);
+    expect(corners).to.be.greaterThan(50);
+    expect(hits - corners).to.be.greaterThan(50);
+    expect(grazing).to.be.lessThan(50);
+  });
+
   it('polygon–circle and circle–circle: points on both outlines, either side as A', () => {
     const r = rng(77);
     const out = new ContactManifold();

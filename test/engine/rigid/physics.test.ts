@@ -241,6 +241,34 @@ describe('rigid bodies: impacts', () => {
         }
   });
 
+  it("a disc meeting a box's corner bounces off the line from the corner to its centre at contact, either body moving", () => {
+    // e = 1, no friction. The disc's velocity relative to the box is mirrored in the normal from the corner to the
+    // disc's centre when they touch. Found where they were at the step's start, that normal was 3-74° wrong.
+    const square = box(1, 1);
+    for (const v of [5, 20, 60])
+      for (const b of [0.2, 0.4])
+        for (const x0 of [3, 3.37, 3.71])
+          for (const moving of ['disc', 'box', 'box first'] as const) {
+            // The box's top-left corner at (x0, 0) (y down), the disc's centre b above that corner's height.
+            const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
+            const boxBody = () =>
+              world.addRigidBody({ points: square, x: x0 + 1, y: 1, friction: 0, restitution: 1, ...(moving === 'disc' ? { type: 'static' as const } : { type: 'kinematic' as const, vx: -v }) });
+            if (moving === 'box first') boxBody();
+            const disc = world.addRigidBody({ radius: 0.5, x: 0, y: -b, vx: moving === 'disc' ? v : 0, friction: 0, restitution: 1 });
+            if (moving !== 'box first') boxBody();
+            steps(world, Math.ceil((60 * (x0 + 1)) / v) + 3);
+            const n = { x: -Math.sqrt(0.25 - b * b) / 0.5, y: -b / 0.5 };
+            // Relative to the box the disc comes at (v, 0) either way.
+            const boxV = moving === 'disc' ? 0 : -v;
+            const along = v * n.x;
+            const expected = { x: boxV + v - 2 * along * n.x, y: -2 * along * n.y };
+            const u = world.bodyVelocity(disc);
+            const at = `v ${v}, b ${b}, x0 ${x0}, ${moving} moving`;
+            expect(u.x, at).to.be.closeTo(expected.x, 1e-3 * v);
+            expect(u.y, at).to.be.closeTo(expected.y, 1e-3 * v);
+          }
+  });
+
   it("Newton's cradle: the first ball's impact passes down the row of five to the last one, which swings up", () => {
     // Five balls (e = 1, no friction) hung by distance joints 0.001 apart, the first released from 45°. The impact
     // reaches the last ball through three touching ones within a substep or two: each point bounces on the fastest
