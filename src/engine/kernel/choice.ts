@@ -55,7 +55,7 @@ function kernelModule(): WebAssembly.Module | string {
   if (compiled !== undefined) return compiled;
   if (typeof WebAssembly !== 'object') return (compiled = 'this platform has no WebAssembly');
   const bytes = kernelBytes(KERNEL_WASM_TEXT, KERNEL_WASM_OFFSET);
-  if (!WebAssembly.validate(bytes)) return (compiled = 'this platform has WebAssembly without 128-bit SIMD');
+  if (!WebAssembly.validate(bytes)) return (compiled = 'this platform has no WebAssembly SIMD');
   try {
     compiled = new WebAssembly.Module(bytes);
   } catch (error) {

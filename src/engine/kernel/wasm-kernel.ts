@@ -95,12 +95,12 @@ export class WasmKernel {
   /** Rows the columns have room for (their length; the memory holds SPARE_ROWS more, zero). */
   #capacity = 0;
   #runAddress = 0;
-  runCount = 0;
+  #runCount = 0;
   #runs: RunLayout | null = null;
   /** Byte address of each run's lane data. */
   #runData: Int32Array = new Int32Array(0);
   #packetAddress = 0;
-  packetCount = 0;
+  #packetCount = 0;
   /** Per packet lane: the distance row it solves, -1 for padding. */
   #packetRows: Int32Array = new Int32Array(0);
   /** Distance rows laid out (runs and packets): a different count means the table changed. */
@@ -207,9 +207,9 @@ export class WasmKernel {
   }
 
   solveDistances(h2: number): void {
-    if (this.runCount === 0 && this.packetCount === 0) return;
+    if (this.#runCount === 0 && this.#packetCount === 0) return;
     const m = this.#address;
-    this.#exports.a(m.x, m.y, m.invMass, this.#runAddress, this.runCount, this.#packetAddress, this.packetCount, h2, this.#freshLambdas);
+    this.#exports.a(m.x, m.y, m.invMass, this.#runAddress, this.#runCount, this.#packetAddress, this.#packetCount, h2, this.#freshLambdas);
     this.#freshLambdas = false;
   }
 
@@ -575,9 +575,9 @@ export class WasmKernel {
     this.#runs = runs;
     this.#runData = runData;
     this.#runAddress = runAddress;
-    this.runCount = runCount;
+    this.#runCount = runCount;
     this.#packetAddress = packetAddress;
-    this.packetCount = packetCount;
+    this.#packetCount = packetCount;
     this.#laidOutRows = c.count;
     this.#f64.fill(0, dataAddress / 8, rigidAddress / 8);
     this.#writePackets(c);
@@ -609,7 +609,7 @@ export class WasmKernel {
     this.#limitsChanged = false;
     const runs = this.#runs;
     if (runs) {
-      for (let k = 0; k < this.runCount; k++) {
+      for (let k = 0; k < this.#runCount; k++) {
         const kind = runs.kind[k] as RunKind;
         const data = this.#runData[k] / 8;
         const start: number = runs.laneStart[k];
