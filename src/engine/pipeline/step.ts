@@ -31,7 +31,7 @@ import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount } from '../settings.js';
 import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
-import { solveJoints } from '../rigid/joints.js';
+import { applySpringForces, hasSprings, solveJoints } from '../rigid/joints.js';
 import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
 /** One step of `dt` seconds in substepCount() substeps (settings.substeps, or by what moves under 'auto'). */
@@ -55,7 +55,7 @@ export function step(ctx: StepContext, dt: number): void {
   const n = substepCount(ctx.settings, ctx.particleRows);
   const h = dt / n;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
-  if (ctx.constraints.springs.count === 0 && !fusedAccelerations(ctx)) accelerate(ctx, h);
+  if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);
   if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
   // Between steps a particle's stored velocity is v − ½·g·h for the timestep's substeps; a step of another length
   // (variableStep, World.step(dt)) holds it for its own substeps meanwhile, so a thrown particle keeps to its parabola
@@ -88,7 +88,7 @@ export function substep(ctx: StepContext, h: number): void {
   // The kernel's Verlet step computes the accelerations itself (gravity and forces) unless springs add to them;
   // without springs, step() computed them once for all substeps.
   const fused = fusedAccelerations(ctx);
-  if (ctx.constraints.springs.count > 0) accelerate(ctx, h);
+  if (perSubstepAccelerations(ctx)) accelerate(ctx, h);
   // While the rigid lanes hold this step's contacts (every substep after the first) the columns live in the kernel's
   // memory: its Verlet step (the same arithmetic, two rows a lane) runs then too, on the accelerations step() computed
   // (fused is false without links).
@@ -139,7 +139,13 @@ function shiftVerletOffsets(ctx: StepContext, from: number, to: number): void {
 
 /** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */
 function fusedAccelerations(ctx: StepContext): boolean {
-  return kernelAtWork(ctx) !== null && ctx.settings.integrator === 'verlet' && ctx.constraints.springs.count === 0;
+  return kernelAtWork(ctx) !== null && ctx.settings.integrator === 'verlet' && !perSubstepAccelerations(ctx);
+}
+
+/** Springs (particle springs, spring joints) change the accelerations from substep to substep. */
+function perSubstepAccelerations(ctx: StepContext): boolean {
+  const { springs, joints } = ctx.constraints;
+  return springs.count > 0 || (joints.count > 0 && hasSprings(joints));
 }
 
 /**
@@ -218,8 +224,9 @@ function accelerate(ctx: StepContext, h: number): void {
     ax[i] = gx + fx[i] * invMass[i];
     ay[i] = gy + fy[i] * invMass[i];
   }
-  const springs = ctx.constraints.springs;
+  const { springs, joints } = ctx.constraints;
   if (springs.count > 0) accumulateSprings(springs, p, ax, ay, h);
+  if (joints.count > 0) applySpringForces(joints, p, ax, ay, h);
 }
 
 /** XPBD multipliers start each substep at zero. */
