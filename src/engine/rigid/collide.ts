@@ -324,7 +324,7 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   if (depth < 0 && out.query[9] > 0) {
     // Apart: the feature it meets first on its straight path, if that is another (a corner the centre is not facing
     // yet, a face instead of a corner): found where it is now, a fast disc meeting a corner was turned 3-74° wrong.
-    const hit = sweepCircle(P, cx, cy, r, out.query);
+    const hit = sweepCircle(P, out.query);
     // The vertex the centre faces now (−1: it faces a face).
     const facing = faceRegion ? -1 : along > 1 ? k1 - P.start : edge;
     if (hit >= 0 && !(faceRegion && hit === 2 * edge)) {
@@ -387,11 +387,15 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
 const sweptTime = new Float64Array(2);
 
 /**
- * The first feature of P that a circle (centre cx, cy, radius r) moving at query[7, 8] meets within query[9]: edge
- * k's face as 2k, its start vertex as 2k + 1, or −1 for none (time and fraction in sweptTime). The centre's ray
- * against P grown by r: each face moved out by r, each vertex a circle of radius r.
+ * The first feature of P that the query's circle (centre query[1, 2], radius query[3]) moving at query[7, 8] meets
+ * within query[9]: edge k's face as 2k, its start vertex as 2k + 1, or −1 for none (time and fraction in sweptTime).
+ * The centre's ray against P grown by r: each face moved out by r, each vertex a circle of radius r. (The reals come
+ * in the typed array: V8 boxes a double passed to a call it does not inline.)
  */
-function sweepCircle(P: PolygonRef, cx: number, cy: number, r: number, query: Float64Array): number {
+function sweepCircle(P: PolygonRef, query: Float64Array): number {
+  const cx = query[1];
+  const cy = query[2];
+  const r = query[3];
   const vx = query[7];
   const vy = query[8];
   const v2 = vx * vx + vy * vy;
