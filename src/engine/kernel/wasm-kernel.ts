@@ -37,6 +37,8 @@ const RF = { allowance: 14, slip: 18, touched: 20 };
 const RIGID_FIELDS = 27;
 /** Bytes a row of the contact table takes staged for the kernel's layout (eleven f64 columns, three i32: solver.as rigidLayout). */
 const STAGED = 100;
+/** The f64 columns staged, in solver.as rigidLayout's order. */
+const STAGED_COLUMNS = ['nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'allowance', 'depth'] as const;
 /**
  * Bytes per packet of two manifolds (one a lane, each with its two points; see solver.as), its f64 words, and the
  * field indices: shared fields, then point p's at MP + 18p + field.
@@ -394,18 +396,7 @@ export class WasmKernel {
     else for (let k = 0; k < 2 * COLOURS; k++) if (size[k] & 1) this.#pad(cursor[k + 1] - 1, RIGID_F64, RIGID_FIELDS, 2 * RF.allowance);
     const cap = c.a.length;
     const stage = this.#rigidAddress + align16(this.#rigidPackets * RIGID_PACKET);
-    const { nx, ny, rAx, rAy, rBx, rBy, radA, radB, friction, allowance } = c;
-    f64.set(nx, stage / 8);
-    f64.set(ny, stage / 8 + cap);
-    f64.set(rAx, stage / 8 + 2 * cap);
-    f64.set(rAy, stage / 8 + 3 * cap);
-    f64.set(rBx, stage / 8 + 4 * cap);
-    f64.set(rBy, stage / 8 + 5 * cap);
-    f64.set(radA, stage / 8 + 6 * cap);
-    f64.set(radB, stage / 8 + 7 * cap);
-    f64.set(friction, stage / 8 + 8 * cap);
-    f64.set(allowance, stage / 8 + 9 * cap);
-    f64.set(c.depth, stage / 8 + 10 * cap);
+    for (let k = 0; k < STAGED_COLUMNS.length; k++) f64.set(c[STAGED_COLUMNS[k]], stage / 8 + k * cap);
     const ints = stage / 4 + 22 * cap;
     i32.set(c.a, ints);
     i32.set(c.b, ints + cap);
@@ -476,31 +467,19 @@ export class WasmKernel {
       f64[w + 38] = 0;
       f64[w + 40] = 0;
       f64[w + 44] = 0;
-      // Point 1 (k 30..): the partner, or nowhere and never overlapping (allowance +∞) for a lone point.
+      // Point 1 (k 30..40, its gap too, which every sweep writes first): zero, then the partner's geometry, or for a
+      // lone point nowhere and never overlapping (allowance +∞).
+      for (let k = 60; k <= 80; k += 2) f64[w + k] = 0;
       if (two) {
         f64[w + 60] = rAx[j];
         f64[w + 62] = rAy[j];
         f64[w + 64] = rBx[j];
         f64[w + 66] = rBy[j];
         f64[w + 68] = radA[j];
-        f64[w + 70] = onRow ? radB[j] : 0;
+        if (onRow) f64[w + 70] = radB[j];
         f64[w + 72] = allowance[j];
-        f64[w + 74] = 0;
-        f64[w + 76] = 0;
-        f64[w + 80] = 0;
         i++;
-      } else {
-        f64[w + 60] = 0;
-        f64[w + 62] = 0;
-        f64[w + 64] = 0;
-        f64[w + 66] = 0;
-        f64[w + 68] = 0;
-        f64[w + 70] = 0;
-        f64[w + 72] = Infinity;
-        f64[w + 74] = 0;
-        f64[w + 76] = 0;
-        f64[w + 80] = 0;
-      }
+      } else f64[w + 72] = Infinity;
     }
   }
 
