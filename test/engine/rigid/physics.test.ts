@@ -488,6 +488,36 @@ describe('rigid bodies: joints', () => {
     for (const m of means) expect(m).to.be.closeTo(1, 0.01);
   });
 
+  it('two welded boxes spinning free keep their energy and angular momentum, as revolute and distance joints do', () => {
+    // Zero gravity; after the first step (the weld makes their velocities those of one rigid body) nothing acts on
+    // the pair from outside. The weld's correction once followed the current levers: 31–46% of the energy lost in 10 s.
+    for (const type of ['weld', 'revolute', 'distance'] as const) {
+      const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
+      const a = world.addRigidBody({ points: box(0.5, 0.25), mass: 1, x: -0.5, y: 0, angularVelocity: 3, vy: -1.5 });
+      const b = world.addRigidBody({ points: box(0.5, 0.25), mass: 2, x: 0.5, y: 0, angularVelocity: 3, vy: 1.5 });
+      world.addJoint({ type, a, b, anchor: { x: 0, y: 0 }, ...(type === 'distance' ? { anchorA: { x: -0.5, y: 0 }, anchorB: { x: 0.5, y: 0 } } : {}) });
+      const totals = () => {
+        let energy = 0;
+        let momentum = 0;
+        for (const h of [a, b]) {
+          const m = world.bodyMassInfo(h);
+          const p = world.bodyPose(h);
+          const v = world.bodyVelocity(h);
+          const w = world.bodyAngularVelocity(h);
+          energy += 0.5 * m.mass * (v.x * v.x + v.y * v.y) + 0.5 * m.inertia * w * w;
+          momentum += m.mass * (p.x * v.y - p.y * v.x) + m.inertia * w;
+        }
+        return { energy, momentum };
+      };
+      world.step();
+      const start = totals();
+      steps(world, 600);
+      const end = totals();
+      expect(end.energy / start.energy, `${type}: energy`).to.be.closeTo(1, 2e-3);
+      expect(end.momentum / start.momentum, `${type}: angular momentum`).to.be.closeTo(1, 1e-4);
+    }
+  });
+
   it('weld, prismatic (with limits), distance and spring joints hold what they promise', () => {
     const world = new World({ sleeping: false });
     // Weld: a plank welded to a static post keeps its angle and anchor under gravity.
