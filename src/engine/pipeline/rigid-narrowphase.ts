@@ -130,18 +130,18 @@ export class RigidNarrowPhase {
 
   /**
    * The query's sweep for a rigid disc (row `disc`, radius r) against a rigid polygon (row `polygon`): the disc's
-   * velocity relative to the polygon's, over two steps (see discPairs), unless the polygon turns more than 0.1 rad in
-   * that time (its corners do not move straight) or the disc closes in too slowly to matter (a disc at rest on a floor).
+   * velocity relative to the polygon's, over LOOKAHEAD_STEPS, unless the polygon turns more than 0.1 rad in that time
+   * (its corners do not move straight) or the disc closes in too slowly to matter (SLOW_TURN: a disc at rest on a floor).
    */
   private sweep(p: ParticleStore, disc: number, polygon: number, r: number): void {
     const q = this.manifold.query;
-    const reach = 2 * discRecords.dt[0];
+    const reach = LOOKAHEAD_STEPS * discRecords.dt[0];
     const vx = p.vx[disc] - p.vx[polygon];
     const vy = p.vy[disc] - p.vy[polygon];
     const turn = p.omega[polygon] * reach;
     q[7] = vx;
     q[8] = vy;
-    q[9] = turn * turn <= 0.01 && 1e6 * (vx * vx + vy * vy) * reach * reach > r * r ? reach : 0;
+    q[9] = turn * turn <= 0.01 && (vx * vx + vy * vy) * reach * reach > SLOW_TURN * SLOW_TURN * r * r ? reach : 0;
   }
 
   /** A rigid body against a particle-built outline: B's side of each point is a point on one of its edges. */
@@ -402,21 +402,20 @@ function discPairs(pairs: PairList, order: Int32Array | null, q: number, end: nu
       const vy = discRecords.vy[rowB] - discRecords.vy[rowA];
       const along = dx * vx + dy * vy;
       const v2 = vx * vx + vy * vy;
-      // Closing in so slowly that the line of centres turns by less than 10⁻³ rad in two steps (a pile at rest): it
-      // stays as it is, without the square roots.
-      const dt = discRecords.dt[0];
-      if (along < 0 && 4e6 * v2 * dt * dt > (ra + rb) * (ra + rb)) {
+      // Closing in so slowly that the line of centres turns by less than SLOW_TURN over the look-ahead (a pile at
+      // rest): it stays as it is, without the square roots.
+      const ahead = LOOKAHEAD_STEPS * discRecords.dt[0];
+      if (along < 0 && v2 * ahead * ahead > SLOW_TURN * SLOW_TURN * (ra + rb) * (ra + rb)) {
         const reachSq = d2 - (ra + rb) * (ra + rb);
         const discriminant = along * along - v2 * reachSq;
         if (discriminant >= 0) {
-          // The smaller root, in the form that needs no division by |v|² (which may be 0). Much later than this step
-          // (a resting pair barely closing in), the line of centres now stays: the straight path is only good for about
-          // a step, and two allow for gravity's pull on one side against a static disc, which the path leaves out.
+          // The smaller root, in the form that needs no division by |v|² (which may be 0). Past the look-ahead (a
+          // resting pair barely closing in) the line of centres now stays.
           const t = reachSq / (Math.sqrt(discriminant) - along);
           const hx = dx + vx * t;
           const hy = dy + vy * t;
           const h = Math.sqrt(hx * hx + hy * hy);
-          if (t <= 2 * dt && h > 1e-12) {
+          if (t <= ahead && h > 1e-12) {
             nx = hx / h;
             ny = hy / h;
             // The gap along that normal, as the solver measures it: (ra + rb) − (centre B − centre A)·n.
@@ -486,6 +485,15 @@ export const discRecords = {
   dt: new Float64Array(1),
 };
 
+/**
+ * How far ahead (in steps) a disc found apart is followed on its straight path to where it will touch (discPairs,
+ * RigidNarrowPhase.sweep): about a step is where the straight path holds; two leave room for gravity's pull on a ball
+ * against a static body, which the path leaves out.
+ */
+const LOOKAHEAD_STEPS = 2;
+
+/** A pair closing in too slowly to turn its contact normal by this much (rad) over the look-ahead keeps it as found. */
+const SLOW_TURN = 1e-3;
 
 /** Set by discPairs when it stopped at a pair within reach because the table is full. */
 let discTableFull = false;

@@ -438,7 +438,9 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
       continue;
     }
     // Distance: only outside [lower, upper]; a soft one is a damped spring (a force this substep, if soft enough).
-    if (springForce[i] === 1 && i < springForce.length) continue;
+    // The flag is read only for a spring: applySpringForces sets every joint's each substep while any spring exists,
+    // and a rigid joint taking a removed spring's row must not see the flag left from then.
+    if (j.compliance[i] > 0 && springForce[i] === 1) continue;
     loadAnchors(j, r, i);
     const dx = at[2] - at[6];
     const dy = at[3] - at[7];
