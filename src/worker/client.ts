@@ -111,6 +111,8 @@ export class EngineClient {
   topology: Topology | null = null;
   readonly api: Remote;
   private triple: TripleBuffer | null = null;
+  /** Collision events received so far: a frame says how many were sent before it (F.eventsSent). */
+  private eventsReceived = 0;
   private disposed = false;
   /** Why the worker died (null while it lives). */
   private deathReason: string | null = null;
@@ -317,6 +319,7 @@ export class EngineClient {
         this.options.onTopology?.(message.topology);
         break;
       case 'events':
+        this.eventsReceived += message.count;
         this.options.onEvents?.(message.data, message.count);
         break;
     }
@@ -355,16 +358,19 @@ export class EngineClient {
   }
 
   /**
-   * Resolves once a frame of step `step` (or, for step 0, any frame after a reset) has arrived: frames and replies
-   * travel on different ports, so a reply can overtake its frame.
+   * Resolves once a frame of step `step` (or, for step 0, any frame after a reset) has arrived, with the collision
+   * events sent before it: frames, events and replies travel on different ports (a shared frame on none), so a reply
+   * can overtake its frame and a shared frame its events.
    */
   async frameAt(step: number, timeout = 2000): Promise<void> {
     const until = performance.now() + timeout;
     const seen = this.frames.received;
     for (;;) {
       this.poll();
-      const s = this.frames.received > 0 ? this.frames.curr[F.stepCount] : -1;
-      if (step === 0 ? this.frames.received > seen || s === 0 : s >= step) return;
+      const f = this.frames.curr;
+      const s = this.frames.received > 0 ? f[F.stepCount] : -1;
+      const arrived = step === 0 ? this.frames.received > seen || s === 0 : s >= step;
+      if (arrived && this.eventsReceived >= f[F.eventsSent]) return;
       if (this.disposed || performance.now() > until) return;
       await new Promise((r) => setTimeout(r, 0));
     }

@@ -245,6 +245,6 @@ export class EngineHost implements EngineApi {
   #publish(): void {
     if (this.#disposed) return;
     this.#events.flush(this.#settings.params.events, this.#output);
-    this.#frames.publish(this.#loop.running, this.#settings.params.debug);
+    this.#frames.publish(this.#loop.running, this.#settings.params.debug, this.#events.sent);
   }
 }

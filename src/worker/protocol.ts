@@ -250,6 +250,11 @@ export const F = {
   /** performance.now() of the publisher when the frame was written (worker clock). */
   stamp: 10,
   links: 11,
+  /**
+   * Collision events sent before this frame. In shared mode a frame can be read before the events message sent ahead
+   * of it arrives: a reader that needs a step's events waits until it has received this many.
+   */
+  eventsSent: 12,
 } as const;
 export const HEADER = 16;
 /** Pose per body: x, y, angle (radians). */

@@ -95,6 +95,31 @@ describe('EngineClient (fake worker)', () => {
     expect(Array.from(f.spins!)).to.deep.equal([0, 0]);
   });
 
+  it('synced(n) waits for the collision events sent before step n\'s frame, though a shared frame overtakes them', async () => {
+    const received: number[] = [];
+    const client = await start(new FakeWorker(true), { onEvents: (data, count) => received.push(count) });
+    expect(client.transport).to.equal('shared');
+    // Hold every events message back 100 ms: the frame of the same step is in the shared buffer long before.
+    const port = (client as unknown as { link: { port: MessagePort } }).link.port;
+    const deliver = port.onmessage!;
+    port.onmessage = (e: MessageEvent) => (e.data.type === 'events' ? setTimeout(() => deliver.call(port, e), 100) : deliver.call(port, e));
+    await client.api.load({
+      world: {},
+      params: { gravity: { x: 0, y: 10 }, events: true },
+      bodies: [
+        { key: 1, desc: { type: 'box', x: 5, y: 9.5, width: 10, height: 1, static: true } },
+        { key: 2, desc: { type: 'box', x: 5, y: 8.5, width: 1, height: 1 } },
+      ],
+      links: [],
+    });
+    await client.synced(0);
+    // The box rests on the floor from the start: its pair begins at the first step.
+    await client.api.step(1);
+    await client.synced(1);
+    expect(client.latestStep).to.equal(1);
+    expect(received).to.deep.equal([1]);
+  });
+
   it('a worker that never answers at start: the main thread instead, and onError says why', async () => {
     const worker = new FakeWorker(false);
     const errors: string[] = [];

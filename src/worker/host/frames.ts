@@ -46,8 +46,8 @@ export class FrameEncoder {
     return this.#order.length;
   }
 
-  /** Writes the current state as one frame (after a new topology, when stale). */
-  publish(running: boolean, debug: boolean): void {
+  /** Writes the current state as one frame (after a new topology, when stale); `eventsSent`: collision events sent so far. */
+  publish(running: boolean, debug: boolean, eventsSent: number): void {
     if (this.#stale) this.#topologyNow();
     const w = this.#bindings.world;
     const p = w.particles;
@@ -71,6 +71,7 @@ export class FrameEncoder {
     f[F.cellSize] = debug ? w.gridCellSize : 0;
     f[F.running] = running ? 1 : 0;
     f[F.stamp] = performance.now();
+    f[F.eventsSent] = eventsSent;
     const { x, y, angle } = p;
     let o = HEADER;
     for (let i = 0; i < n; i++) {
