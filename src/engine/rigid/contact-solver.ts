@@ -820,10 +820,11 @@ function shockBlock(im: number, ii: number, r0: number, r1: number, b0: number, 
 
 /**
  * The shock sweep on velocities, after the velocity pass: manifold by manifold from the ground up, the upper body
- * stops approaching the lower one (which counts as fixed) when it comes faster than BOUNCE_THRESHOLD; separating
- * points are left alone. With the position
- * sweep above, which moves without adding velocity, a heavy body landing on light ones is stopped within the
- * substep instead of being lifted out of the overlap it made, and the pile under it neither jumps nor tips.
+ * stops approaching the lower one (which counts as fixed); separating points (a bounce) are left alone. With the
+ * position sweep above, which moves without adding velocity, a heavy body landing on light ones is stopped within the
+ * substep instead of being lifted out of the overlap it made, and the pile under it neither jumps nor tips. At rest
+ * too: the light body gives way under the heavy one in the regular sweep, the position sweep lifts the heavy one back
+ * without a velocity, so without this the approach would grow by g·h every substep until it bounced.
  */
 function shockVelocity(c: RigidContacts, r: BodyRows): void {
   const { vx, vy, omega, invMass, invInertia } = r;
@@ -842,8 +843,7 @@ function shockVelocity(c: RigidContacts, r: BodyRows): void {
       normalSpeed(c, r, i + 1, 2);
       v1 = vel[2];
     }
-    // Impacts only: a resting pile's slow approach (g·h a substep) is the regular velocity pass's.
-    if (v0 >= -BOUNCE_THRESHOLD && v1 >= -BOUNCE_THRESHOLD) continue;
+    if (v0 >= 0 && v1 >= 0) continue;
     const im = invMass[row];
     const ii = invInertia[row];
     const r0 = moveB ? c.rnB[i] : c.rnA[i];

@@ -773,6 +773,37 @@ describe('rigid bodies: stacks, pyramids, heavy loads', () => {
       expect(Math.abs(world.bodyPose(stack[9]).x + 20)).to.be.lessThan(0.01);
     }
   });
+
+  it('a box 30× to 1000× heavier resting on a light one is still (no creeping approach speed), does not hop, and sleeps', () => {
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const ratio of [30, 100, 1000])
+        for (const restitution of [0, 0.5]) {
+          const at = `${kernel}, ${ratio}×, restitution ${restitution}`;
+          const still = new World({ sleeping: false, gravity: { x: 0, y: 9.81 }, kernel });
+          const asleep = new World({ gravity: { x: 0, y: 9.81 }, kernel });
+          const boxes = [still, asleep].map((world) => {
+            world.addRigidBody({ points: box(100, 0.5), x: 0, y: 0.5, type: 'static', restitution });
+            const light = world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -0.5, mass: 1, restitution });
+            const heavy = world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -1.5, mass: ratio, restitution });
+            return { light, heavy };
+          });
+          let fastest = 0;
+          let highest = Infinity;
+          for (let k = 0; k < 600; k++) {
+            still.step();
+            asleep.step();
+            const v = still.bodyVelocity(boxes[0].heavy);
+            if (k >= 60) fastest = Math.max(fastest, Math.hypot(v.x, v.y));
+            highest = Math.min(highest, still.bodyPose(boxes[0].heavy).y);
+          }
+          // Before, the shock sweep cleared the overlap but left the approach speed, which grew each substep until it
+          // counted as an impact: the speed cycled 0.05–0.47, and with restitution the box hopped and never slept.
+          expect(fastest, `${at}: the heavy box's fastest speed after 1 s`).to.be.lessThan(1e-3);
+          expect(highest, `${at}: the heavy box's highest point`).to.be.greaterThan(-1.5 - 1e-3);
+          expect(still.bodyPose(boxes[0].heavy).y, at).to.be.closeTo(-1.5, 2e-3);
+          expect(asleep.isAwake(boxes[1].heavy) || asleep.isAwake(boxes[1].light), `${at}: either awake after 10 s`).to.equal(false);
+        }
+  });
 });
 
 describe('rigid bodies: kinematic bodies and particles', () => {
