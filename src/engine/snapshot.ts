@@ -73,6 +73,7 @@ export const FIELDS = {
     notSnapshotted: Object.fromEntries(
       ['kind', 'row', 'radius', 'partStart', 'partCount', 'partVertexStart', 'partVertexCount', 'partsUsed', 'lx', 'ly', 'lnx', 'lny', 'verticesUsed', 'polygons', 'polygonCount'].map((f) => [f, 'rebuilt from the sources by restore()']).concat(
         ['wx', 'wy', 'wnx', 'wny'].map((f) => [f, PER_STEP]),
+        ['internal', 'partInternal', 'staticsMoved'].map((f) => [f, "the static parts' seams: found again at the first step after restore()'s rebuild"]),
       ),
     ),
   },

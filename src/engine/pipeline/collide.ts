@@ -5,6 +5,7 @@ import { recordApproachSpeeds } from './contacts.js';
 import { pairKey, rebuildColliders } from './topology.js';
 import { ColliderKind } from './colliders.js';
 import { RigidShapeKind } from '../rigid/shapes.js';
+import { findInternalFaces } from '../rigid/seams.js';
 import { boundsContacts, discRecords } from './rigid-narrowphase.js';
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
@@ -19,7 +20,13 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   ctx.pairs.count = 0;
   if (c.activeCount === 0) return;
   const shapes = ctx.rigidShapes;
-  if (shapes.polygonCount > 0) shapes.updateWorld(ctx.particles);
+  if (shapes.polygonCount > 0) {
+    shapes.updateWorld(ctx.particles);
+    if (shapes.staticsMoved) {
+      findInternalFaces(shapes);
+      shapes.staticsMoved = false;
+    }
+  }
   updateBoundingBoxes(ctx, dt);
   ctx.broadPhase.findPairs(c, ctx.acceptPair, ctx.pairs);
   growPushedBodies(ctx);

@@ -541,7 +541,7 @@ const frictionMemo = new Float64Array([NaN, NaN, 0]);
 let staticPairs = new Int32Array(256);
 
 function emptyRef(): PolygonRef {
-  return { x: new Float64Array(8), y: new Float64Array(8), nx: new Float64Array(8), ny: new Float64Array(8), start: 0, count: 0 };
+  return { x: new Float64Array(8), y: new Float64Array(8), nx: new Float64Array(8), ny: new Float64Array(8), start: 0, count: 0, internal: null };
 }
 
 /**

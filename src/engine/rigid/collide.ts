@@ -43,6 +43,11 @@ export interface PolygonRef {
   ny: Float64Array;
   start: number;
   count: number;
+  /**
+   * Per vertex: 1 when the face from it to the next is inside a static floor of flush pieces (rigid/seams.ts); null or
+   * absent when no face is.
+   */
+  internal?: Uint8Array | null;
 }
 
 /** The reference face is B's only when its separation beats A's by this much (so it does not flicker on ties). */
@@ -148,8 +153,64 @@ export function collidePolygons(A: PolygonRef, B: PolygonRef, out: ContactManifo
   const sepB = found[0];
   if (sepB > margin) return false;
   const edgeB = found[1];
-  if (sepB > sepA + REFERENCE_TOLERANCE) return clip(B, edgeB, A, true, out);
+  const bRefers = sepB > sepA + REFERENCE_TOLERANCE;
+  if ((A.internal || B.internal) && (bRefers ? seamAxis(B, edgeB, A) : seamAxis(A, edgeA, B))) return clipAcrossSeam(A, B, out);
+  if (bRefers) return clip(B, edgeB, A, true, out);
   return clip(A, edgeA, B, false, out);
+}
+
+/**
+ * Whether P's face e is an internal face (a seam: rigid/seams.ts), or faces one of Q's within 60°: the axis a box
+ * sliding over a join of flush static pieces meets the second piece by. Only a body that sank into the first piece
+ * can be there, and the floor's top is the contact it has.
+ */
+function seamAxis(P: PolygonRef, e: number, Q: PolygonRef): boolean {
+  if (P.internal && P.internal[P.start + e] === 1) return true;
+  const seams = Q.internal;
+  if (!seams) return false;
+  const nx = P.nx[P.start + e];
+  const ny = P.ny[P.start + e];
+  for (let k = Q.start, end = Q.start + Q.count; k < end; k++) if (seams[k] === 1 && nx * Q.nx[k] + ny * Q.ny[k] < -0.5) return true;
+  return false;
+}
+
+/**
+ * collidePolygons for a pair within the margin whose axis of largest separation is a seam's: the same, from the other
+ * axes. (The pair is apart only when some axis says so, and collidePolygons returned before: no contact is made
+ * where the bodies are apart.)
+ */
+function clipAcrossSeam(A: PolygonRef, B: PolygonRef, out: ContactManifold): boolean {
+  let sepA = -Infinity;
+  let edgeA = -1;
+  let sepB = -Infinity;
+  let edgeB = -1;
+  for (let e = 0; e < A.count; e++) {
+    if (seamAxis(A, e, B)) continue;
+    const s = separation(A, e, B);
+    if (s > sepA) (sepA = s), (edgeA = e);
+  }
+  for (let e = 0; e < B.count; e++) {
+    if (seamAxis(B, e, A)) continue;
+    const s = separation(B, e, A);
+    if (s > sepB) (sepB = s), (edgeB = e);
+  }
+  if (edgeA < 0 && edgeB < 0) return false;
+  if (edgeA < 0 || sepB > sepA + REFERENCE_TOLERANCE) return clip(B, edgeB, A, true, out);
+  return clip(A, edgeA, B, false, out);
+}
+
+/** Whether a face that starts or ends at P's vertex v is a seam's (internal). */
+function seamCorner(P: PolygonRef, v: number): boolean {
+  const seams = P.internal;
+  return !!seams && (seams[P.start + v] === 1 || seams[P.start + (v === 0 ? P.count - 1 : v - 1)] === 1);
+}
+
+/** The smallest signed distance of Q's vertices to P's face e. */
+function separation(P: PolygonRef, e: number, Q: PolygonRef): number {
+  const k = P.start + e;
+  let min = Infinity;
+  for (let j = Q.start, end = Q.start + Q.count; j < end; j++) min = Math.min(min, (Q.x[j] - P.x[k]) * P.nx[k] + (Q.y[j] - P.y[k]) * P.ny[k]);
+  return min;
 }
 
 /**
@@ -285,6 +346,8 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   }
   if (best - r > margin) return false;
   const k0 = P.start + edge;
+  // Beyond a seam's face (rigid/seams.ts): inside the neighbouring piece, whose contact it is.
+  if (P.internal && P.internal[k0] === 1) return false;
   const k1 = P.start + (edge + 1 === P.count ? 0 : edge + 1);
   const v1x = P.x[k0];
   const v1y = P.y[k0];
@@ -298,7 +361,8 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   let py: number;
   let depth: number;
   let alpha: number;
-  const faceRegion = best <= 0 || (along >= 0 && along <= 1);
+  // At a seam's corner the floor goes on flat: the face, not the corner, is what the circle touches.
+  const faceRegion = best <= 0 || (along >= 0 && along <= 1) || seamCorner(P, along > 1 ? (edge + 1 === P.count ? 0 : edge + 1) : edge);
   if (faceRegion) {
     // Face region (or the centre is inside): push along the face normal.
     nx = P.nx[k0];
@@ -327,7 +391,7 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     const hit = sweepCircle(P, out.query);
     // The vertex the centre faces now (−1: it faces a face).
     const facing = faceRegion ? -1 : along > 1 ? k1 - P.start : edge;
-    if (hit >= 0 && !(faceRegion && hit === 2 * edge)) {
+    if (hit >= 0 && !(faceRegion && hit === 2 * edge) && !seamCorner(P, hit >> 1)) {
       const k = P.start + (hit >> 1);
       const hx = cx + out.query[7] * sweptTime[0];
       const hy = cy + out.query[8] * sweptTime[0];

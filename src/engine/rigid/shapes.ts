@@ -65,6 +65,14 @@ export class RigidShapes {
   wnx = new Float64Array(64);
   wny = new Float64Array(64);
   verticesUsed = 0;
+  /**
+   * Per vertex of a static part: 1 when the face from it to the next is covered by other static parts (a seam inside
+   * a floor of flush pieces: rigid/seams.ts); per part: 1 when it has such a face. Found again when `staticsMoved`.
+   */
+  internal = new Uint8Array(64);
+  partInternal = new Uint8Array(16);
+  /** Static polygons were added, removed or moved since their seams were found. */
+  staticsMoved = true;
   /** Dense list of the slots holding a polygon (for updateWorld). */
   polygons = new Int32Array(16);
   polygonCount = 0;
@@ -97,6 +105,7 @@ export class RigidShapes {
     this.partsUsed = 0;
     this.verticesUsed = 0;
     this.polygonCount = 0;
+    this.staticsMoved = true;
     for (let s = 0; s < slots; s++) {
       const src = this.sources[s];
       this.kind[s] = src ? src.kind : RigidShapeKind.None;
@@ -117,10 +126,12 @@ export class RigidShapes {
     const p = this.partsUsed++;
     this.partVertexStart = grown(this.partVertexStart, p + 1);
     this.partVertexCount = grown(this.partVertexCount, p + 1);
+    this.partInternal = grown(this.partInternal, p + 1);
     const start = this.verticesUsed;
     this.partVertexStart[p] = start;
     this.partVertexCount[p] = n;
     for (const name of ['lx', 'ly', 'lnx', 'lny', 'wx', 'wy', 'wnx', 'wny'] as const) this[name] = grown(this[name], start + n);
+    this.internal = grown(this.internal, start + n);
     for (let k = 0; k < n; k++) {
       const k2 = k + 1 === n ? 0 : k + 1;
       const ex = flat[2 * k2] - flat[2 * k];
@@ -149,6 +160,8 @@ export class RigidShapes {
       const p1 = p0 + this.partCount[s];
       const v0 = this.partVertexStart[p0];
       const v1 = this.partVertexStart[p1 - 1] + this.partVertexCount[p1 - 1];
+      // A static body moved (setBodyPose): its seams are found again.
+      if (this.type[s] === BodyType.Static && (wx[v0] !== ox + c * lx[v0] - sn * ly[v0] || wy[v0] !== oy + sn * lx[v0] + c * ly[v0] || wnx[v0] !== c * lnx[v0] - sn * lny[v0])) this.staticsMoved = true;
       for (let v = v0; v < v1; v++) {
         wx[v] = ox + c * lx[v] - sn * ly[v];
         wy[v] = oy + sn * lx[v] + c * ly[v];
@@ -179,6 +192,7 @@ export class RigidShapes {
     view.ny = this.wny;
     view.start = this.partVertexStart[p];
     view.count = this.partVertexCount[p];
+    view.internal = this.partInternal[p] === 1 ? this.internal : null;
   }
 }
 
