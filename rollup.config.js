@@ -26,7 +26,31 @@ const root = dirname(fileURLToPath(import.meta.url));
  * name in this code base is provably internal: the worker protocol, comlink, the manifest and p5 all reach properties
  * by name).
  */
-const minify = () => terser({ ecma: 2020, compress: { passes: 2 } });
+const minify = () => terser({ ecma: 2020, compress: { passes: 2 }, mangle: { nth_identifier: FIXED_NAMES } });
+
+/**
+ * Mangled names in one fixed order (English letter frequency), where terser's default orders the letters by how often
+ * each occurs in the whole output file: a change to one module then renamed every variable of the file, and the
+ * sizes of its parts (the WebAssembly kernel's share, issue 16) moved by tens of bytes with unrelated code. Plain
+ * functions, no closure: @rollup/plugin-terser sends its options to worker threads as source text.
+ */
+const FIXED_NAMES = {
+  get: function (n) {
+    const leading = 'etaoinsrlcdhupmfgbyvwkxqjzETAOINSRLCDHUPMFGBYVWKXQJZ$_';
+    const all = leading + '0123456789';
+    let name = leading[n % 54];
+    n = Math.floor(n / 54);
+    while (n > 0) {
+      n--;
+      name += all[n % 64];
+      n = Math.floor(n / 64);
+    }
+    return name;
+  },
+  consider: function () {},
+  reset: function () {},
+  sort: function () {},
+};
 
 /** TypeScript → JavaScript with esbuild (TypeScript 7 has no JS API for @rollup/plugin-typescript). */
 function esbuildTs() {
