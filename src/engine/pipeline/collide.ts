@@ -3,7 +3,7 @@
 import type { StepContext } from './context.js';
 import { recordApproachSpeeds } from './contacts.js';
 import { pairKey, rebuildColliders } from './topology.js';
-import { ColliderKind } from './colliders.js';
+import { ColliderKind, type Colliders } from './colliders.js';
 import { RigidShapeKind } from '../rigid/shapes.js';
 import { findInternalFaces } from '../rigid/seams.js';
 import { boundsContacts, discRecords } from './rigid-narrowphase.js';
@@ -23,7 +23,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   if (shapes.polygonCount > 0) {
     shapes.updateWorld(ctx.particles);
     if (shapes.staticsMoved) {
-      findInternalFaces(shapes);
+      findInternalFaces(shapes, (a, b) => collideAlike(c, a, b));
       shapes.staticsMoved = false;
     }
   }
@@ -40,6 +40,11 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   ctx.rigidAnchors.restore(ctx.rigidContacts, slop);
   ctx.anchors.restore(ctx.contacts);
   recordApproachSpeeds(ctx.contacts, ctx.particles);
+}
+
+/** Whether two bodies collide (or not) with the same bodies: both collide, with the same filter. */
+function collideAlike(c: Colliders, a: number, b: number): boolean {
+  return c.kind[a] !== ColliderKind.None && c.kind[b] !== ColliderKind.None && c.category[a] === c.category[b] && c.mask[a] === c.mask[b] && c.group[a] === c.group[b];
 }
 
 /** The static colliders, gathered when some body grows (growPushedBodies). */

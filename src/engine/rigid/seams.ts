@@ -13,18 +13,24 @@ const SEAM_TOLERANCE = 1e-6;
 /**
  * Marks each face of a static polygon part (`shapes.internal`, per vertex: the face from it to the next) that is
  * covered along its whole length by faces of other static parts lying on it, facing the other way; and each part
- * that has such a face (`shapes.partInternal`). From the world vertices: call after updateWorld() when static bodies
- * changed. Pairs of parts whose boxes are apart are skipped; the rest is quadratic in the static parts near each other.
+ * that has such a face (`shapes.partInternal`). Only parts of bodies that `collideAlike` (body slots) cover each other:
+ * a neighbour that collides with other bodies, or with none, leaves the face a real boundary for some. From the world
+ * vertices: call after updateWorld() when static bodies changed. Pairs of parts whose boxes are apart are skipped; the
+ * rest is quadratic in the static parts near each other.
  */
-export function findInternalFaces(shapes: RigidShapes): void {
+export function findInternalFaces(shapes: RigidShapes, collideAlike: (a: number, b: number) => boolean): void {
   const { wx, wy, wnx, wny } = shapes;
   shapes.internal.fill(0);
   shapes.partInternal.fill(0);
   const parts: number[] = [];
+  const bodyOf: number[] = [];
   for (let q = 0; q < shapes.polygonCount; q++) {
     const s = shapes.polygons[q];
     if (shapes.type[s] !== BodyType.Static) continue;
-    for (let p = shapes.partStart[s], end = p + shapes.partCount[s]; p < end; p++) parts.push(p);
+    for (let p = shapes.partStart[s], end = p + shapes.partCount[s]; p < end; p++) {
+      parts.push(p);
+      bodyOf.push(s);
+    }
   }
   if (parts.length < 2) return;
   const boxes = parts.map((p) => {
@@ -49,7 +55,7 @@ export function findInternalFaces(shapes: RigidShapes): void {
       const tol = SEAM_TOLERANCE * (1 + (hi - lo));
       const cover: [number, number][] = [];
       for (let j = 0; j < parts.length; j++) {
-        if (j === i || !boxesMeet(boxes[i], boxes[j], tol)) continue;
+        if (j === i || !boxesMeet(boxes[i], boxes[j], tol) || !collideAlike(bodyOf[i], bodyOf[j])) continue;
         const u0 = shapes.partVertexStart[parts[j]];
         const m = shapes.partVertexCount[parts[j]];
         for (let h = 0; h < m; h++) {

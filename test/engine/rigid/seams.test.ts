@@ -126,7 +126,7 @@ describe('rigid seams: internal faces of static polygons', () => {
     expect(partial).to.be.greaterThan(100);
   });
 
-  it('two flush floor pieces: the two faces at the join; one step taller: only the lower one; a hair apart: none; found again when a piece moves', () => {
+  it('two flush floor pieces: the two faces at the join; one step taller: only the lower one; a hair apart or colliding otherwise: none; found again when a piece moves', () => {
     // A disc far off keeps the world stepping (a world of static bodies alone does no work).
     const world = new World({ gravity: { x: 0, y: 0 }, kernel: 'js', sleeping: false });
     world.addRigidBody({ radius: 0.5, x: 0, y: -50 });
@@ -141,6 +141,13 @@ describe('rigid seams: internal faces of static polygons', () => {
     world.setBodyPose(right, 10.001, 0.5, 0);
     expect(marked()).to.deep.equal([]);
     world.setBodyPose(right, 10, 0.5, 0);
+    expect(marked()).to.have.members(['0: normal 1,0', '1: normal -1,0']);
+    // A neighbour that collides with nothing, or with other bodies, hides nothing: for some body the face is a wall.
+    world.setCollider(right, { shape: 'none' });
+    expect(marked()).to.deep.equal([]);
+    world.setCollider(right, { shape: 'polygon', mask: 2 });
+    expect(marked()).to.deep.equal([]);
+    world.setCollider(right, { mask: 0xffffffff });
     expect(marked()).to.have.members(['0: normal 1,0', '1: normal -1,0']);
     // The right piece 0.5 taller (same bottom): its side stands above the left piece, a real wall.
     world.removeBody(right);
