@@ -947,6 +947,25 @@ describe('rigid bodies: seams between static pieces', () => {
           }
   });
 
+  it('a box slides down a 20° ramp of 8 flush pieces at g·sin θ·t, not tilting (before: 3.00 units/s for 6.71 after 2 s)', () => {
+    const theta = (20 * Math.PI) / 180;
+    const [c, s] = [Math.cos(theta), Math.sin(theta)];
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: g }, sleeping: false });
+      // Pieces 5 long along the ramp, their tops on the line through (0, 1) descending to the right at θ (y down).
+      for (let k = 0; k < 8; k++) {
+        const u = -20 + 5 * (k + 0.5);
+        world.addRigidBody({ points: box(2.5, 0.5), x: u * c + 0.5 * s, y: 1 + u * s + 0.5 * c, angle: theta, type: 'static', friction: 0 });
+      }
+      const b = world.addRigidBody({ points: box(0.5, 0.5), x: -10 * c + 0.5 * s, y: 1 - 10 * s - 0.5 * c, angle: theta, friction: 0 });
+      let tilt = 0;
+      steps(world, 120, () => (tilt = Math.max(tilt, Math.abs(world.bodyPose(b).angle - theta))));
+      const v = world.bodyVelocity(b);
+      expect(Math.hypot(v.x, v.y), kernel).to.be.closeTo(g * s * 2, 1e-3);
+      expect(tilt, `${kernel}: tilt`).to.be.lessThan(1e-3);
+    }
+  });
+
   it('a rough box slides as far over joins as on one floor (v²/2μg); a piece 0.3 taller still stops it', () => {
     const mu = 0.4;
     const v0 = 4;
