@@ -32,41 +32,65 @@ export function findInternalFaces(shapes: RigidShapes, collideAlike: (a: number,
       bodyOf.push(s);
     }
   }
-  if (parts.length < 2) return;
-  const boxes = parts.map((p) => {
-    const v0 = shapes.partVertexStart[p];
-    const v1 = v0 + shapes.partVertexCount[p];
+  const n = parts.length;
+  if (n < 2) return;
+  // Each part's box and its tolerance (relative to 1 + its size: no face of it has a larger one).
+  const box = new Float64Array(5 * n);
+  let widest = 0;
+  for (let i = 0; i < n; i++) {
+    const v0 = shapes.partVertexStart[parts[i]];
     let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
-    for (let v = v0; v < v1; v++) [x0, y0, x1, y1] = [Math.min(x0, wx[v]), Math.min(y0, wy[v]), Math.max(x1, wx[v]), Math.max(y1, wy[v])];
-    return [x0, y0, x1, y1];
-  });
-  // Per face of each part: the intervals (along its tangent) that other parts' opposite faces on its line cover.
-  for (let i = 0; i < parts.length; i++) {
+    for (let v = v0, end = v0 + shapes.partVertexCount[parts[i]]; v < end; v++) {
+      if (wx[v] < x0) x0 = wx[v];
+      if (wx[v] > x1) x1 = wx[v];
+      if (wy[v] < y0) y0 = wy[v];
+      if (wy[v] > y1) y1 = wy[v];
+    }
+    const tol = SEAM_TOLERANCE * (1 + Math.max(x1 - x0, y1 - y0));
+    box.set([x0, y0, x1, y1, tol], 5 * i);
+    if (tol > widest) widest = tol;
+  }
+  // Parts whose boxes meet and that collide alike, by a sweep along x (a tile map is thousands of parts).
+  const order = Array.from({ length: n }, (_, i) => i).sort((i, j) => box[5 * i] - box[5 * j]);
+  const near: number[][] = Array.from({ length: n }, () => []);
+  for (let a = 0; a < n; a++) {
+    const i = order[a];
+    for (let b = a + 1; b < n; b++) {
+      const j = order[b];
+      if (box[5 * j] > box[5 * i + 2] + 2 * widest) break;
+      const tol = box[5 * i + 4] + box[5 * j + 4];
+      if (box[5 * j] > box[5 * i + 2] + tol || box[5 * i + 1] > box[5 * j + 3] + tol || box[5 * j + 1] > box[5 * i + 3] + tol) continue;
+      if (!collideAlike(bodyOf[i], bodyOf[j])) continue;
+      near[i].push(j);
+      near[j].push(i);
+    }
+  }
+  // Per face of each part: the intervals (along its tangent) that its neighbours' opposite faces on its line cover.
+  const cover: number[] = [];
+  for (let i = 0; i < n; i++) {
+    if (near[i].length === 0) continue;
     const p = parts[i];
     const v0 = shapes.partVertexStart[p];
-    const n = shapes.partVertexCount[p];
-    for (let k = 0; k < n; k++) {
+    const count = shapes.partVertexCount[p];
+    for (let k = 0; k < count; k++) {
       const a = v0 + k;
-      const b = v0 + (k + 1 === n ? 0 : k + 1);
-      const tx = -wny[a];
-      const ty = wnx[a];
-      const lo = wx[a] * tx + wy[a] * ty;
-      const hi = wx[b] * tx + wy[b] * ty;
+      const b = v0 + (k + 1 === count ? 0 : k + 1);
+      const [nx, ny] = [wnx[a], wny[a]];
+      const lo = wx[a] * -ny + wy[a] * nx;
+      const hi = wx[b] * -ny + wy[b] * nx;
       const tol = SEAM_TOLERANCE * (1 + (hi - lo));
-      const cover: [number, number][] = [];
-      for (let j = 0; j < parts.length; j++) {
-        if (j === i || !boxesMeet(boxes[i], boxes[j], tol) || !collideAlike(bodyOf[i], bodyOf[j])) continue;
+      cover.length = 0;
+      for (const j of near[i]) {
         const u0 = shapes.partVertexStart[parts[j]];
         const m = shapes.partVertexCount[parts[j]];
         for (let h = 0; h < m; h++) {
           const c = u0 + h;
           const d = u0 + (h + 1 === m ? 0 : h + 1);
           // Opposite normals, and both of the other face's ends on this face's line.
-          if (wnx[a] * wnx[c] + wny[a] * wny[c] > -1 + SEAM_TOLERANCE) continue;
-          const off = (x: number, y: number) => Math.abs((x - wx[a]) * wnx[a] + (y - wy[a]) * wny[a]);
-          if (off(wx[c], wy[c]) > tol || off(wx[d], wy[d]) > tol) continue;
+          if (nx * wnx[c] + ny * wny[c] > -1 + SEAM_TOLERANCE) continue;
+          if (Math.abs((wx[c] - wx[a]) * nx + (wy[c] - wy[a]) * ny) > tol || Math.abs((wx[d] - wx[a]) * nx + (wy[d] - wy[a]) * ny) > tol) continue;
           // It runs the other way along the line: from its end d to its start c.
-          cover.push([wx[d] * tx + wy[d] * ty, wx[c] * tx + wy[c] * ty]);
+          cover.push(wx[d] * -ny + wy[d] * nx, wx[c] * -ny + wy[c] * nx);
         }
       }
       if (covers(cover, lo, hi, tol)) {
@@ -77,17 +101,18 @@ export function findInternalFaces(shapes: RigidShapes, collideAlike: (a: number,
   }
 }
 
-function boxesMeet(a: number[], b: number[], tol: number): boolean {
-  return a[0] <= b[2] + tol && b[0] <= a[2] + tol && a[1] <= b[3] + tol && b[1] <= a[3] + tol;
-}
-
-/** Whether the union of the intervals covers [lo, hi] (within tol). */
-function covers(intervals: [number, number][], lo: number, hi: number, tol: number): boolean {
-  intervals.sort((u, v) => u[0] - v[0]);
+/** Whether the union of the intervals (flat: start, end, …) covers [lo, hi] (within tol). */
+function covers(intervals: number[], lo: number, hi: number, tol: number): boolean {
   let reached = lo;
-  for (const [s, e] of intervals) {
-    if (s > reached + tol) break;
-    if (e > reached) reached = e;
+  // Few intervals (a face's neighbours): extend the reach by any that starts within it until none does.
+  for (let grew = true; grew && reached < hi - tol; ) {
+    grew = false;
+    for (let k = 0; k < intervals.length; k += 2) {
+      if (intervals[k] <= reached + tol && intervals[k + 1] > reached + tol) {
+        reached = intervals[k + 1];
+        grew = true;
+      }
+    }
   }
   return reached >= hi - tol;
 }
