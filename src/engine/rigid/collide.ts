@@ -333,21 +333,24 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   const cx = out.query[1];
   const cy = out.query[2];
   const r = out.query[3];
-  // The edge the centre is farthest outside of (or least inside).
+  // The edge the centre is farthest outside of (or least inside), but a seam's (rigid/seams.ts): beyond one, or least
+  // deep under one, the circle is in the neighbouring piece, and this one's contact is a face that is no seam (before,
+  // a disc sunk into the floor at a join met no face of either piece and fell through).
+  const seams = P.internal;
   let best = -Infinity;
   let edge = 0;
+  let apart = -Infinity;
   for (let i = 0; i < P.count; i++) {
     const k = P.start + i;
     const s = (cx - P.x[k]) * P.nx[k] + (cy - P.y[k]) * P.ny[k];
-    if (s > best) {
+    if (s > apart) apart = s;
+    if (s > best && !(seams && seams[k] === 1)) {
       best = s;
       edge = i;
     }
   }
-  if (best - r > margin) return false;
+  if (apart - r > margin) return false;
   const k0 = P.start + edge;
-  // Beyond a seam's face (rigid/seams.ts): inside the neighbouring piece, whose contact it is.
-  if (P.internal && P.internal[k0] === 1) return false;
   const k1 = P.start + (edge + 1 === P.count ? 0 : edge + 1);
   const v1x = P.x[k0];
   const v1y = P.y[k0];
