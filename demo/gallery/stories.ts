@@ -150,6 +150,24 @@ const rigidStories: Story[] = [
     ]),
   },
   {
+    id: 'tiles',
+    group: 'Rigid bodies',
+    title: 'Planks and tiles',
+    description: 'Crates and a puck slide down a ramp of three planks and across a floor of sixteen tiles: where static pieces meet flush, the join is not an edge to trip on.',
+    root: scene({}, [
+      // Sixteen tiles, 1 wide, their tops at y = 8.2.
+      ...Array.from({ length: 16 }, (_, k) => n('physics-box', { x: k + 0.5, y: 8.6, width: 1, height: 0.8, static: true, fill: k % 2 ? '#b8bec7' : '#a2a7b0' })),
+      // Three planks 2.6 long end to end at 20°, from (0.4, 5.7) down to the floor.
+      ...Array.from({ length: 3 }, (_, k) =>
+        n('physics-box', { x: 0.4 + (k + 0.5) * 2.6 * Math.cos(Math.PI / 9), y: 5.7 + (k + 0.5) * 2.6 * Math.sin(Math.PI / 9), width: 2.6, height: 0.3, angle: 20, static: true, fill: k % 2 ? '#c9a66b' : '#b8925a' }),
+      ),
+      ...[0, 1, 2].map((k) =>
+        n('physics-box', { x: 1.1 + k * 0.9 * Math.cos(Math.PI / 9), y: 5.15 + k * 0.9 * Math.sin(Math.PI / 9), width: 0.6, height: 0.6, angle: 20, friction: 0.05, fill: ['#f2c14e', '#8ecae6', '#e76f51'][k], stroke: '#4a4f57' }),
+      ),
+      n('physics-circle', { x: 3.9, y: 6.1, radius: 0.3, friction: 0.05, fill: '#2a9d8f', stroke: '#1d6b62' }),
+    ]),
+  },
+  {
     id: 'bounce',
     group: 'Rigid bodies',
     title: 'Bounce heights',
