@@ -44,11 +44,14 @@ export interface PolygonRef {
   start: number;
   count: number;
   /**
-   * Per vertex: 1 when the face from it to the next is inside a static floor of flush pieces (rigid/seams.ts); null or
-   * absent when no face is.
+   * Per vertex (rigid/seams.ts): INTERNAL_FACE when the face from it to the next is inside a static floor of flush
+   * pieces. Null or absent when no face is.
    */
   internal?: Uint8Array | null;
 }
+
+/** PolygonRef.internal's bit for a seam face. */
+export const INTERNAL_FACE = 1;
 
 /** The reference face is B's only when its separation beats A's by this much (so it does not flicker on ties). */
 const REFERENCE_TOLERANCE = 5e-4;
@@ -165,12 +168,12 @@ export function collidePolygons(A: PolygonRef, B: PolygonRef, out: ContactManifo
  * can be there, and the floor's top is the contact it has.
  */
 function seamAxis(P: PolygonRef, e: number, Q: PolygonRef): boolean {
-  if (P.internal && P.internal[P.start + e] === 1) return true;
+  if (P.internal && (P.internal[P.start + e] & INTERNAL_FACE) !== 0) return true;
   const seams = Q.internal;
   if (!seams) return false;
   const nx = P.nx[P.start + e];
   const ny = P.ny[P.start + e];
-  for (let k = Q.start, end = Q.start + Q.count; k < end; k++) if (seams[k] === 1 && nx * Q.nx[k] + ny * Q.ny[k] < -0.5) return true;
+  for (let k = Q.start, end = Q.start + Q.count; k < end; k++) if ((seams[k] & INTERNAL_FACE) !== 0 && nx * Q.nx[k] + ny * Q.ny[k] < -0.5) return true;
   return false;
 }
 
@@ -199,10 +202,22 @@ function clipAcrossSeam(A: PolygonRef, B: PolygonRef, out: ContactManifold): boo
   return clip(A, edgeA, B, false, out);
 }
 
-/** Whether a face that starts or ends at P's vertex v is a seam's (internal). */
-function seamCorner(P: PolygonRef, v: number): boolean {
+/** Whether normal n at P's vertex v points out through a seam face (rigid/seams.ts) that starts or ends there. */
+function acrossSeam(P: PolygonRef, v: number, nx: number, ny: number): boolean {
   const seams = P.internal;
-  return !!seams && (seams[P.start + v] === 1 || seams[P.start + (v === 0 ? P.count - 1 : v - 1)] === 1);
+  if (!seams) return false;
+  const after = P.start + v;
+  const before = P.start + (v === 0 ? P.count - 1 : v - 1);
+  return ((seams[after] & INTERNAL_FACE) !== 0 && nx * P.nx[after] + ny * P.ny[after] > 0) || ((seams[before] & INTERNAL_FACE) !== 0 && nx * P.nx[before] + ny * P.ny[before] > 0);
+}
+
+/** sweepCircle()'s hit (2·edge: a face, 2·vertex + 1: a corner; centre then at hx, hy) is a seam face, or across one. */
+function sweptAcrossSeam(P: PolygonRef, hit: number, hx: number, hy: number): boolean {
+  const seams = P.internal;
+  if (!seams) return false;
+  const k = P.start + (hit >> 1);
+  if ((hit & 1) === 0) return (seams[k] & INTERNAL_FACE) !== 0;
+  return acrossSeam(P, hit >> 1, hx - P.x[k], hy - P.y[k]);
 }
 
 /** The smallest signed distance of Q's vertices to P's face e. */
@@ -340,16 +355,26 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   let best = -Infinity;
   let edge = 0;
   let apart = -Infinity;
+  let apartEdge = 0;
   for (let i = 0; i < P.count; i++) {
     const k = P.start + i;
     const s = (cx - P.x[k]) * P.nx[k] + (cy - P.y[k]) * P.ny[k];
-    if (s > apart) apart = s;
-    if (s > best && !(seams && seams[k] === 1)) {
+    if (s > apart) {
+      apart = s;
+      apartEdge = i;
+    }
+    if (s > best && !(seams && (seams[k] & INTERNAL_FACE) !== 0)) {
       best = s;
       edge = i;
     }
   }
   if (apart - r > margin) return false;
+  if (best === -Infinity) {
+    // Every face a seam (a tile inside a block of tiles): its faces as they are.
+    best = apart;
+    edge = apartEdge;
+  } else if (apart > 0 && best <= 0) return false; // Outside only through seams: in the neighbouring piece, its contact.
+
   const k0 = P.start + edge;
   const k1 = P.start + (edge + 1 === P.count ? 0 : edge + 1);
   const v1x = P.x[k0];
@@ -364,8 +389,7 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
   let py: number;
   let depth: number;
   let alpha: number;
-  // At a seam's corner the floor goes on flat: the face, not the corner, is what the circle touches.
-  const faceRegion = best <= 0 || (along >= 0 && along <= 1) || seamCorner(P, along > 1 ? (edge + 1 === P.count ? 0 : edge + 1) : edge);
+  const faceRegion = best <= 0 || (along >= 0 && along <= 1);
   if (faceRegion) {
     // Face region (or the centre is inside): push along the face normal.
     nx = P.nx[k0];
@@ -385,6 +409,10 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     if (d - r > margin) return false;
     nx = dx / d;
     ny = dy / d;
+    // A corner on a seam, the circle past the seam's side: that is the neighbouring piece's to answer (its face where
+    // the floor goes on flat, the corner of both at a peak). Two answers at one place, one of them along a face inside
+    // the floor, tripped a disc crossing a join, and one at a peak held a ball on it.
+    if (acrossSeam(P, atEnd ? (edge + 1 === P.count ? 0 : edge + 1) : edge, nx, ny)) return false;
     depth = r - d;
     alpha = atEnd ? 1 : 0;
   }
@@ -394,7 +422,7 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     const hit = sweepCircle(P, out.query);
     // The vertex the centre faces now (−1: it faces a face).
     const facing = faceRegion ? -1 : along > 1 ? k1 - P.start : edge;
-    if (hit >= 0 && !(faceRegion && hit === 2 * edge) && !seamCorner(P, hit >> 1)) {
+    if (hit >= 0 && !(faceRegion && hit === 2 * edge) && !sweptAcrossSeam(P, hit, cx + out.query[7] * sweptTime[0], cy + out.query[8] * sweptTime[0])) {
       const k = P.start + (hit >> 1);
       const hx = cx + out.query[7] * sweptTime[0];
       const hy = cy + out.query[8] * sweptTime[0];

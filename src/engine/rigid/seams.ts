@@ -5,6 +5,7 @@
 // marked internal here; collidePolygons (collide.ts) then answers from the other axes when the one it would take
 // belongs to, or faces, an internal face.
 
+import { INTERNAL_FACE } from './collide.js';
 import { BodyType, type RigidShapes } from './shapes.js';
 
 /** Faces this close to each other (relative to 1 + their length) count as the same line, and as covering it. */
@@ -94,7 +95,7 @@ export function findInternalFaces(shapes: RigidShapes, collideAlike: (a: number,
         }
       }
       if (covers(cover, lo, hi, tol)) {
-        shapes.internal[a] = 1;
+        shapes.internal[a] |= INTERNAL_FACE;
         shapes.partInternal[p] = 1;
       }
     }

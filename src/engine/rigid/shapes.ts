@@ -66,8 +66,9 @@ export class RigidShapes {
   wny = new Float64Array(64);
   verticesUsed = 0;
   /**
-   * Per vertex of a static part: 1 when the face from it to the next is covered by other static parts (a seam inside
-   * a floor of flush pieces: rigid/seams.ts); per part: 1 when it has such a face. Found again when `staticsMoved`.
+   * Per vertex of a static part: INTERNAL_FACE when the face from it to the next is covered by other static parts (a
+   * seam inside a floor of flush pieces: rigid/seams.ts); per part: 1 when it has such a face. Found again when
+   * `staticsMoved`.
    */
   internal = new Uint8Array(64);
   partInternal = new Uint8Array(16);
