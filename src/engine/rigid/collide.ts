@@ -374,7 +374,6 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     best = apart;
     edge = apartEdge;
   } else if (apart > 0 && best <= 0) return false; // Outside only through seams: in the neighbouring piece, its contact.
-
   const k0 = P.start + edge;
   const k1 = P.start + (edge + 1 === P.count ? 0 : edge + 1);
   const v1x = P.x[k0];
@@ -412,7 +411,7 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     // A corner on a seam, the circle past the seam's side: that is the neighbouring piece's to answer (its face where
     // the floor goes on flat, the corner of both at a peak). Two answers at one place, one of them along a face inside
     // the floor, tripped a disc crossing a join, and one at a peak held a ball on it.
-    if (acrossSeam(P, atEnd ? (edge + 1 === P.count ? 0 : edge + 1) : edge, nx, ny)) return false;
+    if (acrossSeam(P, (atEnd ? k1 : k0) - P.start, nx, ny)) return false;
     depth = r - d;
     alpha = atEnd ? 1 : 0;
   }
@@ -422,10 +421,11 @@ export function collidePolygonCircle(P: PolygonRef, circleIsA: boolean, out: Con
     const hit = sweepCircle(P, out.query);
     // The vertex the centre faces now (−1: it faces a face).
     const facing = faceRegion ? -1 : along > 1 ? k1 - P.start : edge;
-    if (hit >= 0 && !(faceRegion && hit === 2 * edge) && !sweptAcrossSeam(P, hit, cx + out.query[7] * sweptTime[0], cy + out.query[8] * sweptTime[0])) {
+    // Where the centre is when it touches.
+    const hx = cx + out.query[7] * sweptTime[0];
+    const hy = cy + out.query[8] * sweptTime[0];
+    if (hit >= 0 && !(faceRegion && hit === 2 * edge) && !sweptAcrossSeam(P, hit, hx, hy)) {
       const k = P.start + (hit >> 1);
-      const hx = cx + out.query[7] * sweptTime[0];
-      const hy = cy + out.query[8] * sweptTime[0];
       if ((hit & 1) === 0) {
         // A face: its normal; the point where the centre's path meets it, less the radius.
         nx = P.nx[k];

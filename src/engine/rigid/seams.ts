@@ -2,8 +2,8 @@
 // inside the solid: the side of the second piece, covered by the first piece's side. A box sliding over the join sinks
 // into the first piece by the contact slop, so its front corner meets that covered face as it comes near, and the
 // separating axis takes it (the "ghost edge"): the box was stopped, tipped or thrown over at the join. Such a face is
-// marked internal here; collidePolygons (collide.ts) then answers from the other axes when the one it would take
-// belongs to, or faces, an internal face.
+// marked internal here. In collide.ts, collidePolygons then answers from the other axes when the one it would take
+// belongs to, or faces, an internal face; collidePolygonCircle leaves a circle past a seam to the neighbouring piece.
 
 import { INTERNAL_FACE } from './collide.js';
 import { BodyType, type RigidShapes } from './shapes.js';
