@@ -31,7 +31,7 @@ for (let r = 0; r < ROUNDS; r++) {
   E.integrate(p, h, 1, 'verlet');
   sub[0] = h; sub[1] = 1;
   E.integrateRotation(p, p.torque, ctx.rigidRows, ctx.rigidCount, sub);
-  E.syncRotation(p, ctx.rigidRows, ctx.rigidCount, false);
+  E.syncRotation(p, ctx.rigidRows, ctx.rigidCount);
   let t1 = performance.now();
   E.prepareRigidContacts(c, p);
   let t2 = performance.now();

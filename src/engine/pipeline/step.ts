@@ -30,7 +30,7 @@ import { detectCollisions } from './collide.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount } from '../settings.js';
-import { integrateKinematic, integrateRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
+import { integrateKinematic, integrateRotation, resyncRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { applySpringForces, hasSprings, solveJoints } from '../rigid/joints.js';
 import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
@@ -71,7 +71,7 @@ export function step(ctx: StepContext, dt: number): void {
   }
   ctx.anchors.store(ctx.contacts);
   // The rotations follow the last substep's corrections before anything outside the solver reads them.
-  if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount, false);
+  if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
   if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
@@ -200,8 +200,8 @@ export function isSettled(ctx: StepContext): boolean {
 }
 
 /**
- * Where each particle starts the step (sleeping judges motion over whole steps, not substep jitter); rigid bodies'
- * cos/sin re-derived from their angles (the solvers advance them incrementally within a step).
+ * Where each particle starts the step (sleeping judges motion over whole steps, not substep jitter); one rigid row in
+ * RESYNC_STEPS has its cos/sin taken afresh from its angle (the substeps turn them incrementally: resyncRotation).
  */
 function recordStartPositions(ctx: StepContext): void {
   const p = ctx.particles;
@@ -211,7 +211,7 @@ function recordStartPositions(ctx: StepContext): void {
     sy[i] = y[i];
     sangle[i] = angle[i];
   }
-  if (ctx.rigidCount > 0) syncRotation(p, ctx.rigidRows, ctx.rigidCount, true);
+  if (ctx.rigidCount > 0) resyncRotation(p, ctx.rigidRows, ctx.rigidCount, ctx.stepCount);
 }
 
 /** Gravity, the user's forces and the springs' forces, as accelerations. */

@@ -1,10 +1,11 @@
 // The rigid rows' integration (rigid/rows.ts) and the shock sweep's set-up (orderForShock): the rotation (rc, rs) a
-// substep's turn brings up to the angle stays cos and sin of it at every spin rate (the series for small turns,
-// Math.cos/Math.sin beyond), and the set-up finds a contact between masses 10× apart, and only then.
+// substep's turn brings up to the angle stays cos and sin of it at every spin rate (the series for turns up to
+// SERIES_TURN, Math.cos/Math.sin beyond; one row in RESYNC_STEPS afresh a step), and the set-up finds a contact between
+// masses 10× apart, and only then.
 import { expect } from 'chai';
 import { World, type Vec2 } from '../../../src/engine/index.js';
 import { ParticleStore } from '../../../src/engine/particles.js';
-import { integrateRotation, syncRotation, updateAngularVelocity, MAX_TURN } from '../../../src/engine/rigid/rows.js';
+import { integrateRotation, resyncRotation, syncRotation, updateAngularVelocity, MAX_TURN, RESYNC_STEPS, SERIES_TURN } from '../../../src/engine/rigid/rows.js';
 import { orderForShock } from '../../../src/engine/rigid/contact-solver.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
 
@@ -18,9 +19,9 @@ const box = (hw: number, hh: number): Vec2[] => [
 const contextOf = (world: World): StepContext => (world as unknown as { ctx: StepContext }).ctx;
 
 describe('rigid rows: integration of the rotation', () => {
-  // One row per spin rate (rad/s): turns of 5.6e-5 to 0.5 rad a substep at h = 1/360, across the series' range, the
-  // Math.cos/Math.sin range and the MAX_TURN cap (the last two).
-  const RATES = [0.02, 0.2, 0.36, 1, 5, 21, 22, 60, 179, 200, -0.7, -15, -400];
+  // One row per spin rate (rad/s): turns of 5.6e-5 to 0.5 rad a substep at h = 1/360, across the series' range (to
+  // SERIES_TURN = 0.1 rad, 36 rad/s), the Math.cos/Math.sin range and the MAX_TURN cap (the last two).
+  const RATES = [0.02, 0.2, 0.36, 1, 5, 21, 22, 35.9, 36.1, 60, 179, 200, -0.7, -15, -35.9, -400];
   const h = 1 / 360;
 
   function spinning(): { p: ParticleStore; rows: Int32Array } {
@@ -50,8 +51,8 @@ describe('rigid rows: integration of the rotation', () => {
         worst = Math.max(worst, Math.abs(p.rc[k] - Math.cos(p.angle[k])), Math.abs(p.rs[k] - Math.sin(p.angle[k])));
       }
     }
-    // Two seconds of turns without the step's exact sync accumulate rounding only (measured 1.4e-14; one turn of 0.06
-    // by the 5th-order series, were it used that far, would be 6.5e-11 off).
+    // Two seconds of turns without an exact sync accumulate rounding only (one turn of 0.0997 by the series to d⁴ for
+    // the cosine, as it was before the series went to d⁸, would be 2.7e-11 off).
     expect(worst).to.be.lessThan(1e-13);
     RATES.forEach((w, k) => {
       // Free spin: angle = start + 720·h·ω (ω capped at MAX_TURN/h).
@@ -70,16 +71,54 @@ describe('rigid rows: integration of the rotation', () => {
       updateAngularVelocity(p, rows, rows.length, step);
       for (let k = 0; k < rows.length; k++) expect(p.omega[k]).to.be.closeTo((p.angle[k] - p.pangle[k]) / h, 1e-9);
     }
-    syncRotation(p, rows, rows.length, false);
+    syncRotation(p, rows, rows.length);
     for (let k = 0; k < rows.length; k++) {
       expect(p.rc[k], `row ${k}`).to.be.closeTo(Math.cos(p.angle[k]), 1e-14);
       expect(p.rs[k], `row ${k}`).to.be.closeTo(Math.sin(p.angle[k]), 1e-14);
     }
-    syncRotation(p, rows, rows.length, true);
-    for (let k = 0; k < rows.length; k++) expect([p.rc[k], p.rs[k]]).to.deep.equal([Math.cos(p.angle[k]), Math.sin(p.angle[k])]);
   });
 
-  it('a spinning disc in a world: its pose after each step has the rotation of its angle', () => {
+  it('the series is exact to rounding at every turn up to SERIES_TURN (against Math.cos/Math.sin of the sum)', () => {
+    const p = new ParticleStore();
+    p.reserve(1);
+    p.count = 1;
+    const rows = new Int32Array([0]);
+    let worst = 0;
+    for (let k = 0; k <= 2000; k++) {
+      // Turns from −SERIES_TURN to SERIES_TURN (both ends just inside), from 1,000 angles.
+      const d = (k / 1000 - 1) * SERIES_TURN * (1 - 1e-12);
+      const from = 0.37 * k;
+      p.angle[0] = from + d;
+      p.qangle[0] = from;
+      p.rc[0] = Math.cos(from);
+      p.rs[0] = Math.sin(from);
+      syncRotation(p, rows, 1);
+      worst = Math.max(worst, Math.abs(p.rc[0] - Math.cos(from + d)), Math.abs(p.rs[0] - Math.sin(from + d)));
+    }
+    // A few ulps of 1 (the sum from + d rounds too); the series to d⁴, as it was, is 2.8e-11 off at 0.1.
+    expect(worst).to.be.lessThan(1e-15);
+  });
+
+  it('resyncs one row in RESYNC_STEPS a step from Math.cos/Math.sin, in turn, so every row within RESYNC_STEPS steps', () => {
+    const n = 2 * RESYNC_STEPS + 10;
+    const p = new ParticleStore();
+    p.reserve(n);
+    p.count = n;
+    const rows = new Int32Array(n).map((_, k) => n - 1 - k);
+    // Rotations off their angles by 1e-9, as rounding never gets; each resync puts one back exactly.
+    for (let i = 0; i < n; i++) {
+      p.angle[i] = p.qangle[i] = 0.1 * i;
+      p.rc[i] = Math.cos(0.1 * i) + 1e-9;
+      p.rs[i] = Math.sin(0.1 * i);
+    }
+    const exact = (i: number): boolean => p.rc[i] === Math.cos(p.angle[i]) && p.rs[i] === Math.sin(p.angle[i]);
+    resyncRotation(p, rows, n, 7);
+    expect(Array.from(rows).filter(exact)).to.deep.equal([rows[7], rows[7 + RESYNC_STEPS], rows[7 + 2 * RESYNC_STEPS]]);
+    for (let step = 8; step < 7 + RESYNC_STEPS; step++) resyncRotation(p, rows, n, step);
+    expect(Array.from(rows).every(exact)).to.equal(true);
+  });
+
+  it('a spinning disc in a world: its pose after each step has the rotation of its angle (to rounding since its last resync)', () => {
     const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
     const discs = [0.5, 8, 30].map((w, k) => world.addRigidBody({ x: 3 * k, y: 0, radius: 0.5, angularVelocity: w }));
     const p = contextOf(world).particles;
@@ -87,8 +126,9 @@ describe('rigid rows: integration of the rotation', () => {
       world.step();
       discs.forEach((d, k) => {
         const i = contextOf(world).bodies.particles[contextOf(world).bodies.slotOf(d)][0];
-        expect(p.rc[i], `disc ${k}`).to.be.closeTo(Math.cos(p.angle[i]), 1e-14);
-        expect(p.rs[i], `disc ${k}`).to.be.closeTo(Math.sin(p.angle[i]), 1e-14);
+        // At most RESYNC_STEPS steps of series turns since the last exact rotation (measured: 4.3e-15).
+        expect(p.rc[i], `disc ${k}`).to.be.closeTo(Math.cos(p.angle[i]), 1e-13);
+        expect(p.rs[i], `disc ${k}`).to.be.closeTo(Math.sin(p.angle[i]), 1e-13);
       });
     }
     expect(world.bodyPose(discs[1]).angle).to.be.closeTo(8 * 2, 1e-9);
