@@ -136,9 +136,9 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
   let smallest = Infinity;
   for (let k = 0; k < c.activeCount; k++) {
     const s = c.active[k];
-    const idx = c.particles[s];
     if (c.kind[s] === ColliderKind.Rigid) {
-      const i = idx[0];
+      // The body's row from the shapes' column (its particle list is one row: no pointer to chase per body).
+      const i = shapes.row[s];
       if (shapes.kind[s] === RigidShapeKind.Circle) {
         // A dynamic disc (most bodies of a pile), inline: what rigidBoundingBox does for it.
         const r = shapes.radius[s];
@@ -174,6 +174,7 @@ export function updateBoundingBoxes(ctx: StepContext, dt: number): void {
       if (size < smallest) smallest = size;
       continue;
     }
+    const idx = c.particles[s];
     let minX = Infinity;
     let minY = Infinity;
     let maxX = -Infinity;
