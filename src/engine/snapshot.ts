@@ -60,6 +60,7 @@ export const FIELDS = {
       bodyParticlesOf: CALLBACK,
       rigidContacts: `${PER_STEP} (cleared by restore())`,
       jointedPairs: 'rebuilt from the joints by restore()',
+      jointedApart: 'rebuilt from the joints by restore()',
       substepReals: SCRATCH,
       rigidNarrowPhase: SCRATCH,
       rigidRows: 'rebuilt from the bodies by restore()',

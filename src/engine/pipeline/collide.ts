@@ -23,7 +23,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   if (shapes.polygonCount > 0) {
     shapes.updateWorld(ctx.particles);
     if (shapes.staticsMoved) {
-      findInternalFaces(shapes, (a, b) => collideAlike(c, a, b));
+      findInternalFaces(shapes, (a, b) => collideAlike(c, a, b) && ctx.jointedApart[a] === 0 && ctx.jointedApart[b] === 0);
       shapes.staticsMoved = false;
     }
   }
@@ -42,7 +42,10 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   recordApproachSpeeds(ctx.contacts, ctx.particles);
 }
 
-/** Whether two bodies collide (or not) with the same bodies: both collide, with the same filter. */
+/**
+ * Whether two bodies collide (or not) with the same bodies: both collide, with the same filter (the caller also asks
+ * that no joint keeps either apart from a body: that body would meet the seam from inside the jointed piece).
+ */
 function collideAlike(c: Colliders, a: number, b: number): boolean {
   return c.kind[a] !== ColliderKind.None && c.kind[b] !== ColliderKind.None && c.category[a] === c.category[b] && c.mask[a] === c.mask[b] && c.group[a] === c.group[b];
 }

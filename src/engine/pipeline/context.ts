@@ -58,6 +58,8 @@ export class StepContext {
   readonly substepReals = new Float64Array(2);
   /** Body pairs joined by a joint that does not let them collide (rebuilt with the topology). */
   readonly jointedPairs = new KeyTable();
+  /** Per body slot: 1 when a joint keeps it from colliding with another body (a static one then hides no seams). */
+  jointedApart = new Uint8Array(16);
   /** Rows of the rigid bodies that turn (dynamic and kinematic), and of the kinematic ones (rebuilt with the topology). */
   rigidRows = new Int32Array(16);
   rigidCount = 0;

@@ -61,6 +61,10 @@ export function rebuildTopology(ctx: StepContext): void {
   const j = ctx.constraints.joints;
   const jointed = ctx.jointedPairs;
   jointed.reset(j.count);
+  const before = ctx.jointedApart.slice(0, high);
+  ctx.jointedApart = grown(ctx.jointedApart, high);
+  const apart = ctx.jointedApart;
+  apart.fill(0);
   for (let r = 0; r < j.count; r++) {
     const a = owner[j.a[r]];
     const b = j.b[r] >= 0 ? owner[j.b[r]] : -1;
@@ -68,8 +72,12 @@ export function rebuildTopology(ctx: StepContext): void {
     j.bodyB[r] = b;
     if (a < 0 || b < 0 || a === b) continue;
     links.push([a, b]);
-    if (j.collide[r] === 0) jointed.insert(pairKey(a, b), 1);
+    if (j.collide[r] !== 0) continue;
+    jointed.insert(pairKey(a, b), 1);
+    apart[a] = apart[b] = 1;
   }
+  // A static piece jointed apart from a body hides no seams (collide.ts collideAlike): the seams again when that changed.
+  for (let slot = 0; slot < high; slot++) if (apart[slot] !== (before[slot] ?? 0)) ctx.rigidShapes.staticsMoved = true;
   sleep.setLinks(links);
   listRigidRows(ctx);
   let free = 0;

@@ -1041,6 +1041,29 @@ describe('rigid bodies: seams between static pieces', () => {
       expect(world.bodyVelocity(b).x, `${kernel}: stopped there`).to.be.closeTo(0, 0.01);
     }
   });
+  it('a body hinged to one floor piece, swinging through it (they do not collide), stops at the next piece’s side (before: through it, thrown out on top)', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false });
+      const left = world.addRigidBody({ points: box(2.5, 0.5), x: -2.5, y: 0.5, type: 'static' });
+      world.addRigidBody({ points: box(2.5, 0.5), x: 2.5, y: 0.5, type: 'static' });
+      // A 0.4 box hanging 0.6 below a hinge on the left piece's top, inside that piece, swung toward the right one.
+      const bob = world.addRigidBody({ points: box(0.2, 0.2), x: -0.5, y: 0.6, vx: 4 });
+      world.addJoint({ type: 'revolute', a: bob, b: left, anchor: { x: -0.5, y: 0 } });
+      let deepest = -Infinity;
+      let highest = Infinity;
+      for (let s = 0; s < 120; s++) {
+        world.step();
+        const { x, y, angle } = world.bodyPose(bob);
+        // Its rightmost corner: how far past the right piece's side (x = 0) it went.
+        deepest = Math.max(deepest, x + 0.2 * (Math.abs(Math.cos(angle)) + Math.abs(Math.sin(angle))));
+        highest = Math.min(highest, y);
+      }
+      // It touches that side (measured −0.0015; the contact slop is 0.02) and swings back below the top. Before, the
+      // side was a seam for it: the bob went 0.29 into the right piece and was thrown out on top (y −0.6).
+      expect(deepest, kernel).to.be.below(0.02);
+      expect(highest, kernel).to.be.above(0.5);
+    }
+  });
 });
 
 describe('rigid bodies: changing how they collide', () => {

@@ -126,7 +126,7 @@ describe('rigid seams: internal faces of static polygons', () => {
     expect(partial).to.be.greaterThan(100);
   });
 
-  it('two flush floor pieces: the two faces at the join; one step taller: only the lower one; a hair apart or colliding otherwise: none; found again when a piece moves', () => {
+  it('two flush floor pieces: the two faces at the join; one step taller: only the lower one; a hair apart, colliding otherwise or jointed apart from a body: none; found again when a piece moves', () => {
     // A disc far off keeps the world stepping (a world of static bodies alone does no work).
     const world = new World({ gravity: { x: 0, y: 0 }, kernel: 'js', sleeping: false });
     world.addRigidBody({ radius: 0.5, x: 0, y: -50 });
@@ -148,6 +148,15 @@ describe('rigid seams: internal faces of static polygons', () => {
     world.setCollider(right, { shape: 'polygon', mask: 2 });
     expect(marked()).to.deep.equal([]);
     world.setCollider(right, { mask: 0xffffffff });
+    expect(marked()).to.have.members(['0: normal 1,0', '1: normal -1,0']);
+    // A piece jointed to a body that it must not collide with hides nothing: that body moves inside it, up to the seam.
+    const disc = world.addRigidBody({ radius: 0.5, x: -2, y: -3 });
+    const hinge = world.addJoint({ type: 'revolute', a: disc, b: left, anchor: { x: -2, y: -3 } });
+    expect(marked()).to.deep.equal([]);
+    world.removeConstraint(hinge);
+    expect(marked()).to.have.members(['0: normal 1,0', '1: normal -1,0']);
+    // Jointed with collideConnected, it collides with that body as with any other: the seam is back.
+    world.addJoint({ type: 'revolute', a: disc, b: left, anchor: { x: -2, y: -3 }, collideConnected: true });
     expect(marked()).to.have.members(['0: normal 1,0', '1: normal -1,0']);
     // The right piece 0.5 taller (same bottom): its side stands above the left piece, a real wall.
     world.removeBody(right);
