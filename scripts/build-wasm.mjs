@@ -23,12 +23,33 @@ export async function compileKernel(file = source) {
   try {
     copyFileSync(file, join(dir, 'solver.ts'));
     const args = [join(dir, 'solver.ts'), '-O3', '--runtime', 'stub', '--importMemory', '--enable', 'simd', '--noAssert',
-      '--use', 'abort=', '--outFile', join(dir, 'solver.wasm'), '--textFile', join(dir, 'solver.wat')];
+      '--use', 'abort=', '--outFile', join(dir, 'solver.wasm')];
     const { error, stderr } = await asc.main(args);
     if (error) throw new Error(`asc failed: ${error.message}\n${stderr.toString()}`);
-    return { bytes: readFileSync(join(dir, 'solver.wasm')), wat: readFileSync(join(dir, 'solver.wat'), 'utf8') };
+    return optimized(readFileSync(join(dir, 'solver.wasm')));
   } finally {
     rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+/**
+ * The module through Binaryen's optimizer once more (wasm-opt -O3, on the features asc used: SIMD, bulk memory,
+ * sign extension, saturating conversions, mutable globals). asc's -O3 leaves work for a second pass: 142 bytes less
+ * gzip (5,021 → 4,879), the same results (the kernel's golden hashes hold) and the same speed (docs/kernel-notes.md).
+ */
+async function optimized(bytes) {
+  const { default: binaryen } = await import('binaryen');
+  const module = binaryen.readBinary(bytes);
+  try {
+    const F = binaryen.Features;
+    module.setFeatures(F.MutableGlobals | F.SignExt | F.NontrappingFPToInt | F.BulkMemory | F.SIMD128);
+    binaryen.setOptimizeLevel(3);
+    binaryen.setShrinkLevel(0);
+    module.optimize();
+    if (!module.validate()) throw new Error('the optimized kernel does not validate');
+    return { bytes: Buffer.from(module.emitBinary()), wat: module.emitText() };
+  } finally {
+    module.dispose();
   }
 }
 

@@ -89,7 +89,6 @@ interface KernelExports {
 }
 
 export class WasmKernel {
-  readonly name = 'wasm';
   #memory = new WebAssembly.Memory({ initial: 1 });
   #exports: KernelExports;
   /** Byte address of each column in the memory (valid while the columns are views into it). */
@@ -177,12 +176,16 @@ export class WasmKernel {
     this.#limitsChanged = true;
   }
 
+  /** Whether some column no longer lives in the memory (a table outgrew it: the layout is made again). */
+  #columnsMoved(p: ParticleStore): boolean {
+    return COLUMNS.some((name) => p[name].buffer !== this.#memory.buffer);
+  }
+
   /** Before a step's substeps: the columns live in the memory, the runs and packets match the constraints. */
   beginStep(ctx: StepContext): void {
     const { particles: p, constraints } = ctx;
     const c = constraints.distances;
-    let layout = this.#structureChanged || c.count !== this.#laidOutRows;
-    for (const name of COLUMNS) if (p[name].buffer !== this.#memory.buffer) layout = true;
+    let layout = this.#structureChanged || c.count !== this.#laidOutRows || this.#columnsMoved(p);
     // A link whose limits no longer fit its run's kind (only a break changes them, and a broken link fits any kind).
     if (!layout && this.#limitsChanged && !this.#copyLimits(c)) layout = true;
     if (layout) this.#layOut(ctx);
@@ -232,9 +235,7 @@ export class WasmKernel {
       return false;
     }
     const manifolds = fit === 2;
-    let layout = this.#structureChanged;
-    for (const name of COLUMNS) if (p[name].buffer !== this.#memory.buffer) layout = true;
-    if (layout) this.#layOut(ctx);
+    if (this.#structureChanged || this.#columnsMoved(p)) this.#layOut(ctx);
     const n = c.count;
     const rows = this.#capacity + 2;
     if (this.#masks.length < 4 * rows) this.#masks = new Uint32Array(4 * rows);
