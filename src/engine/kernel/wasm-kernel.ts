@@ -178,7 +178,9 @@ export class WasmKernel {
 
   /** Whether some column no longer lives in the memory (a table outgrew it: the layout is made again). */
   #columnsMoved(p: ParticleStore): boolean {
-    return COLUMNS.some((name) => p[name].buffer !== this.#memory.buffer);
+    // A loop, not some(): a closure would be allocated every step.
+    for (const name of COLUMNS) if (p[name].buffer !== this.#memory.buffer) return true;
+    return false;
   }
 
   /** Before a step's substeps: the columns live in the memory, the runs and packets match the constraints. */
