@@ -1,5 +1,6 @@
 import { Table } from '../table.js';
 import { spin, turnBySpin, type BodyRows } from './rows.js';
+import { inJointTree, solveJointTrees } from './joint-tree.js';
 
 /** What a joint holds. */
 export const enum JointKind {
@@ -400,6 +401,8 @@ export function applySpringForces(j: Joints, r: BodyRows, ax: Float64Array, ay: 
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
   arg[6] = h;
+  // The revolute joints' points over the trees they form, at once; the sweep does the rest.
+  const trees = solveJointTrees(j, r, h);
   for (let i = 0, n = j.count; i < n; i++) {
     const kind = j.kind[i] as JointKind;
     const a = j.a[i];
@@ -419,6 +422,7 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
       continue;
     }
     if (kind === JointKind.Revolute) {
+      if (trees && j.limit[i] === 0 && j.motor[i] === 0 && inJointTree(i)) continue;
       // Past a limit: the point and the bound at once, as a weld at the bound. One after the other, the angle's turn
       // about the centre of mass left the centre moving, and the point turned that back into spin: a rod pivoted at
       // its end rebounded from its limit at 0.42 of its speed. Then the motor: before the point, the point's turn

@@ -1,0 +1,454 @@
+import { JointKind, type Joints } from './joints.js';
+import { spin, turnBySpin, type BodyRows } from './rows.js';
+
+// Revolute joints' points solved at once, exactly for the linearised problem, over each tree they form (Baraff 1996,
+// "Linear-time dynamics using Lagrange multipliers"): the system of the bodies' moves Δq and the joints' multipliers
+// Δλ,
+//   Δq_b − W_b·Σ_j σ_jb·S_jbᵀ·Δλ_j = 0          (W = diag(1/m, 1/m, 1/I); S: the start levers, as in correctPoint)
+//   Σ_b σ_jb·L_jb·Δq_b + α̃·Δλ_j = −c_j − α̃·λ_j  (L: the current levers; σ = +1 for side A, −1 for B)
+// has the shape of the tree of bodies and joints, and block elimination from the leaves up and back down solves it in
+// linear time with no fill. One Gauss–Seidel sweep leaves a chain's joints a residual close to the whole correction
+// (its rate is about cos²(π/(n+1)) for n links), which the next substep takes out of the motion.
+//
+// Immovable rows (the world, static, kinematic and sleeping bodies) are one node, so a chain pinned at both ends is a
+// loop: each joint that closes a loop is left to the sweep, as are the other kinds.
+
+let stamp = new Int32Array(16);
+let localOf = new Int32Array(16);
+let stampNow = 0;
+
+// Per local body (0: the immovable node).
+let bodyRow = new Int32Array(16);
+let uf = new Int32Array(16);
+let adjStart = new Int32Array(17);
+let adjCount = new Int32Array(16);
+let adj = new Int32Array(32);
+let visited = new Uint8Array(16);
+let queue = new Int32Array(16);
+let parentJoint = new Int32Array(16);
+/** D (9), its inverse P (9), rhs (3), y = P·rhs (3), x (3). */
+let bodyF = new Float64Array(16 * 27);
+let startCos = new Float64Array(16);
+let startSin = new Float64Array(16);
+
+// Per joint of the table: its local bodies (A, B).
+let jA = new Int32Array(16);
+let jB = new Int32Array(16);
+let jTree = new Uint8Array(16);
+let jVisited = new Uint8Array(16);
+
+/** Whether joint i's point was solved by the last solveJointTrees() that returned true. */
+export function inJointTree(i: number): boolean {
+  return jTree[i] === 1;
+}
+
+// The joints of the forest in BFS order (parents before children).
+let order = new Int32Array(16);
+let orderChild = new Int32Array(16);
+let orderParent = new Int32Array(16);
+/** Child's side sign σ_c, Dk⁻¹ (4), rhs (2), Q (6), parent levers l (2), s (2), x (2). */
+let jointF = new Float64Array(16 * 20);
+
+const JF = 20;
+const BF = 27;
+
+function ensure(rows: number, n: number): void {
+  if (stamp.length < rows) {
+    const size = Math.max(rows, stamp.length * 2);
+    stamp = new Int32Array(size);
+    localOf = new Int32Array(size);
+    stampNow = 0;
+  }
+  const nb = 2 * n + 2;
+  if (bodyRow.length < nb) {
+    const size = Math.max(nb, bodyRow.length * 2);
+    bodyRow = new Int32Array(size);
+    uf = new Int32Array(size);
+    adjStart = new Int32Array(size + 1);
+    adjCount = new Int32Array(size);
+    visited = new Uint8Array(size);
+    queue = new Int32Array(size);
+    parentJoint = new Int32Array(size);
+    bodyF = new Float64Array(size * BF);
+    startCos = new Float64Array(size);
+    startSin = new Float64Array(size);
+  }
+  if (jA.length < n) {
+    const size = Math.max(n, jA.length * 2);
+    jA = new Int32Array(size);
+    jB = new Int32Array(size);
+    jTree = new Uint8Array(size);
+    jVisited = new Uint8Array(size);
+    order = new Int32Array(size);
+    orderChild = new Int32Array(size);
+    orderParent = new Int32Array(size);
+    jointF = new Float64Array(size * JF);
+    adj = new Int32Array(size * 2);
+  }
+}
+
+function find(x: number): number {
+  while (uf[x] !== x) {
+    uf[x] = uf[uf[x]];
+    x = uf[x];
+  }
+  return x;
+}
+
+/** Local id of row `row` (0: immovable). */
+function localBody(r: BodyRows, row: number, nb: number[]): number {
+  if (row < 0) return 0;
+  if (r.invMass[row] === 0 && r.invInertia[row] === 0) return 0;
+  if (stamp[row] === stampNow) return localOf[row];
+  stamp[row] = stampNow;
+  const id = nb[0]++;
+  localOf[row] = id;
+  bodyRow[id] = row;
+  uf[id] = id;
+  return id;
+}
+
+const counter = [0];
+
+/**
+ * The levers of joint i's side `side` (0: A, 1: B), local body `local`: current (from rc, rs) and, for a movable body,
+ * at the substep's start.
+ */
+const lev = new Float64Array(4);
+function loadLevers(j: Joints, r: BodyRows, i: number, side: number, local: number): void {
+  const row = side === 0 ? j.a[i] : j.b[i];
+  const rx = side === 0 ? j.rAx[i] : j.rBx[i];
+  const ry = side === 0 ? j.rAy[i] : j.rBy[i];
+  const c = r.rc[row];
+  const s = r.rs[row];
+  lev[0] = c * rx - s * ry;
+  lev[1] = s * rx + c * ry;
+  if (local === 0) return;
+  const ct = startCos[local];
+  const st = startSin[local];
+  lev[2] = ct * rx - st * ry;
+  lev[3] = st * rx + ct * ry;
+}
+
+/**
+ * Solves the points of the revolute joints that form trees, once, before the sweep. False (nothing moved) when no
+ * two joints share a body or a pivot came out singular.
+ */
+export function solveJointTrees(j: Joints, r: BodyRows, h: number): boolean {
+  if (!forestValid(j, r)) buildForest(j, r);
+  const m = forestJoints;
+  const nb = forestBodies;
+  if (m < 2) return false;
+  return solveForest(j, r, h, m, nb);
+}
+
+/**
+ * The forest buildForest() last built: the joint table it was built for (a weak reference: the arrays here are shared
+ * by every world of the page or worker, and a world whose table this is not builds its own), its size, tree joints,
+ * local bodies (with the immovable node).
+ */
+let forestOwner: WeakRef<Joints> | null = null;
+let forestN = -1;
+let forestJoints = 0;
+let forestBodies = 0;
+let cKind = new Uint8Array(16);
+let cRowA = new Int32Array(16);
+let cRowB = new Int32Array(16);
+
+function immovable(r: BodyRows, row: number): boolean {
+  return row < 0 || (r.invMass[row] === 0 && r.invInertia[row] === 0);
+}
+
+/** Whether the joints, their bodies and which of those are immovable are as when the forest was built. */
+function forestValid(j: Joints, r: BodyRows): boolean {
+  const n = j.count;
+  if (n !== forestN || forestOwner?.deref() !== j) return false;
+  for (let i = 0; i < n; i++) {
+    const a = j.a[i];
+    const b = j.b[i];
+    if (j.kind[i] !== cKind[i] || a !== cRowA[i] || b !== cRowB[i]) return false;
+    if ((j.kind[i] as JointKind) !== JointKind.Revolute) continue;
+    if ((jA[i] === 0) !== immovable(r, a) || (jB[i] === 0) !== immovable(r, b)) return false;
+  }
+  return true;
+}
+
+function buildForest(j: Joints, r: BodyRows): void {
+  const n = j.count;
+  ensure(r.count, n);
+  if (cKind.length < n) {
+    cKind = new Uint8Array(jA.length);
+    cRowA = new Int32Array(jA.length);
+    cRowB = new Int32Array(jA.length);
+  }
+  forestOwner = new WeakRef(j);
+  forestN = n;
+  forestJoints = 0;
+  forestBodies = 0;
+  stampNow++;
+  if (stampNow > 0x3fffffff) {
+    stamp.fill(0);
+    stampNow = 1;
+  }
+  counter[0] = 1;
+  uf[0] = 0;
+  // Spanning forest over the revolute joints (world node 0).
+  let treeCount = 0;
+  for (let i = 0; i < n; i++) {
+    jTree[i] = 0;
+    cKind[i] = j.kind[i];
+    cRowA[i] = j.a[i];
+    cRowB[i] = j.b[i];
+    if ((j.kind[i] as JointKind) !== JointKind.Revolute) continue;
+    const a = localBody(r, j.a[i], counter);
+    const b = localBody(r, j.b[i], counter);
+    jA[i] = a;
+    jB[i] = b;
+    if (a === b) continue;
+    const ra = find(a);
+    const rb = find(b);
+    if (ra === rb) continue;
+    uf[ra] = rb;
+    jTree[i] = 1;
+    treeCount++;
+  }
+  const nb = counter[0];
+  if (treeCount < 2) return;
+  // Adjacency (CSR) of the bodies to their tree joints.
+  adjCount.fill(0, 0, nb);
+  for (let i = 0; i < n; i++) {
+    if (jTree[i] === 0) continue;
+    adjCount[jA[i]]++;
+    adjCount[jB[i]]++;
+  }
+  adjStart[0] = 0;
+  for (let k = 0; k < nb; k++) adjStart[k + 1] = adjStart[k] + adjCount[k];
+  adjCount.fill(0, 0, nb);
+  for (let i = 0; i < n; i++) {
+    if (jTree[i] === 0) continue;
+    adj[adjStart[jA[i]] + adjCount[jA[i]]++] = i;
+    adj[adjStart[jB[i]] + adjCount[jB[i]]++] = i;
+    jVisited[i] = 0;
+  }
+  // Breadth first from the immovable node, then from each body not reached.
+  visited.fill(0, 0, nb);
+  let m = 0;
+  for (let root = 0; root < nb; root++) {
+    if (visited[root] === 1) continue;
+    visited[root] = 1;
+    parentJoint[root] = -1;
+    let head = 0;
+    let tail = 0;
+    queue[tail++] = root;
+    while (head < tail) {
+      const p = queue[head++];
+      for (let e = adjStart[p], end = adjStart[p + 1]; e < end; e++) {
+        const i = adj[e];
+        if (jVisited[i] === 1) continue;
+        jVisited[i] = 1;
+        const c = jA[i] === p ? jB[i] : jA[i];
+        visited[c] = 1;
+        parentJoint[c] = m;
+        order[m] = i;
+        orderChild[m] = c;
+        orderParent[m] = p;
+        m++;
+        queue[tail++] = c;
+      }
+    }
+  }
+  forestJoints = m;
+  forestBodies = nb;
+}
+
+/**
+ * The body at bodyF[o]: P = D⁻¹ (its 3×3 block, by cofactors) into its fields 9–17, and y = P·rhs into 21–23; false
+ * when D is singular.
+ */
+function invertBody(o: number): boolean {
+  const d0 = bodyF[o], d1 = bodyF[o + 1], d2 = bodyF[o + 2];
+  const d3 = bodyF[o + 3], d4 = bodyF[o + 4], d5 = bodyF[o + 5];
+  const d6 = bodyF[o + 6], d7 = bodyF[o + 7], d8 = bodyF[o + 8];
+  const c0 = d4 * d8 - d5 * d7;
+  const c1 = d5 * d6 - d3 * d8;
+  const c2 = d3 * d7 - d4 * d6;
+  const det = d0 * c0 + d1 * c1 + d2 * c2;
+  if (!(Math.abs(det) > 1e-12)) return false;
+  const id = 1 / det;
+  const p0 = c0 * id, p1 = (d2 * d7 - d1 * d8) * id, p2 = (d1 * d5 - d2 * d4) * id;
+  const p3 = c1 * id, p4 = (d0 * d8 - d2 * d6) * id, p5 = (d2 * d3 - d0 * d5) * id;
+  const p6 = c2 * id, p7 = (d1 * d6 - d0 * d7) * id, p8 = (d0 * d4 - d1 * d3) * id;
+  bodyF[o + 9] = p0; bodyF[o + 10] = p1; bodyF[o + 11] = p2;
+  bodyF[o + 12] = p3; bodyF[o + 13] = p4; bodyF[o + 14] = p5;
+  bodyF[o + 15] = p6; bodyF[o + 16] = p7; bodyF[o + 17] = p8;
+  const r0 = bodyF[o + 18], r1 = bodyF[o + 19], r2 = bodyF[o + 20];
+  bodyF[o + 21] = p0 * r0 + p1 * r1 + p2 * r2;
+  bodyF[o + 22] = p3 * r0 + p4 * r1 + p5 * r2;
+  bodyF[o + 23] = p6 * r0 + p7 * r1 + p8 * r2;
+  return true;
+}
+
+/** The numbers: up the forest, the roots, down, then the moves. */
+function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): boolean {
+  // Bodies start at D = I, rhs = 0; cos and sin of their angles at the substep's start.
+  for (let k = 1; k < nb; k++) {
+    const o = k * BF;
+    const t = r.pangle[bodyRow[k]];
+    startCos[k] = Math.cos(t);
+    startSin[k] = Math.sin(t);
+    for (let q = 0; q < 9; q++) bodyF[o + q] = 0;
+    bodyF[o] = bodyF[o + 4] = bodyF[o + 8] = 1;
+    bodyF[o + 18] = bodyF[o + 19] = bodyF[o + 20] = 0;
+  }
+  const h2 = h * h;
+  // Up: each joint, children first.
+  for (let k = m - 1; k >= 0; k--) {
+    const i = order[k];
+    const c = orderChild[k];
+    const p = orderParent[k];
+    const cRow = bodyRow[c];
+    const sideC = jA[i] === c ? 0 : 1;
+    const sigC = sideC === 0 ? 1 : -1;
+    const o = c * BF;
+    // P = D_c⁻¹, y = P·rhs_c.
+    if (!invertBody(o)) return false;
+    const p0 = bodyF[o + 9], p1 = bodyF[o + 10], p2 = bodyF[o + 11];
+    const p3 = bodyF[o + 12], p4 = bodyF[o + 13], p5 = bodyF[o + 14];
+    const p6 = bodyF[o + 15], p7 = bodyF[o + 16], p8 = bodyF[o + 17];
+    const y0 = bodyF[o + 21], y1 = bodyF[o + 22], y2 = bodyF[o + 23];
+    // Q = P·W_c·S_cᵀ (3×2).
+    loadLevers(j, r, i, sideC, c);
+    const lx = lev[0], ly = lev[1], sx = lev[2], sy = lev[3];
+    const wm = r.invMass[cRow];
+    const wi = r.invInertia[cRow];
+    const q00 = p0 * wm - p2 * wi * sy, q01 = p1 * wm + p2 * wi * sx;
+    const q10 = p3 * wm - p5 * wi * sy, q11 = p4 * wm + p5 * wi * sx;
+    const q20 = p6 * wm - p8 * wi * sy, q21 = p7 * wm + p8 * wi * sx;
+    const f = k * JF;
+    jointF[f] = sigC;
+    jointF[f + 7] = q00; jointF[f + 8] = q01; jointF[f + 9] = q10;
+    jointF[f + 10] = q11; jointF[f + 11] = q20; jointF[f + 12] = q21;
+    // D_k = α̃ + L_c·Q; rhs_k = −c − α̃λ − σ_c·L_c·y.
+    const alphaT = j.compliance[i] / h2;
+    const k00 = alphaT + q00 - ly * q20;
+    const k01 = q01 - ly * q21;
+    const k10 = q10 + lx * q20;
+    const k11 = alphaT + q11 + lx * q21;
+    // Parent side's levers, and the error: A's anchor minus B's (current poses).
+    let plx = 0, ply = 0, psx = 0, psy = 0;
+    if (p !== 0) {
+      loadLevers(j, r, i, 1 - sideC, p);
+      plx = lev[0]; ply = lev[1]; psx = lev[2]; psy = lev[3];
+    }
+    const rowA = j.a[i];
+    const rowB = j.b[i];
+    let ex: number;
+    let ey: number;
+    if (sideC === 0) {
+      ex = r.x[rowA] + lx;
+      ey = r.y[rowA] + ly;
+      if (rowB < 0) {
+        ex -= j.rBx[i];
+        ey -= j.rBy[i];
+      } else {
+        if (p === 0) {
+          loadLevers(j, r, i, 1, 0);
+          plx = lev[0];
+          ply = lev[1];
+        }
+        ex -= r.x[rowB] + plx;
+        ey -= r.y[rowB] + ply;
+      }
+    } else {
+      if (p === 0) {
+        loadLevers(j, r, i, 0, 0);
+        plx = lev[0];
+        ply = lev[1];
+      }
+      ex = r.x[rowA] + plx - (r.x[rowB] + lx);
+      ey = r.y[rowA] + ply - (r.y[rowB] + ly);
+    }
+    const yl0 = y0 - ly * y2;
+    const yl1 = y1 + lx * y2;
+    const e0 = -ex - alphaT * j.lambda[i] - sigC * yl0;
+    const e1 = -ey - alphaT * j.lambdaY[i] - sigC * yl1;
+    const dk = k00 * k11 - k01 * k10;
+    if (!(Math.abs(dk) > 1e-14 * (Math.abs(k00) + Math.abs(k11)) * (Math.abs(k00) + Math.abs(k11)))) return false;
+    const ik = 1 / dk;
+    const i00 = k11 * ik, i01 = -k01 * ik, i10 = -k10 * ik, i11 = k00 * ik;
+    jointF[f + 1] = i00; jointF[f + 2] = i01; jointF[f + 3] = i10; jointF[f + 4] = i11;
+    jointF[f + 5] = e0; jointF[f + 6] = e1;
+    jointF[f + 13] = plx; jointF[f + 14] = ply;
+    jointF[f + 15] = psx; jointF[f + 16] = psy;
+    if (p === 0) continue;
+    // Into the parent: D_p += W_p·S_pᵀ·Dk⁻¹·L_p, rhs_p += σ_p·W_p·S_pᵀ·Dk⁻¹·rhs_k (σ_p = −σ_c).
+    const pRow = bodyRow[p];
+    const pm = r.invMass[pRow];
+    const pi = r.invInertia[pRow];
+    // R = Dk⁻¹·L_p (2×3).
+    const R00 = i00, R01 = i01, R02 = -ply * i00 + plx * i01;
+    const R10 = i10, R11 = i11, R12 = -ply * i10 + plx * i11;
+    const op = p * BF;
+    bodyF[op] += pm * R00; bodyF[op + 1] += pm * R01; bodyF[op + 2] += pm * R02;
+    bodyF[op + 3] += pm * R10; bodyF[op + 4] += pm * R11; bodyF[op + 5] += pm * R12;
+    bodyF[op + 6] += pi * (-psy * R00 + psx * R10);
+    bodyF[op + 7] += pi * (-psy * R01 + psx * R11);
+    bodyF[op + 8] += pi * (-psy * R02 + psx * R12);
+    const z0 = i00 * e0 + i01 * e1;
+    const z1 = i10 * e0 + i11 * e1;
+    const sigP = -sigC;
+    bodyF[op + 18] += sigP * pm * z0;
+    bodyF[op + 19] += sigP * pm * z1;
+    bodyF[op + 20] += sigP * pi * (-psy * z0 + psx * z1);
+  }
+  // Roots: x = D⁻¹·rhs.
+  for (let c = 1; c < nb; c++) {
+    if (parentJoint[c] !== -1) continue;
+    const o = c * BF;
+    if (!invertBody(o)) return false;
+    bodyF[o + 24] = bodyF[o + 21];
+    bodyF[o + 25] = bodyF[o + 22];
+    bodyF[o + 26] = bodyF[o + 23];
+  }
+  // Down: each joint's Δλ from its parent's move, then its child's move.
+  for (let k = 0; k < m; k++) {
+    const f = k * JF;
+    const p = orderParent[k];
+    let e0 = jointF[f + 5];
+    let e1 = jointF[f + 6];
+    if (p !== 0) {
+      const op = p * BF;
+      const x0 = bodyF[op + 24], x1 = bodyF[op + 25], x2 = bodyF[op + 26];
+      const sigP = -jointF[f];
+      e0 -= sigP * (x0 - jointF[f + 14] * x2);
+      e1 -= sigP * (x1 + jointF[f + 13] * x2);
+    }
+    const l0 = jointF[f + 1] * e0 + jointF[f + 2] * e1;
+    const l1 = jointF[f + 3] * e0 + jointF[f + 4] * e1;
+    jointF[f + 17] = l0;
+    jointF[f + 18] = l1;
+    const oc = orderChild[k] * BF;
+    const sigC = jointF[f];
+    bodyF[oc + 24] = bodyF[oc + 21] + sigC * (jointF[f + 7] * l0 + jointF[f + 8] * l1);
+    bodyF[oc + 25] = bodyF[oc + 22] + sigC * (jointF[f + 9] * l0 + jointF[f + 10] * l1);
+    bodyF[oc + 26] = bodyF[oc + 23] + sigC * (jointF[f + 11] * l0 + jointF[f + 12] * l1);
+  }
+  for (let k = 0; k < m; k++) {
+    const i = order[k];
+    j.lambda[i] += jointF[k * JF + 17];
+    j.lambdaY[i] += jointF[k * JF + 18];
+  }
+  for (let c = 1; c < nb; c++) {
+    if (visited[c] === 0) continue;
+    const o = c * BF;
+    const row = bodyRow[c];
+    r.x[row] += bodyF[o + 24];
+    r.y[row] += bodyF[o + 25];
+    const t = bodyF[o + 26];
+    if (t !== 0) {
+      spin[0] = t;
+      turnBySpin(r, row);
+    }
+  }
+  return true;
+}
