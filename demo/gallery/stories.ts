@@ -197,6 +197,18 @@ const rigidStories: Story[] = [
     ]),
   },
   {
+    id: 'hinged-chain',
+    group: 'Rigid bodies',
+    title: 'A chain of hinged bars',
+    description: 'Four bars hinged end to end, the first to the world, let go level: the chain folds, whips and keeps swinging. Its hinges are solved together (a tree of revolute joints), so the whips do not drain its energy.',
+    root: scene({}, [
+      floor(),
+      ...[0, 1, 2, 3].map((k) => n('physics-box', { id: `bar${k}`, x: 8.7 + 1.4 * k, y: 1.5, width: 1.4, height: 0.2, fill: k % 2 ? '#3d7dd8' : '#f2c14e', stroke: '#4a4f57' })),
+      n('physics-joint', { type: 'revolute', a: 'bar0', x: 8, y: 1.5 }),
+      ...[1, 2, 3].map((k) => n('physics-joint', { type: 'revolute', a: `bar${k}`, b: `bar${k - 1}`, x: 8 + 1.4 * k, y: 1.5 })),
+    ]),
+  },
+  {
     id: 'car',
     group: 'Rigid bodies',
     title: 'Car on motorised wheels',
