@@ -1,0 +1,110 @@
+// Revolute joints solved over the trees they form (rigid/joint-tree.ts), on 60 random trees of 2 to 12 bodies: boxes
+// and discs whose masses span 10⁴, each hinged to the world or to a body within 3 units of its anchor, the anchor at
+// the body's centre of mass, half its size or twice its size off it, a fifth of the joints soft. After every step the
+// state is finite; at the end every rigid hinge holds its anchors together and no energy has appeared. Swept joint by
+// joint, as before the tree solve, 19 of these 60 trees failed (hinges apart, energy gained, or blown up); limits,
+// motors and loops (which the sweep keeps) are in physics.test.ts.
+import { expect } from 'chai';
+import { World, type Handle, type Vec2 } from '../../../src/engine/index.js';
+import { rng } from '../collision/helpers.js';
+
+const box = (hw: number, hh: number): Vec2[] => [
+  { x: -hw, y: -hh },
+  { x: hw, y: -hh },
+  { x: hw, y: hh },
+  { x: -hw, y: hh },
+];
+
+interface Hinge {
+  a: Handle;
+  b: Handle | null;
+  /** Each side's anchor in its body's frame (B's in the world's when b is null). */
+  la: Vec2;
+  lb: Vec2;
+  soft: boolean;
+}
+
+/** A point given in a body's frame (the world's for null), in the world's. */
+function worldPoint(world: World, h: Handle | null, local: Vec2): Vec2 {
+  if (h === null) return local;
+  const p = world.bodyPose(h);
+  const c = Math.cos(p.angle);
+  const s = Math.sin(p.angle);
+  return { x: p.x + c * local.x - s * local.y, y: p.y + s * local.x + c * local.y };
+}
+
+/** A point given in the world, in a body's frame. */
+function localPoint(world: World, h: Handle, point: Vec2): Vec2 {
+  const p = world.bodyPose(h);
+  const c = Math.cos(p.angle);
+  const s = Math.sin(p.angle);
+  const dx = point.x - p.x;
+  const dy = point.y - p.y;
+  return { x: c * dx + s * dy, y: -s * dx + c * dy };
+}
+
+describe('rigid joints: revolute trees solved at once', () => {
+  it('60 random trees (masses 10⁴ apart, anchors off the centres, soft joints) stay finite, joined and without energy from nowhere, in both kernels', () => {
+    let joints = 0;
+    for (let scene = 0; scene < 60; scene++) {
+      const rnd = rng(4242 + scene);
+      const kernel = scene % 2 ? 'wasm' : 'js';
+      const world = new World({ kernel, gravity: { x: 0, y: 10 }, sleeping: false });
+      const bodies: Handle[] = [];
+      const hinges: Hinge[] = [];
+      const count = 2 + Math.floor(rnd() * 11);
+      for (let k = 0; k < count; k++) {
+        const size = 0.1 + rnd() * 2;
+        const x = (rnd() * 2 - 1) * 4;
+        const y = (rnd() * 2 - 1) * 4;
+        const density = 10 ** (rnd() * 4 - 2) / (size * size);
+        const body = world.addRigidBody({
+          ...(rnd() < 0.4 ? { radius: size / 2 } : { points: box(size / 2, size / (2 + rnd() * 6)) }),
+          x, y, angle: rnd() * 6, density, collide: false,
+        });
+        const reach = [0, size / 2, 2 * size][Math.floor(rnd() * 3)];
+        const anchor = { x: x + (rnd() * 2 - 1) * reach, y: y + (rnd() * 2 - 1) * reach };
+        const near = bodies.filter((h) => {
+          const p = world.bodyPose(h);
+          return Math.hypot(p.x - anchor.x, p.y - anchor.y) < 3;
+        });
+        const b = k === 0 || rnd() < 0.15 || near.length === 0 ? null : near[Math.floor(rnd() * near.length)];
+        const soft = rnd() < 0.2;
+        world.addJoint({ type: 'revolute', a: body, b, anchor, ...(soft ? { compliance: 10 ** (-6 + rnd() * 4) } : {}) });
+        hinges.push({ a: body, b, la: localPoint(world, body, anchor), lb: b === null ? anchor : localPoint(world, b, anchor), soft });
+        bodies.push(body);
+      }
+      joints += hinges.length;
+      const energy = (): number =>
+        bodies.reduce((e, h) => {
+          const m = world.bodyMassInfo(h);
+          const v = world.bodyVelocity(h);
+          const w = world.bodyAngularVelocity(h);
+          return e + 0.5 * m.mass * (v.x * v.x + v.y * v.y) + 0.5 * m.inertia * w * w - m.mass * 10 * world.bodyPose(h).y;
+        }, 0);
+      // The scene's energy scale: its mass falling 10 units.
+      const scale = bodies.reduce((s, h) => s + world.bodyMassInfo(h).mass, 0) * 10 * 10;
+      world.step();
+      const start = energy();
+      for (let s = 0; s < 300; s++) {
+        world.step();
+        for (const h of bodies) {
+          const p = world.bodyPose(h);
+          const v = world.bodyVelocity(h);
+          const finite = [p.x, p.y, p.angle, v.x, v.y, world.bodyAngularVelocity(h)].every(Number.isFinite);
+          expect(finite, `scene ${scene} (${kernel}), step ${s}: finite`).to.equal(true);
+        }
+      }
+      // Rigid hinges hold their anchors together (relative to the levers they hang on); soft ones may stretch.
+      for (const hinge of hinges) {
+        if (hinge.soft) continue;
+        const pa = worldPoint(world, hinge.a, hinge.la);
+        const pb = worldPoint(world, hinge.b, hinge.lb);
+        const lever = 1 + Math.hypot(hinge.la.x, hinge.la.y) + Math.hypot(hinge.lb.x, hinge.lb.y);
+        expect(Math.hypot(pa.x - pb.x, pa.y - pb.y) / lever, `scene ${scene} (${kernel}): hinge gap`).to.be.below(0.02);
+      }
+      expect((energy() - start) / scale, `scene ${scene} (${kernel}): energy gained`).to.be.below(0.01);
+    }
+    expect(joints).to.be.above(300);
+  });
+});
