@@ -9,7 +9,7 @@ import { PinConstraints } from './constraints/pin.js';
 import { AreaConstraints } from './constraints/area.js';
 import { Springs } from './constraints/spring.js';
 import { GrabConstraints } from './constraints/grab.js';
-import { Joints } from './rigid/joints.js';
+import { Joints } from './rigid/joint-table.js';
 import { CONSTRAINT_KINDS, type ConstraintKind } from './options.js';
 
 /** A constraint's table, as an index into the registry's `tables` (and into CONSTRAINT_KINDS). */

@@ -4,7 +4,7 @@ import type { ParticleStore } from '../particles.js';
 import type { JointOptions, Vec2 } from '../options.js';
 import { compliance, coordinate, finite, nonNegative, oneOf, speed, stiffness } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
-import { JointKind } from './joints.js';
+import { JointKind } from './joint-table.js';
 
 /** A joint's side: a row of the particle store (−1: the world). */
 export interface JointSide {

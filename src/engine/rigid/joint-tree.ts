@@ -1,4 +1,4 @@
-import { JointKind, type Joints } from './joints.js';
+import { JointKind, type Joints } from './joint-table.js';
 import { spin, turnBySpin, type BodyRows } from './rows.js';
 
 // Revolute joints' points solved at once, exactly for the linearised problem, over each tree they form (Baraff 1996,
