@@ -17,6 +17,16 @@ export function totalEnergy(world: World): number {
   return e;
 }
 
+/** Kinetic (linear and angular) + gravitational potential energy of rigid bodies, gravity g along +y. */
+export function rigidEnergy(world: World, bodies: Handle[], g: number): number {
+  return bodies.reduce((e, h) => {
+    const m = world.bodyMassInfo(h);
+    const v = world.bodyVelocity(h);
+    const w = world.bodyAngularVelocity(h);
+    return e + 0.5 * m.mass * (v.x * v.x + v.y * v.y) + 0.5 * m.inertia * w * w - m.mass * g * world.bodyPose(h).y;
+  }, 0);
+}
+
 export function allFinite(world: World): boolean {
   const p = world.particles;
   for (const col of [p.x, p.y, p.px, p.py, p.vx, p.vy]) {

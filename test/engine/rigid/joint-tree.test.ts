@@ -7,6 +7,7 @@
 import { expect } from 'chai';
 import { World, type Handle, type Vec2 } from '../../../src/engine/index.js';
 import { rng } from '../collision/helpers.js';
+import { rigidEnergy } from '../helpers.js';
 
 const box = (hw: number, hh: number): Vec2[] => [
   { x: -hw, y: -hh },
@@ -75,13 +76,7 @@ describe('rigid joints: revolute trees solved at once', () => {
         bodies.push(body);
       }
       joints += hinges.length;
-      const energy = (): number =>
-        bodies.reduce((e, h) => {
-          const m = world.bodyMassInfo(h);
-          const v = world.bodyVelocity(h);
-          const w = world.bodyAngularVelocity(h);
-          return e + 0.5 * m.mass * (v.x * v.x + v.y * v.y) + 0.5 * m.inertia * w * w - m.mass * 10 * world.bodyPose(h).y;
-        }, 0);
+      const energy = (): number => rigidEnergy(world, bodies, 10);
       // The scene's energy scale: its mass falling 10 units.
       const scale = bodies.reduce((s, h) => s + world.bodyMassInfo(h).mass, 0) * 10 * 10;
       world.step();
