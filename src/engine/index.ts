@@ -5,7 +5,7 @@ export type {
   BodyKind, ConstraintKind, Vec2, Handle, Integrator, Bounds, ColliderOptions, Limits, GrabOptions, RayCastHit,
 } from './world.js';
 export { INTEGRATORS } from './integrate.js';
-export { KERNELS, setDefaultKernel, defaultKernel, type KernelChoice, type KernelOptions, type KernelDiagnostics } from './kernel/choice.js';
+export { KERNELS, setDefaultKernel, defaultKernel, type KernelChoice, type KernelOptions, type KernelDiagnostics, type WorldDiagnostics } from './kernel/choice.js';
 export { createRope, type RopeOptions } from './builders/rope.js';
 export { createCloth, type ClothOptions, type ClothPins } from './builders/cloth.js';
 export { createBox, createPolygon, type BoxOptions, type PolygonOptions, type RigidOptions } from './builders/rigid.js';

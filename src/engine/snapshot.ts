@@ -53,6 +53,7 @@ export const FIELDS = {
       particleRows: 'rebuilt by restore()',
       measureTimings: "the caller's diagnostics switch, not simulation state",
       timings: "the last step's diagnostics",
+      rowsRepaired: 'diagnostics: a count kept since the world was made (World.diagnostics())',
       acceptPair: CALLBACK,
       recordBreak: CALLBACK,
       bodyHandleOf: CALLBACK,

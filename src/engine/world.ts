@@ -27,7 +27,7 @@ import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKi
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
 import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, stepLength, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
-import type { KernelDiagnostics, KernelOptions } from './kernel/choice.js';
+import type { KernelOptions, WorldDiagnostics } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
 import { initRigidRow } from './rigid/bodies.js';
 import { jointRow } from './rigid/joint-setup.js';
@@ -100,7 +100,7 @@ export class World {
   set measureTimings(v: boolean) { this.ctx.measureTimings = v; }
   get timings(): { detect: number; solve: number } { return this.ctx.timings; }
   /** Which solver kernel runs (WorldOptions kernel: 'js' | 'wasm' | 'auto'), and why not WebAssembly if it does not. */
-  diagnostics(): KernelDiagnostics { return { ...this.ctx.kernelDiagnostics }; }
+  diagnostics(): WorldDiagnostics { return { ...this.ctx.kernelDiagnostics, rowsRepaired: this.ctx.rowsRepaired }; }
 
   /** Simulated seconds. */
   get time(): number { return this.ctx.time; }

@@ -25,16 +25,16 @@ describe('setDefaultKernel: the kernel of a World that names none', () => {
   it('sets the kernel of every later World without the option, returns the one before, and an explicit kernel wins', () => {
     expect(setDefaultKernel('js')).to.equal(found);
     const before = new World();
-    expect(before.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '' });
+    expect(before.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '', rowsRepaired: 0 });
     expect(setDefaultKernel('wasm')).to.equal('js');
     expect(defaultKernel()).to.equal('wasm');
-    expect(new World().diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'wasm', reason: '' });
+    expect(new World().diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'wasm', reason: '', rowsRepaired: 0 });
     expect(buildScene({ bodies: [{ type: 'box', x: 0, y: 0, width: 1, height: 1 }] }).world.diagnostics().kernel).to.equal('wasm');
-    expect(new World({ kernel: 'js' }).diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '' });
+    expect(new World({ kernel: 'js' }).diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '', rowsRepaired: 0 });
     // A World already made keeps its kernel.
     expect(before.diagnostics().kernel).to.equal('js');
     expect(setDefaultKernel('auto')).to.equal('wasm');
-    expect(new World().diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'auto', reason: '' });
+    expect(new World().diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'auto', reason: '', rowsRepaired: 0 });
   });
 
   it('a World made under the default steps exactly like one that names the same kernel', () => {
@@ -61,7 +61,7 @@ describe('setDefaultKernel: the kernel of a World that names none', () => {
   it("where WebAssembly is refused, a 'wasm' default runs JS with the reason and warns once", () => {
     withWasmRefused((warnings) => {
       setDefaultKernel('wasm');
-      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL });
+      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL, rowsRepaired: 0 });
       expect(new World().diagnostics().kernel).to.equal('js');
       expect(warnings).to.have.length(1);
     });

@@ -48,6 +48,16 @@ export interface KernelDiagnostics {
   reason: string;
 }
 
+/** World.diagnostics(): the kernel, and how often the step's guard had to put a row right. */
+export interface WorldDiagnostics extends KernelDiagnostics {
+  /**
+   * Rows (particles, rigid bodies) the step's last phase put back since the world was made: a position that was not
+   * finite back to the step's start, at rest, or a speed beyond 10¹² cut to it. 0 unless the solver met a tangle it
+   * could not resolve (pipeline/guard.ts).
+   */
+  rowsRepaired: number;
+}
+
 let compiled: WebAssembly.Module | string | undefined;
 
 /** The kernel's module, compiled once per realm, or why it cannot be. */

@@ -31,6 +31,8 @@ export class StepContext {
   /** Real time not yet stepped (advance()), and its fraction of a step (for interpolated rendering). */
   accumulator = 0;
   alpha = 0;
+  /** Rows the step's guard put back since the world was made (pipeline/guard.ts; World.diagnostics()). */
+  rowsRepaired = 0;
 
   readonly particles = new ParticleStore();
   readonly particleIds = new HandleRegistry('particle', 'particles');

@@ -4,7 +4,7 @@
 //   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → aim grabs → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
 //     velocities (linear, angular) → contact velocities (particle, rigid)
-//   → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
+//   → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
@@ -27,6 +27,7 @@ import { integrate, shiftVerletVelocities, updateVelocities, verletHalfSubstep }
 import { keepInBounds } from '../bounds.js';
 import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
+import { keepRowsFinite } from './guard.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount } from '../settings.js';
@@ -72,6 +73,7 @@ export function step(ctx: StepContext, dt: number): void {
   ctx.anchors.store(ctx.contacts);
   // The rotations follow the last substep's corrections before anything outside the solver reads them.
   if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount);
+  keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
   if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);

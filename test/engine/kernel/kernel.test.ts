@@ -45,12 +45,12 @@ describe('solver kernel: choice and diagnostics', () => {
   it("runs the JS solver by default and the WebAssembly kernel when asked ('wasm' or 'auto') in Node", () => {
     const previous = setDefaultKernel('js'); // the engine's own default (the suite's second run sets 'wasm')
     try {
-      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '' });
+      expect(new World().diagnostics()).to.deep.equal({ kernel: 'js', requested: 'js', reason: '', rowsRepaired: 0 });
     } finally {
       setDefaultKernel(previous);
     }
-    expect(new World({ kernel: 'wasm' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'wasm', reason: '' });
-    expect(new World({ kernel: 'auto' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'auto', reason: '' });
+    expect(new World({ kernel: 'wasm' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'wasm', reason: '', rowsRepaired: 0 });
+    expect(new World({ kernel: 'auto' }).diagnostics()).to.deep.equal({ kernel: 'wasm', requested: 'auto', reason: '', rowsRepaired: 0 });
   });
 
   it('refuses a kernel that is none, naming the option and the value', () => {
@@ -63,10 +63,10 @@ describe('solver kernel: choice and diagnostics', () => {
   it('falls back to JS where WebAssembly is refused: silently for auto, with one warning for wasm (once); it still steps', () => {
     withWasmRefused((warnings) => {
       const auto = clothAndRope('auto' as Kernel);
-      expect(auto.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'auto', reason: CSP_REFUSAL });
+      expect(auto.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'auto', reason: CSP_REFUSAL, rowsRepaired: 0 });
       expect(warnings).to.have.length(0);
       const wasm = clothAndRope('wasm');
-      expect(wasm.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL });
+      expect(wasm.diagnostics()).to.deep.equal({ kernel: 'js', requested: 'wasm', reason: CSP_REFUSAL, rowsRepaired: 0 });
       expect(warnings).to.have.length(1);
       expect(warnings[0]).to.contain('wasm-unsafe-eval');
       // Once per page or worker: another world asking for 'wasm' (a scene's reset rebuilds it) says nothing more.
