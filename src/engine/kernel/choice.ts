@@ -51,9 +51,9 @@ export interface KernelDiagnostics {
 /** World.diagnostics(): the kernel, and how often the step's guard had to put a row right. */
 export interface WorldDiagnostics extends KernelDiagnostics {
   /**
-   * Rows (particles, rigid bodies) the step's last phase put back since the world was made: a position that was not
-   * finite back to the step's start, at rest, or a speed beyond 10¹² cut to it. 0 unless the solver met a tangle it
-   * could not resolve (pipeline/guard.ts).
+   * Rows (particles, rigid bodies) the step's last phase put back where they started the step, at rest, since the
+   * world was made: rows left not finite or faster than 10¹². 0 unless the solver met a tangle it could not resolve
+   * (pipeline/guard.ts).
    */
   rowsRepaired: number;
 }
