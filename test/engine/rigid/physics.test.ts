@@ -633,6 +633,27 @@ describe('rigid bodies: joints', () => {
     expect(w, 'the motor').to.be.closeTo(2, 0.05);
   });
 
+  it('a heavy block welded to the world through a feather-light bar on long levers stays up, in both kernels', () => {
+    // Welded to the world, the three bodies are one rigid piece and should not move. The bar weighs 6·10⁻⁴ of a unit
+    // and the welds act 3 to 8 units from it: a correction of the sweep, linearised, turned it by radians at once and
+    // overshot more each substep, and the block flew off at 420 units/s. With each correction's turn kept within
+    // MAX_TURN (withinTurn in joints.ts) it no longer runs away.
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: 10 }, sleeping: false });
+      const disc = world.addRigidBody({ radius: 0.87, x: 3.57, y: 1.79, mass: 3, collide: false });
+      const bar = world.addRigidBody({ points: box(0.82, 0.26), x: -1.9, y: 3.44, angle: 0.4, mass: 6e-4, collide: false });
+      const block = world.addRigidBody({ points: box(1, 0.95), x: 0.35, y: -2.13, mass: 15.7, collide: false });
+      world.addJoint({ type: 'weld', a: disc, anchor: { x: 4.88, y: 3.09 } });
+      world.addJoint({ type: 'weld', a: bar, b: disc, anchor: { x: -3.23, y: 5.9 } });
+      world.addJoint({ type: 'weld', a: block, b: bar, anchor: { x: 0.17, y: 0.5 } });
+      let fastest = 0;
+      steps(world, 300, () => {
+        for (const h of [disc, bar, block]) fastest = Math.max(fastest, Math.hypot(world.bodyVelocity(h).x, world.bodyVelocity(h).y));
+      });
+      expect(fastest, kernel).to.be.below(50);
+    }
+  });
+
   it('weld, prismatic (with limits), distance and spring joints hold what they promise', () => {
     const world = new World({ sleeping: false });
     // Weld: a plank welded to a static post keeps its angle and anchor under gravity.
