@@ -1,14 +1,16 @@
 import { JointKind, type Joints } from './joint-table.js';
 import { spin, turnBySpin, type BodyRows } from './rows.js';
 
-// Revolute joints' points solved at once, exactly for the linearised problem, over each tree they form (Baraff 1996,
-// "Linear-time dynamics using Lagrange multipliers"): the system of the bodies' moves Δq and the joints' multipliers
-// Δλ,
+// Revolute joints' points and welds solved at once, exactly for the linearised problem, over each tree they form
+// (Baraff 1996, "Linear-time dynamics using Lagrange multipliers"): the system of the bodies' moves Δq and the joints'
+// multipliers Δλ,
 //   Δq_b − W_b·Σ_j σ_jb·S_jbᵀ·Δλ_j = 0          (W = diag(1/m, 1/m, 1/I); S: the start levers, as in correctPoint)
 //   Σ_b σ_jb·L_jb·Δq_b + α̃·Δλ_j = −c_j − α̃·λ_j  (L: the current levers; σ = +1 for side A, −1 for B)
 // has the shape of the tree of bodies and joints, and block elimination from the leaves up and back down solves it in
-// linear time with no fill. One Gauss–Seidel sweep leaves a chain's joints a residual close to the whole correction
-// (its rate is about cos²(π/(n+1)) for n links), which the next substep takes out of the motion.
+// linear time with no fill. A joint has three rows, the point's two and the relative angle's (a weld's; a revolute
+// joint's is empty). One Gauss–Seidel sweep leaves a chain's joints a residual close to the whole correction (its
+// rate is about cos²(π/(n+1)) for n links), which the next substep takes out of the motion; among masses and levers
+// far apart (a light part welded on long levers between heavy ones) the sweep's corrections overshoot.
 //
 // Immovable rows (the world, static, kinematic and sleeping bodies) are one node, so a chain pinned at both ends is a
 // loop: each joint that closes a loop is left to the sweep, as are the other kinds.
@@ -46,10 +48,10 @@ export function inJointTree(i: number): boolean {
 let order = new Int32Array(16);
 let orderChild = new Int32Array(16);
 let orderParent = new Int32Array(16);
-/** Child's side sign σ_c, Dk⁻¹ (4), rhs (2), Q (6), parent levers l (2), s (2), x (2). */
-let jointF = new Float64Array(16 * 20);
+/** Child's side sign σ_c, Dk⁻¹ (9), rhs (3), Q (9), parent levers l (2), s (2), Δλ (3), the angle row's weight w. */
+let jointF = new Float64Array(16 * 30);
 
-const JF = 20;
+const JF = 30;
 const BF = 27;
 
 function ensure(rows: number, n: number): void {
@@ -155,6 +157,11 @@ let cKind = new Uint8Array(16);
 let cRowA = new Int32Array(16);
 let cRowB = new Int32Array(16);
 
+/** The kinds a tree may hold: revolute joints (their points) and welds (points and angles). */
+function treeKind(kind: number): boolean {
+  return (kind as JointKind) === JointKind.Revolute || (kind as JointKind) === JointKind.Weld;
+}
+
 function immovable(r: BodyRows, row: number): boolean {
   return row < 0 || (r.invMass[row] === 0 && r.invInertia[row] === 0);
 }
@@ -167,7 +174,7 @@ function forestValid(j: Joints, r: BodyRows): boolean {
     const a = j.a[i];
     const b = j.b[i];
     if (j.kind[i] !== cKind[i] || a !== cRowA[i] || b !== cRowB[i]) return false;
-    if ((j.kind[i] as JointKind) !== JointKind.Revolute) continue;
+    if (!treeKind(j.kind[i])) continue;
     if ((jA[i] === 0) !== immovable(r, a) || (jB[i] === 0) !== immovable(r, b)) return false;
   }
   return true;
@@ -199,7 +206,7 @@ function buildForest(j: Joints, r: BodyRows): void {
     cKind[i] = j.kind[i];
     cRowA[i] = j.a[i];
     cRowB[i] = j.b[i];
-    if ((j.kind[i] as JointKind) !== JointKind.Revolute) continue;
+    if (!treeKind(j.kind[i])) continue;
     const a = localBody(r, j.a[i], counter);
     const b = localBody(r, j.b[i], counter);
     jA[i] = a;
@@ -288,6 +295,51 @@ function invertBody(o: number): boolean {
   return true;
 }
 
+/**
+ * Dk⁻¹ of the joint at jointF[f] (fields 1–9) from its 3×3 D (dk), by cofactors, and z = Dk⁻¹·e (e in its
+ * fields 10–12) into `z`; false when D is singular. A revolute joint's D (w = 0) is block-diagonal, its angle row the
+ * identity: only its point's 2×2 block is inverted.
+ */
+const z = new Float64Array(3);
+/** D of the joint being solved, row by row (a typed array: V8 boxes doubles passed to a call it does not inline). */
+const dk = new Float64Array(9);
+function invertJoint(f: number, w: number): boolean {
+  const d0 = dk[0], d1 = dk[1], d2 = dk[2], d3 = dk[3], d4 = dk[4], d5 = dk[5], d6 = dk[6], d7 = dk[7], d8 = dk[8];
+  const point = Math.abs(d0) + Math.abs(d4);
+  if (w === 0) {
+    // The point's 2×2 block alone (the angle row is the identity, its error 0).
+    const det = d0 * d4 - d1 * d3;
+    if (!(Math.abs(det) > 1e-14 * point * point)) return false;
+    const id = 1 / det;
+    const p0 = d4 * id, p1 = -d1 * id, p3 = -d3 * id, p4 = d0 * id;
+    jointF[f + 1] = p0; jointF[f + 2] = p1; jointF[f + 3] = 0;
+    jointF[f + 4] = p3; jointF[f + 5] = p4; jointF[f + 6] = 0;
+    jointF[f + 7] = 0; jointF[f + 8] = 0; jointF[f + 9] = 1;
+    const e0 = jointF[f + 10], e1 = jointF[f + 11];
+    z[0] = p0 * e0 + p1 * e1;
+    z[1] = p3 * e0 + p4 * e1;
+    z[2] = 0;
+    return true;
+  }
+  const c0 = d4 * d8 - d5 * d7;
+  const c1 = d5 * d6 - d3 * d8;
+  const c2 = d3 * d7 - d4 * d6;
+  const det = d0 * c0 + d1 * c1 + d2 * c2;
+  if (!(Math.abs(det) > 1e-14 * point * point * Math.abs(d8))) return false;
+  const id = 1 / det;
+  const p0 = c0 * id, p1 = (d2 * d7 - d1 * d8) * id, p2 = (d1 * d5 - d2 * d4) * id;
+  const p3 = c1 * id, p4 = (d0 * d8 - d2 * d6) * id, p5 = (d2 * d3 - d0 * d5) * id;
+  const p6 = c2 * id, p7 = (d1 * d6 - d0 * d7) * id, p8 = (d0 * d4 - d1 * d3) * id;
+  jointF[f + 1] = p0; jointF[f + 2] = p1; jointF[f + 3] = p2;
+  jointF[f + 4] = p3; jointF[f + 5] = p4; jointF[f + 6] = p5;
+  jointF[f + 7] = p6; jointF[f + 8] = p7; jointF[f + 9] = p8;
+  const e0 = jointF[f + 10], e1 = jointF[f + 11], e2 = jointF[f + 12];
+  z[0] = p0 * e0 + p1 * e1 + p2 * e2;
+  z[1] = p3 * e0 + p4 * e1 + p5 * e2;
+  z[2] = p6 * e0 + p7 * e1 + p8 * e2;
+  return true;
+}
+
 /** The numbers: up the forest, the roots, down, then the moves. */
 function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): boolean {
   // Bodies start at D = I, rhs = 0; cos and sin of their angles at the substep's start.
@@ -301,7 +353,8 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
     bodyF[o + 18] = bodyF[o + 19] = bodyF[o + 20] = 0;
   }
   const h2 = h * h;
-  // Up: each joint, children first.
+  // Up: each joint, children first. A joint's rows: the point (x, y) and, for a weld (w = 1), the relative angle; a
+  // revolute joint's angle row is empty (w = 0: no Jacobian, D's diagonal 1, no error), so its multiplier stays 0.
   for (let k = m - 1; k >= 0; k--) {
     const i = order[k];
     const c = orderChild[k];
@@ -309,6 +362,7 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
     const cRow = bodyRow[c];
     const sideC = jA[i] === c ? 0 : 1;
     const sigC = sideC === 0 ? 1 : -1;
+    const w = (j.kind[i] as JointKind) === JointKind.Weld ? 1 : 0;
     const o = c * BF;
     // P = D_c⁻¹, y = P·rhs_c.
     if (!invertBody(o)) return false;
@@ -316,7 +370,7 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
     const p3 = bodyF[o + 12], p4 = bodyF[o + 13], p5 = bodyF[o + 14];
     const p6 = bodyF[o + 15], p7 = bodyF[o + 16], p8 = bodyF[o + 17];
     const y0 = bodyF[o + 21], y1 = bodyF[o + 22], y2 = bodyF[o + 23];
-    // Q = P·W_c·S_cᵀ (3×2).
+    // Q = P·W_c·S_cᵀ (3×3).
     loadLevers(j, r, i, sideC, c);
     const lx = lev[0], ly = lev[1], sx = lev[2], sy = lev[3];
     const wm = r.invMass[cRow];
@@ -324,16 +378,25 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
     const q00 = p0 * wm - p2 * wi * sy, q01 = p1 * wm + p2 * wi * sx;
     const q10 = p3 * wm - p5 * wi * sy, q11 = p4 * wm + p5 * wi * sx;
     const q20 = p6 * wm - p8 * wi * sy, q21 = p7 * wm + p8 * wi * sx;
+    // The angle row's column (a weld's only).
+    const q02 = w === 1 ? p2 * wi : 0, q12 = w === 1 ? p5 * wi : 0, q22 = w === 1 ? p8 * wi : 0;
     const f = k * JF;
     jointF[f] = sigC;
-    jointF[f + 7] = q00; jointF[f + 8] = q01; jointF[f + 9] = q10;
-    jointF[f + 10] = q11; jointF[f + 11] = q20; jointF[f + 12] = q21;
-    // D_k = α̃ + L_c·Q; rhs_k = −c − α̃λ − σ_c·L_c·y.
+    jointF[f + 13] = q00; jointF[f + 14] = q01; jointF[f + 15] = q02;
+    jointF[f + 16] = q10; jointF[f + 17] = q11; jointF[f + 18] = q12;
+    jointF[f + 19] = q20; jointF[f + 20] = q21; jointF[f + 21] = q22;
+    jointF[f + 29] = w;
+    // D_k = α̃ (on the point's rows) + L_c·Q; rhs_k = −c − α̃λ − σ_c·L_c·y.
     const alphaT = j.compliance[i] / h2;
-    const k00 = alphaT + q00 - ly * q20;
-    const k01 = q01 - ly * q21;
-    const k10 = q10 + lx * q20;
-    const k11 = alphaT + q11 + lx * q21;
+    dk[0] = alphaT + q00 - ly * q20;
+    dk[1] = q01 - ly * q21;
+    dk[2] = q02 - ly * q22;
+    dk[3] = q10 + lx * q20;
+    dk[4] = alphaT + q11 + lx * q21;
+    dk[5] = q12 + lx * q22;
+    dk[6] = w * q20;
+    dk[7] = w * q21;
+    dk[8] = w === 1 ? q22 : 1;
     // Parent side's levers, and the error: A's anchor minus B's (current poses).
     let plx = 0, ply = 0, psx = 0, psy = 0;
     if (p !== 0) {
@@ -368,38 +431,42 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
       ex = r.x[rowA] + plx - (r.x[rowB] + lx);
       ey = r.y[rowA] + ply - (r.y[rowB] + ly);
     }
-    const yl0 = y0 - ly * y2;
-    const yl1 = y1 + lx * y2;
-    const e0 = -ex - alphaT * j.lambda[i] - sigC * yl0;
-    const e1 = -ey - alphaT * j.lambdaY[i] - sigC * yl1;
-    const dk = k00 * k11 - k01 * k10;
-    if (!(Math.abs(dk) > 1e-14 * (Math.abs(k00) + Math.abs(k11)) * (Math.abs(k00) + Math.abs(k11)))) return false;
-    const ik = 1 / dk;
-    const i00 = k11 * ik, i01 = -k01 * ik, i10 = -k10 * ik, i11 = k00 * ik;
-    jointF[f + 1] = i00; jointF[f + 2] = i01; jointF[f + 3] = i10; jointF[f + 4] = i11;
-    jointF[f + 5] = e0; jointF[f + 6] = e1;
-    jointF[f + 13] = plx; jointF[f + 14] = ply;
-    jointF[f + 15] = psx; jointF[f + 16] = psy;
+    jointF[f + 10] = -ex - alphaT * j.lambda[i] - sigC * (y0 - ly * y2);
+    jointF[f + 11] = -ey - alphaT * j.lambdaY[i] - sigC * (y1 + lx * y2);
+    jointF[f + 12] = w === 1 ? -(r.angle[rowA] - (rowB < 0 ? 0 : r.angle[rowB]) - j.refAngle[i]) - sigC * y2 : 0;
+    if (!invertJoint(f, w)) return false;
+    jointF[f + 22] = plx; jointF[f + 23] = ply;
+    jointF[f + 24] = psx; jointF[f + 25] = psy;
     if (p === 0) continue;
     // Into the parent: D_p += W_p·S_pᵀ·Dk⁻¹·L_p, rhs_p += σ_p·W_p·S_pᵀ·Dk⁻¹·rhs_k (σ_p = −σ_c).
     const pRow = bodyRow[p];
     const pm = r.invMass[pRow];
     const pi = r.invInertia[pRow];
-    // R = Dk⁻¹·L_p (2×3).
-    const R00 = i00, R01 = i01, R02 = -ply * i00 + plx * i01;
-    const R10 = i10, R11 = i11, R12 = -ply * i10 + plx * i11;
+    const i00 = jointF[f + 1], i01 = jointF[f + 2], i02 = jointF[f + 3];
+    const i10 = jointF[f + 4], i11 = jointF[f + 5], i12 = jointF[f + 6];
+    const i20 = jointF[f + 7], i21 = jointF[f + 8], i22 = jointF[f + 9];
+    // R = Dk⁻¹·L_p (3×3; its first two columns are Dk⁻¹'s), and D_p += W_p·S_pᵀ·R: the angle row's terms for a weld.
+    let R02 = -ply * i00 + plx * i01;
+    let R12 = -ply * i10 + plx * i11;
     const op = p * BF;
-    bodyF[op] += pm * R00; bodyF[op + 1] += pm * R01; bodyF[op + 2] += pm * R02;
-    bodyF[op + 3] += pm * R10; bodyF[op + 4] += pm * R11; bodyF[op + 5] += pm * R12;
-    bodyF[op + 6] += pi * (-psy * R00 + psx * R10);
-    bodyF[op + 7] += pi * (-psy * R01 + psx * R11);
-    bodyF[op + 8] += pi * (-psy * R02 + psx * R12);
-    const z0 = i00 * e0 + i01 * e1;
-    const z1 = i10 * e0 + i11 * e1;
     const sigP = -sigC;
-    bodyF[op + 18] += sigP * pm * z0;
-    bodyF[op + 19] += sigP * pm * z1;
-    bodyF[op + 20] += sigP * pi * (-psy * z0 + psx * z1);
+    if (w === 1) {
+      R02 += i02;
+      R12 += i12;
+      const R22 = -ply * i20 + plx * i21 + i22;
+      bodyF[op + 6] += pi * i20;
+      bodyF[op + 7] += pi * i21;
+      bodyF[op + 8] += pi * R22;
+      bodyF[op + 20] += sigP * pi * z[2];
+    }
+    bodyF[op] += pm * i00; bodyF[op + 1] += pm * i01; bodyF[op + 2] += pm * R02;
+    bodyF[op + 3] += pm * i10; bodyF[op + 4] += pm * i11; bodyF[op + 5] += pm * R12;
+    bodyF[op + 6] += pi * (-psy * i00 + psx * i10);
+    bodyF[op + 7] += pi * (-psy * i01 + psx * i11);
+    bodyF[op + 8] += pi * (-psy * R02 + psx * R12);
+    bodyF[op + 18] += sigP * pm * z[0];
+    bodyF[op + 19] += sigP * pm * z[1];
+    bodyF[op + 20] += sigP * pi * (-psy * z[0] + psx * z[1]);
   }
   // Roots: x = D⁻¹·rhs.
   for (let c = 1; c < nb; c++) {
@@ -414,29 +481,34 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
   for (let k = 0; k < m; k++) {
     const f = k * JF;
     const p = orderParent[k];
-    let e0 = jointF[f + 5];
-    let e1 = jointF[f + 6];
+    const w = jointF[f + 29];
+    let e0 = jointF[f + 10];
+    let e1 = jointF[f + 11];
+    let e2 = jointF[f + 12];
     if (p !== 0) {
       const op = p * BF;
       const x0 = bodyF[op + 24], x1 = bodyF[op + 25], x2 = bodyF[op + 26];
       const sigP = -jointF[f];
-      e0 -= sigP * (x0 - jointF[f + 14] * x2);
-      e1 -= sigP * (x1 + jointF[f + 13] * x2);
+      e0 -= sigP * (x0 - jointF[f + 23] * x2);
+      e1 -= sigP * (x1 + jointF[f + 22] * x2);
+      e2 -= sigP * w * x2;
     }
-    const l0 = jointF[f + 1] * e0 + jointF[f + 2] * e1;
-    const l1 = jointF[f + 3] * e0 + jointF[f + 4] * e1;
-    jointF[f + 17] = l0;
-    jointF[f + 18] = l1;
+    const l0 = jointF[f + 1] * e0 + jointF[f + 2] * e1 + jointF[f + 3] * e2;
+    const l1 = jointF[f + 4] * e0 + jointF[f + 5] * e1 + jointF[f + 6] * e2;
+    const l2 = jointF[f + 7] * e0 + jointF[f + 8] * e1 + jointF[f + 9] * e2;
+    jointF[f + 26] = l0;
+    jointF[f + 27] = l1;
+    jointF[f + 28] = l2;
     const oc = orderChild[k] * BF;
     const sigC = jointF[f];
-    bodyF[oc + 24] = bodyF[oc + 21] + sigC * (jointF[f + 7] * l0 + jointF[f + 8] * l1);
-    bodyF[oc + 25] = bodyF[oc + 22] + sigC * (jointF[f + 9] * l0 + jointF[f + 10] * l1);
-    bodyF[oc + 26] = bodyF[oc + 23] + sigC * (jointF[f + 11] * l0 + jointF[f + 12] * l1);
+    bodyF[oc + 24] = bodyF[oc + 21] + sigC * (jointF[f + 13] * l0 + jointF[f + 14] * l1 + jointF[f + 15] * l2);
+    bodyF[oc + 25] = bodyF[oc + 22] + sigC * (jointF[f + 16] * l0 + jointF[f + 17] * l1 + jointF[f + 18] * l2);
+    bodyF[oc + 26] = bodyF[oc + 23] + sigC * (jointF[f + 19] * l0 + jointF[f + 20] * l1 + jointF[f + 21] * l2);
   }
   for (let k = 0; k < m; k++) {
     const i = order[k];
-    j.lambda[i] += jointF[k * JF + 17];
-    j.lambdaY[i] += jointF[k * JF + 18];
+    j.lambda[i] += jointF[k * JF + 26];
+    j.lambdaY[i] += jointF[k * JF + 27];
   }
   for (let c = 1; c < nb; c++) {
     if (visited[c] === 0) continue;

@@ -381,6 +381,7 @@ export function solveJoints(j: Joints, r: BodyRows, h: number): void {
       continue;
     }
     if (kind === JointKind.Weld) {
+      if (trees && inJointTree(i)) continue;
       loadAnchors(j, r, i);
       weldAngle[0] = 0;
       correctWeld(j, r, i, a, b);

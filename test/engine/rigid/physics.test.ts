@@ -633,11 +633,11 @@ describe('rigid bodies: joints', () => {
     expect(w, 'the motor').to.be.closeTo(2, 0.05);
   });
 
-  it('a heavy block welded to the world through a feather-light bar on long levers stays up, in both kernels', () => {
+  it('a heavy block welded to the world through a feather-light bar on long levers stays where it is, in both kernels', () => {
     // Welded to the world, the three bodies are one rigid piece and should not move. The bar weighs 6·10⁻⁴ of a unit
-    // and the welds act 3 to 8 units from it: a correction of the sweep, linearised, turned it by radians at once and
-    // overshot more each substep, and the block flew off at 420 units/s. With each correction's turn kept within
-    // MAX_TURN (withinTurn in joints.ts) it no longer runs away.
+    // and the welds act 3 to 8 units from it. Swept weld by weld, a correction turned the bar by radians at once and
+    // overshot more each substep: the block flew off at 420 units/s; with each correction's turn kept within MAX_TURN
+    // (withinTurn in joints.ts) it still fell 52 units in 5 s. Solved as a tree (joint-tree.ts) nothing moves.
     for (const kernel of ['js', 'wasm'] as const) {
       const world = new World({ kernel, gravity: { x: 0, y: 10 }, sleeping: false });
       const disc = world.addRigidBody({ radius: 0.87, x: 3.57, y: 1.79, mass: 3, collide: false });
@@ -646,11 +646,15 @@ describe('rigid bodies: joints', () => {
       world.addJoint({ type: 'weld', a: disc, anchor: { x: 4.88, y: 3.09 } });
       world.addJoint({ type: 'weld', a: bar, b: disc, anchor: { x: -3.23, y: 5.9 } });
       world.addJoint({ type: 'weld', a: block, b: bar, anchor: { x: 0.17, y: 0.5 } });
-      let fastest = 0;
+      const start = [disc, bar, block].map((h) => world.bodyPose(h));
+      let moved = 0;
       steps(world, 300, () => {
-        for (const h of [disc, bar, block]) fastest = Math.max(fastest, Math.hypot(world.bodyVelocity(h).x, world.bodyVelocity(h).y));
+        [disc, bar, block].forEach((h, k) => {
+          const p = world.bodyPose(h);
+          moved = Math.max(moved, Math.hypot(p.x - start[k].x, p.y - start[k].y), Math.abs(p.angle - start[k].angle));
+        });
       });
-      expect(fastest, kernel).to.be.below(50);
+      expect(moved, kernel).to.be.below(1e-6);
     }
   });
 
