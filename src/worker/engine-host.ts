@@ -5,7 +5,7 @@
 // encoding, collision events and fault hooks; host/bodies/ says what each body type needs.
 import type { World } from '../engine/index.js';
 import { Bindings } from './host/bindings.js';
-import { crossOriginIsolated, runningInWorker, warnIfKernelRefused } from './host/diagnostics.js';
+import { crossOriginIsolated, runningInWorker, warnIfKernelRefused, warnIfRowsRepaired } from './host/diagnostics.js';
 import { EventQueue } from './host/events.js';
 import { debugFault } from './host/faults.js';
 import { FrameEncoder } from './host/frames.js';
@@ -19,10 +19,10 @@ import type {
 } from './protocol.js';
 import type { Publisher } from './publishers.js';
 
-/** The kernel fields of Diagnostics. */
-function kernelOf(w: World): Pick<Diagnostics, 'kernel' | 'kernelRequested' | 'kernelReason'> {
+/** The fields of Diagnostics the engine's World.diagnostics() gives: its kernel, and the rows its step put back. */
+function worldDiagnostics(w: World): Pick<Diagnostics, 'kernel' | 'kernelRequested' | 'kernelReason' | 'rowsRepaired'> {
   const k = w.diagnostics();
-  return { kernel: k.kernel, kernelRequested: k.requested, kernelReason: k.reason };
+  return { kernel: k.kernel, kernelRequested: k.requested, kernelReason: k.reason, rowsRepaired: k.rowsRepaired };
 }
 
 export { runningInWorker } from './host/diagnostics.js';
@@ -197,7 +197,7 @@ export class EngineHost implements EngineApi {
       buffersAllocated: this.#publisher.allocated,
       events: this.#settings.params.events,
       eventsSent: this.#events.sent,
-      ...kernelOf(w),
+      ...worldDiagnostics(w),
     };
   }
 
@@ -244,6 +244,7 @@ export class EngineHost implements EngineApi {
   /** Sends the events gathered since the last frame, then the frame. */
   #publish(): void {
     if (this.#disposed) return;
+    warnIfRowsRepaired(this.#world);
     this.#events.flush(this.#settings.params.events, this.#output);
     this.#frames.publish(this.#loop.running, this.#settings.params.debug, this.#events.sent);
   }

@@ -164,6 +164,11 @@ export interface Diagnostics {
   kernel: 'js' | 'wasm';
   kernelRequested: KernelChoice;
   kernelReason: string;
+  /**
+   * Bodies and particles the engine's step put back where they started a step, at rest, because the solver left them
+   * not finite or running away (World.diagnostics().rowsRepaired): 0 unless joints tangle beyond what it resolves.
+   */
+  rowsRepaired: number;
 }
 
 export interface HostError {

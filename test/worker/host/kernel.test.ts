@@ -46,7 +46,7 @@ describe('EngineHost: the solver kernel', () => {
 
   it("with 'wasm' or 'auto' runs the WebAssembly kernel (in Node), near the JS one", () => {
     const js = hostWith('js');
-    expect(js.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'js', kernelReason: '' });
+    expect(js.host.diagnostics()).to.include({ kernel: 'js', kernelRequested: 'js', kernelReason: '', rowsRepaired: 0 });
     const wasm = hostWith('wasm');
     expect(wasm.host.diagnostics()).to.include({ kernel: 'wasm', kernelRequested: 'wasm', kernelReason: '' });
     expect(hostWith('auto').host.diagnostics()).to.include({ kernel: 'wasm', kernelRequested: 'auto' });
