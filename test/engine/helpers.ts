@@ -1,4 +1,4 @@
-import { World, type KernelOptions, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
+import { World, type KernelOptions, type Vec2, createBox, createCloth, createRagdoll, createRope, createSoftBody, type Handle } from '../../src/engine/index.js';
 import { resetKernelModule } from '../../src/engine/kernel/choice.js';
 
 /**
@@ -16,6 +16,14 @@ export function totalEnergy(world: World): number {
   }
   return e;
 }
+
+/** A box's outline, its centre at the origin: half-width hw, half-height hh. */
+export const box = (hw: number, hh: number): Vec2[] => [
+  { x: -hw, y: -hh },
+  { x: hw, y: -hh },
+  { x: hw, y: hh },
+  { x: -hw, y: hh },
+];
 
 /** Kinetic (linear and angular) + gravitational potential energy of rigid bodies, gravity g along +y. */
 export function rigidEnergy(world: World, bodies: Handle[], g: number): number {

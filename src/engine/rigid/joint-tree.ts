@@ -268,75 +268,68 @@ function buildForest(j: Joints, r: BodyRows): void {
   forestBodies = nb;
 }
 
+/** The least |det| inverse3() inverts (a typed array, as dk: no double passed to a call). */
+const minDet = new Float64Array(1);
+
 /**
- * The body at bodyF[o]: P = D⁻¹ (its 3×3 block, by cofactors) into its fields 9–17, and y = P·rhs into 21–23; false
- * when D is singular.
+ * The inverse of the 3×3 matrix m[mo..mo+8] (row by row, by cofactors) into inv[io..io+8], and inv·v (v = rhs[ro..
+ * ro+2]) into out[oo..oo+2]; false when |det| ≤ minDet[0].
  */
-function invertBody(o: number): boolean {
-  const d0 = bodyF[o], d1 = bodyF[o + 1], d2 = bodyF[o + 2];
-  const d3 = bodyF[o + 3], d4 = bodyF[o + 4], d5 = bodyF[o + 5];
-  const d6 = bodyF[o + 6], d7 = bodyF[o + 7], d8 = bodyF[o + 8];
+function inverse3(m: Float64Array, mo: number, inv: Float64Array, io: number, rhs: Float64Array, ro: number, out: Float64Array, oo: number): boolean {
+  const d0 = m[mo], d1 = m[mo + 1], d2 = m[mo + 2];
+  const d3 = m[mo + 3], d4 = m[mo + 4], d5 = m[mo + 5];
+  const d6 = m[mo + 6], d7 = m[mo + 7], d8 = m[mo + 8];
   const c0 = d4 * d8 - d5 * d7;
   const c1 = d5 * d6 - d3 * d8;
   const c2 = d3 * d7 - d4 * d6;
   const det = d0 * c0 + d1 * c1 + d2 * c2;
-  if (!(Math.abs(det) > 1e-12)) return false;
+  if (!(Math.abs(det) > minDet[0])) return false;
   const id = 1 / det;
   const p0 = c0 * id, p1 = (d2 * d7 - d1 * d8) * id, p2 = (d1 * d5 - d2 * d4) * id;
   const p3 = c1 * id, p4 = (d0 * d8 - d2 * d6) * id, p5 = (d2 * d3 - d0 * d5) * id;
   const p6 = c2 * id, p7 = (d1 * d6 - d0 * d7) * id, p8 = (d0 * d4 - d1 * d3) * id;
-  bodyF[o + 9] = p0; bodyF[o + 10] = p1; bodyF[o + 11] = p2;
-  bodyF[o + 12] = p3; bodyF[o + 13] = p4; bodyF[o + 14] = p5;
-  bodyF[o + 15] = p6; bodyF[o + 16] = p7; bodyF[o + 17] = p8;
-  const r0 = bodyF[o + 18], r1 = bodyF[o + 19], r2 = bodyF[o + 20];
-  bodyF[o + 21] = p0 * r0 + p1 * r1 + p2 * r2;
-  bodyF[o + 22] = p3 * r0 + p4 * r1 + p5 * r2;
-  bodyF[o + 23] = p6 * r0 + p7 * r1 + p8 * r2;
+  inv[io] = p0; inv[io + 1] = p1; inv[io + 2] = p2;
+  inv[io + 3] = p3; inv[io + 4] = p4; inv[io + 5] = p5;
+  inv[io + 6] = p6; inv[io + 7] = p7; inv[io + 8] = p8;
+  const r0 = rhs[ro], r1 = rhs[ro + 1], r2 = rhs[ro + 2];
+  out[oo] = p0 * r0 + p1 * r1 + p2 * r2;
+  out[oo + 1] = p3 * r0 + p4 * r1 + p5 * r2;
+  out[oo + 2] = p6 * r0 + p7 * r1 + p8 * r2;
   return true;
 }
 
+/** The body at bodyF[o]: P = D⁻¹ (its 3×3 block) into its fields 9–17, and y = P·rhs into 21–23; false when D is singular. */
+function invertBody(o: number): boolean {
+  minDet[0] = 1e-12;
+  return inverse3(bodyF, o, bodyF, o + 9, bodyF, o + 18, bodyF, o + 21);
+}
+
 /**
- * Dk⁻¹ of the joint at jointF[f] (fields 1–9) from its 3×3 D (dk), by cofactors, and z = Dk⁻¹·e (e in its
- * fields 10–12) into `z`; false when D is singular. A revolute joint's D (w = 0) is block-diagonal, its angle row the
- * identity: only its point's 2×2 block is inverted.
+ * Dk⁻¹ of the joint at jointF[f] (fields 1–9) from its 3×3 D (dk), and z = Dk⁻¹·e (e in its fields 10–12); false
+ * when D is singular. A revolute joint's D (w = 0) is block-diagonal, its angle row the identity: only its point's
+ * 2×2 block is inverted.
  */
 const z = new Float64Array(3);
 /** D of the joint being solved, row by row (a typed array: V8 boxes doubles passed to a call it does not inline). */
 const dk = new Float64Array(9);
 function invertJoint(f: number, w: number): boolean {
-  const d0 = dk[0], d1 = dk[1], d2 = dk[2], d3 = dk[3], d4 = dk[4], d5 = dk[5], d6 = dk[6], d7 = dk[7], d8 = dk[8];
+  const d0 = dk[0], d1 = dk[1], d3 = dk[3], d4 = dk[4];
   const point = Math.abs(d0) + Math.abs(d4);
-  if (w === 0) {
-    // The point's 2×2 block alone (the angle row is the identity, its error 0).
-    const det = d0 * d4 - d1 * d3;
-    if (!(Math.abs(det) > 1e-14 * point * point)) return false;
-    const id = 1 / det;
-    const p0 = d4 * id, p1 = -d1 * id, p3 = -d3 * id, p4 = d0 * id;
-    jointF[f + 1] = p0; jointF[f + 2] = p1; jointF[f + 3] = 0;
-    jointF[f + 4] = p3; jointF[f + 5] = p4; jointF[f + 6] = 0;
-    jointF[f + 7] = 0; jointF[f + 8] = 0; jointF[f + 9] = 1;
-    const e0 = jointF[f + 10], e1 = jointF[f + 11];
-    z[0] = p0 * e0 + p1 * e1;
-    z[1] = p3 * e0 + p4 * e1;
-    z[2] = 0;
-    return true;
+  if (w === 1) {
+    minDet[0] = 1e-14 * point * point * Math.abs(dk[8]);
+    return inverse3(dk, 0, jointF, f + 1, jointF, f + 10, z, 0);
   }
-  const c0 = d4 * d8 - d5 * d7;
-  const c1 = d5 * d6 - d3 * d8;
-  const c2 = d3 * d7 - d4 * d6;
-  const det = d0 * c0 + d1 * c1 + d2 * c2;
-  if (!(Math.abs(det) > 1e-14 * point * point * Math.abs(d8))) return false;
+  const det = d0 * d4 - d1 * d3;
+  if (!(Math.abs(det) > 1e-14 * point * point)) return false;
   const id = 1 / det;
-  const p0 = c0 * id, p1 = (d2 * d7 - d1 * d8) * id, p2 = (d1 * d5 - d2 * d4) * id;
-  const p3 = c1 * id, p4 = (d0 * d8 - d2 * d6) * id, p5 = (d2 * d3 - d0 * d5) * id;
-  const p6 = c2 * id, p7 = (d1 * d6 - d0 * d7) * id, p8 = (d0 * d4 - d1 * d3) * id;
-  jointF[f + 1] = p0; jointF[f + 2] = p1; jointF[f + 3] = p2;
-  jointF[f + 4] = p3; jointF[f + 5] = p4; jointF[f + 6] = p5;
-  jointF[f + 7] = p6; jointF[f + 8] = p7; jointF[f + 9] = p8;
-  const e0 = jointF[f + 10], e1 = jointF[f + 11], e2 = jointF[f + 12];
-  z[0] = p0 * e0 + p1 * e1 + p2 * e2;
-  z[1] = p3 * e0 + p4 * e1 + p5 * e2;
-  z[2] = p6 * e0 + p7 * e1 + p8 * e2;
+  const p0 = d4 * id, p1 = -d1 * id, p3 = -d3 * id, p4 = d0 * id;
+  jointF[f + 1] = p0; jointF[f + 2] = p1; jointF[f + 3] = 0;
+  jointF[f + 4] = p3; jointF[f + 5] = p4; jointF[f + 6] = 0;
+  jointF[f + 7] = 0; jointF[f + 8] = 0; jointF[f + 9] = 1;
+  const e0 = jointF[f + 10], e1 = jointF[f + 11];
+  z[0] = p0 * e0 + p1 * e1;
+  z[1] = p3 * e0 + p4 * e1;
+  z[2] = 0;
   return true;
 }
 

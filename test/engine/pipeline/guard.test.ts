@@ -3,22 +3,17 @@
 // joints that the solver cannot resolve (limits, motors, welds, sliders and rods, kinematic and static members, loops,
 // masses 10⁶ apart, anchors up to 3 sizes off): without the guard 15 to 21 of them reached NaN within 300 steps.
 import { expect } from 'chai';
-import { World, type Handle, type Vec2 } from '../../../src/engine/index.js';
+import { World, type Handle } from '../../../src/engine/index.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
 import { keepRowsFinite, RUNAWAY_SPEED } from '../../../src/engine/pipeline/guard.js';
 import { handleSlot } from '../../../src/engine/handles.js';
 import { rng } from '../collision/helpers.js';
+import { box } from '../helpers.js';
 
 function contextOf(world: World): StepContext {
   return (world as unknown as { ctx: StepContext }).ctx;
 }
 
-const box = (hw: number, hh: number): Vec2[] => [
-  { x: -hw, y: -hh },
-  { x: hw, y: -hh },
-  { x: hw, y: hh },
-  { x: -hw, y: hh },
-];
 
 /** Every row's position, angle and velocities finite. */
 function rowsFinite(world: World): boolean {

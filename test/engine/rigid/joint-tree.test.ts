@@ -7,14 +7,8 @@
 import { expect } from 'chai';
 import { World, type Handle, type Vec2 } from '../../../src/engine/index.js';
 import { rng } from '../collision/helpers.js';
-import { rigidEnergy } from '../helpers.js';
+import { box, rigidEnergy } from '../helpers.js';
 
-const box = (hw: number, hh: number): Vec2[] => [
-  { x: -hw, y: -hh },
-  { x: hw, y: -hh },
-  { x: hw, y: hh },
-  { x: -hw, y: hh },
-];
 
 interface Hinge {
   a: Handle;

@@ -6,16 +6,10 @@ import { expect } from 'chai';
 import { createBox, createCircle, createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
 import { BOUNCE_THRESHOLD } from '../../../src/engine/rigid/contact-solver.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
-import { rigidEnergy } from '../helpers.js';
+import { box, rigidEnergy } from '../helpers.js';
 import { rng } from '../collision/helpers.js';
 
 const g = 9.81;
-const box = (hw: number, hh: number): Vec2[] => [
-  { x: -hw, y: -hh },
-  { x: hw, y: -hh },
-  { x: hw, y: hh },
-  { x: -hw, y: hh },
-];
 
 function steps(world: World, n: number, each?: (k: number) => void): void {
   for (let k = 1; k <= n; k++) {

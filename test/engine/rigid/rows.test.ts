@@ -3,18 +3,13 @@
 // SERIES_TURN, Math.cos/Math.sin beyond; one row in RESYNC_STEPS afresh a step), and the set-up finds a contact between
 // masses 10× apart, and only then.
 import { expect } from 'chai';
-import { World, type Vec2 } from '../../../src/engine/index.js';
+import { World } from '../../../src/engine/index.js';
 import { ParticleStore } from '../../../src/engine/particles.js';
 import { integrateRotation, resyncRotation, syncRotation, updateAngularVelocity, MAX_TURN, RESYNC_STEPS, SERIES_TURN } from '../../../src/engine/rigid/rows.js';
 import { orderForShock } from '../../../src/engine/rigid/contact-solver.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
+import { box } from '../helpers.js';
 
-const box = (hw: number, hh: number): Vec2[] => [
-  { x: -hw, y: -hh },
-  { x: hw, y: -hh },
-  { x: hw, y: hh },
-  { x: -hw, y: hh },
-];
 
 const contextOf = (world: World): StepContext => (world as unknown as { ctx: StepContext }).ctx;
 

@@ -1,15 +1,10 @@
 // The substep choice: `substeps: 'auto'` (the default) takes AUTO_SUBSTEPS.rigid substeps while every body that moves
 // is a rigid body, AUTO_SUBSTEPS.particles as soon as a particle-built body moves; an explicit count always wins.
 import { expect } from 'chai';
-import { createBox, createCloth, createRope, World, type Vec2 } from '../../../src/engine/index.js';
+import { createBox, createCloth, createRope, World } from '../../../src/engine/index.js';
 import { AUTO_SUBSTEPS } from '../../../src/engine/settings.js';
+import { box } from '../helpers.js';
 
-const box = (hw: number, hh: number): Vec2[] => [
-  { x: -hw, y: -hh },
-  { x: hw, y: -hh },
-  { x: hw, y: hh },
-  { x: -hw, y: hh },
-];
 
 describe('rigid bodies: the substep choice', () => {
   it("'auto' is the default: rigid, static and kinematic bodies and joints take the rigid count; a moving particle body the particle count", () => {
