@@ -2,14 +2,13 @@ import { JointKind, type Joints } from './joint-table.js';
 import { MAX_TURN, spin, turnBySpin, type BodyRows } from './rows.js';
 import { inJointTree, solveJointTrees } from './joint-tree.js';
 
-
 /**
  * The factor that keeps a sweep correction's turn of either body within MAX_TURN (half a radian, what a substep's
  * integration allows): a linearised correction that turns a body further is no longer near the answer, and among
  * masses and levers far apart (a tiny body welded on a long lever between heavy ones) such corrections overshoot,
  * each more than the last. Scaled down, both bodies' moves by the same factor, the correction keeps its direction and
- * momentum, and the next sweeps finish it. In random welded trees (masses 10⁶ apart, anchors up to 3 sizes off)
- * speeds ran away in 17 of 60, now 2; with sliders 36, now 20.
+ * momentum, and the next sweeps finish it. In random tangles of sliders (masses 10⁶ apart, anchors up to 3 sizes
+ * off) speeds ran away in 36 of 60, now 20; of welds 17, then 2 (before welds joined the trees of joint-tree.ts).
  */
 function withinTurn(turnA: number, turnB: number): number {
   const t = Math.max(Math.abs(turnA), Math.abs(turnB));
