@@ -5,13 +5,13 @@
 // and then NaN, which would spread through every constraint and contact to the whole world.
 import type { ParticleStore } from '../particles.js';
 import { MAX_SPEED } from '../validate.js';
+import type { StepContext } from './context.js';
 
 /**
  * The speed (linear, or angular in rad/s) past which a row is a runaway: a thousand times what the API accepts
  * (MAX_SPEED), so a body that gravity or a push took a little past that limit keeps going.
  */
 export const RUNAWAY_SPEED = 1000 * MAX_SPEED;
-import type { StepContext } from './context.js';
 
 /**
  * Checks every row after the substeps: one whose position, angle or speeds are not finite, or whose linear or angular

@@ -39,7 +39,7 @@ let jB = new Int32Array(16);
 let jTree = new Uint8Array(16);
 let jVisited = new Uint8Array(16);
 
-/** Whether joint i's point was solved by the last solveJointTrees() that returned true. */
+/** Whether joint i (a revolute joint's point, or a weld) was solved by the last solveJointTrees() that returned true. */
 export function inJointTree(i: number): boolean {
   return jTree[i] === 1;
 }
@@ -99,8 +99,7 @@ function find(x: number): number {
 
 /** Local id of row `row` (0: immovable). */
 function localBody(r: BodyRows, row: number, nb: number[]): number {
-  if (row < 0) return 0;
-  if (r.invMass[row] === 0 && r.invInertia[row] === 0) return 0;
+  if (immovable(r, row)) return 0;
   if (stamp[row] === stampNow) return localOf[row];
   stamp[row] = stampNow;
   const id = nb[0]++;
@@ -133,8 +132,8 @@ function loadLevers(j: Joints, r: BodyRows, i: number, side: number, local: numb
 }
 
 /**
- * Solves the points of the revolute joints that form trees, once, before the sweep. False (nothing moved) when no
- * two joints share a body or a pivot came out singular.
+ * Solves the revolute joints' points and the welds that form trees, once, before the sweep. False (nothing moved)
+ * when no two joints share a body or a pivot came out singular.
  */
 export function solveJointTrees(j: Joints, r: BodyRows, h: number): boolean {
   if (!forestValid(j, r)) buildForest(j, r);
@@ -199,7 +198,7 @@ function buildForest(j: Joints, r: BodyRows): void {
   }
   counter[0] = 1;
   uf[0] = 0;
-  // Spanning forest over the revolute joints (world node 0).
+  // Spanning forest over the revolute joints and welds (world node 0).
   let treeCount = 0;
   for (let i = 0; i < n; i++) {
     jTree[i] = 0;
