@@ -88,16 +88,18 @@ export function verletHalfSubstep(integrator: Integrator, h: number): number {
 }
 
 /**
- * Adds (dx, dy) to the stored velocity of every movable particle that is not a rigid body's row: how the v − ½·g·h
- * of position Verlet follows a change of g or h. Rigid rows store v itself, and a sleeping body's rows are at rest
- * (invMass 0 while parked: they wake as a fresh body would).
+ * Adds (dx, dy) to the stored velocity of every movable particle that is not a rigid body's row, and (rx, ry) to every
+ * movable rigid row: how the v − ½·g·h of position Verlet follows a change of g or h. Rigid rows keep the term for
+ * the substep the world takes (rigidHalfSubstep), particles for the particle count, which differ under 'auto' in a
+ * world of rigid bodies alone. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
  */
-export function shiftVerletVelocities(p: ParticleStore, dx: number, dy: number): void {
-  if (dx === 0 && dy === 0) return;
+export function shiftVerletVelocities(p: ParticleStore, dx: number, dy: number, rx: number, ry: number): void {
+  if (dx === 0 && dy === 0 && rx === 0 && ry === 0) return;
   const { vx, vy, invMass, alive, flags } = p;
   for (let i = 0, n = p.count; i < n; i++) {
-    if (alive[i] === 0 || invMass[i] === 0 || flags[i] & ParticleFlag.Rigid) continue;
-    vx[i] += dx;
-    vy[i] += dy;
+    if (alive[i] === 0 || invMass[i] === 0) continue;
+    const rigid = (flags[i] & ParticleFlag.Rigid) !== 0;
+    vx[i] += rigid ? rx : dx;
+    vy[i] += rigid ? ry : dy;
   }
 }

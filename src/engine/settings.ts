@@ -1,7 +1,7 @@
 // The world's settings as the step reads them, their defaults and their checks (shared by the World's constructor,
 // its setters and restore(), so a setting is validated the same way wherever it comes from).
 import type { Bounds } from './bounds.js';
-import { INTEGRATORS, type Integrator } from './integrate.js';
+import { INTEGRATORS, verletHalfSubstep, type Integrator } from './integrate.js';
 import { checkBounds, type SubstepChoice, type Vec2, type WorldOptions } from './options.js';
 import { acceleration, describeValue, flag, integer, MAX_STEP_SECONDS, MIN_STEP_SECONDS, nonNegative, oneOf, positive } from './validate.js';
 
@@ -102,6 +102,15 @@ export function substepCount(settings: StepSettings, particleRows: number): numb
   const s = settings.substeps;
   if (s !== 'auto') return s;
   return particleRows > 0 ? AUTO_SUBSTEPS.particles : AUTO_SUBSTEPS.rigid;
+}
+
+/**
+ * ½·h of the substep a rigid row takes (0 under the Euler integrators). Rigid rows store v − ½·g·h as particles do,
+ * for the substep the world takes: a thrown body then follows x0 + v0·t + ½·g·t² exactly, where storing v itself
+ * led it by ½·g·h·t. `particleRows` as substepCount takes it.
+ */
+export function rigidHalfSubstep(settings: StepSettings, particleRows: number): number {
+  return verletHalfSubstep(settings.integrator, settings.timestep / substepCount(settings, particleRows));
 }
 
 /** Checked settings from options completed with the defaults (gravity and bounds copied, never shared). */

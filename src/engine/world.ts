@@ -25,7 +25,7 @@ import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js
 import { BODY_KINDS, DEFAULT_LIMITS, OPTION_NAMES, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
-import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, stepLength, substepCount, type StepSettings } from './settings.js';
+import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, rigidHalfSubstep, stepLength, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { KernelOptions, WorldDiagnostics } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
@@ -363,12 +363,13 @@ export class World {
 
   /**
    * Position Verlet's velocity is the mean over a substep, i.e. the velocity half a substep earlier than the
-   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly. A rigid row's velocity is
-   * semi-implicit Euler's, stored as it is.
+   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly; a rigid row keeps the term
+   * for the substep the world takes (api.writeRowVelocity).
    */
   private writeVelocity(i: number, vx: number, vy: number): void {
     const p = this.particles;
-    const half = p.invMass[i] !== 0 && !(p.flags[i] & ParticleFlag.Rigid) ? this.verletHalfStep() : 0;
+    if (p.flags[i] & ParticleFlag.Rigid) return api.writeRowVelocity(this.ctx, i, vx, vy);
+    const half = p.invMass[i] !== 0 ? this.verletHalfStep() : 0;
     p.vx[i] = vx - this.settings.gravity.x * half;
     p.vy[i] = vy - this.settings.gravity.y * half;
   }
@@ -384,19 +385,19 @@ export class World {
   }
 
   /**
-   * A particle's stored velocity is v − ½·g·h under the gravity, substep and integrator of the moment (writeVelocity),
-   * so a change of any of them shifts the stored velocity of every movable particle by the difference of that term:
-   * without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once gravity was switched
-   * off. Rigid rows store v itself, and a sleeping body's rows are at rest (invMass 0 while parked: they wake under the
-   * new settings as a fresh body would).
+   * A stored velocity is v − ½·g·h under the gravity, substep and integrator of the moment (writeVelocity), so a
+   * change of any of them shifts the stored velocity of every movable particle and rigid row by the difference of
+   * that term: without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once gravity was
+   * switched off. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
    */
   private keepingVelocities(change: () => void): void {
+    const rows = this.ctx.particleRows;
     const { gravity: g0 } = this.settings;
-    const h0 = this.verletHalfStep();
+    const [h0, r0] = [this.verletHalfStep(), rigidHalfSubstep(this.settings, rows)];
     change();
     const { gravity: g1 } = this.settings;
-    const h1 = this.verletHalfStep();
-    shiftVerletVelocities(this.particles, g0.x * h0 - g1.x * h1, g0.y * h0 - g1.y * h1);
+    const [h1, r1] = [this.verletHalfStep(), rigidHalfSubstep(this.settings, rows)];
+    shiftVerletVelocities(this.particles, g0.x * h0 - g1.x * h1, g0.y * h0 - g1.y * h1, g0.x * r0 - g1.x * r1, g0.y * r0 - g1.y * r1);
   }
 
   // ---- constraints -------------------------------------------------------------------------------------------
@@ -688,7 +689,10 @@ export class World {
     const body = this.addBody('rigid', [particle], [], { shape: 'none' });
     this.ctx.rigidShapes.set(handleSlot(body), i, plan.source, plan.type);
     this.writeCollider(handleSlot(body), plan.collider);
-    if (plan.type !== BodyType.Static) [this.particles.vx[i], this.particles.vy[i], this.particles.omega[i]] = [plan.vx, plan.vy, plan.w];
+    if (plan.type !== BodyType.Static) {
+      api.writeRowVelocity(this.ctx, i, plan.vx, plan.vy);
+      this.particles.omega[i] = plan.w;
+    }
     return body;
   }
 
@@ -701,7 +705,7 @@ export class World {
   bodyPose(body: Handle): Pose { return api.bodyPose(this.ctx, body); }
   /** Moves and turns a rigid body to a pose (its velocities are kept). */
   setBodyPose(body: Handle, x: number, y: number, angle: number): void { api.setBodyPose(this.ctx, body, x, y, angle); }
-  /** Velocity of a rigid body's centre of mass at the end of the last step (semi-implicit Euler's). */
+  /** Velocity of a rigid body's centre of mass: the mean over the last substep (0 at rest; in free flight g·h/2 behind g·t). */
   bodyVelocity(body: Handle): Vec2 { return api.bodyVelocity(this.ctx, body); }
   setBodyVelocity(body: Handle, vx: number, vy: number): void { api.setBodyVelocity(this.ctx, body, vx, vy); }
   /** Angular velocity (rad/s; positive turns x toward y). */

@@ -1,6 +1,7 @@
 import { expect } from 'chai';
-import { World, INTEGRATORS } from '../../src/engine/index.js';
-import { totalEnergy } from './helpers.js';
+import { createRope, World, INTEGRATORS } from '../../src/engine/index.js';
+import { AUTO_SUBSTEPS } from '../../src/engine/settings.js';
+import { box, totalEnergy } from './helpers.js';
 
 describe('integrators', () => {
   it('position Verlet follows y0 + v0·t + ½·g·t² exactly for constant gravity', () => {
@@ -37,8 +38,8 @@ describe('integrators', () => {
     world.setGravity(0, 0);
     const [ballAt, freeAt] = [world.bodyPose(ball).y, world.getPosition(free).y];
     for (let k = 0; k < 30; k++) world.step();
-    // The rigid ball keeps the g·t it had when gravity went (semi-implicit Euler stores v itself: no shift), and goes
-    // on at that speed, as the free particle does.
+    // The rigid ball keeps the g·t it had when gravity went (its stored v − ½·g·h shifted to v), and goes on at that
+    // speed, as the free particle does.
     expect(world.bodyVelocity(ball).y).to.be.closeTo(9.81 * 0.5, 1e-9);
     expect(world.bodyPose(ball).y - ballAt).to.be.closeTo(9.81 * 0.5 * 0.5, 1e-9);
     expect(world.getPosition(free).y - freeAt).to.be.closeTo(9.81 * 0.5 * 0.5, 1e-9);
@@ -76,6 +77,81 @@ describe('integrators', () => {
     const pos = world.getPosition(p);
     expect(pos.x).to.be.closeTo(2 * (t1 + t) + 0.5 * 3 * t * t, 1e-9);
     expect(pos.y).to.be.closeTo(y1 + vy1 * t - 0.5 * 2 * t * t, 1e-9);
+  });
+
+  it('a thrown rigid body follows x0 + v0·t + ½·g·t² exactly, as a particle does, alone (the rigid substeps) or beside particles', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      for (const withParticles of [false, true]) {
+        const name = `${kernel}, ${withParticles ? 'beside a particle' : 'rigid bodies alone'}`;
+        const world = new World({ gravity: { x: 1, y: 10 }, kernel, sleeping: false });
+        const disc = world.addRigidBody({ radius: 0.5, x: 0, y: 0, vx: 3, vy: -8, angularVelocity: 2, collide: false });
+        const plate = world.addRigidBody({ points: box(1, 0.25), x: 5, y: 0, vx: -2, vy: -4, collide: false });
+        const p = withParticles ? world.addParticle({ x: 10, y: 0, vx: 3, vy: -8 }) : null;
+        for (let k = 0; k < 90; k++) world.step();
+        const t = world.time;
+        expect(world.substepCount, name).to.equal(withParticles ? AUTO_SUBSTEPS.particles : AUTO_SUBSTEPS.rigid);
+        // Storing v itself, as rigid rows did, led the path by ½·g·h·t: 0.0125 units here after 1.5 s at 6 substeps.
+        const d = world.bodyPose(disc);
+        expect(d.x, name).to.be.closeTo(3 * t + 0.5 * t * t, 1e-9);
+        expect(d.y, name).to.be.closeTo(-8 * t + 5 * t * t, 1e-9);
+        expect(d.angle, name).to.be.closeTo(2 * t, 1e-9);
+        const b = world.bodyPose(plate);
+        expect(b.x, name).to.be.closeTo(5 - 2 * t + 0.5 * t * t, 1e-9);
+        expect(b.y, name).to.be.closeTo(-4 * t + 5 * t * t, 1e-9);
+        // The particle thrown alike is where the disc is, 10 to its right.
+        if (p) expect(world.getPosition(p).x - 10, name).to.be.closeTo(d.x, 1e-9);
+        if (p) expect(world.getPosition(p).y, name).to.be.closeTo(d.y, 1e-9);
+      }
+    }
+  });
+
+  it('a rigid body in flight keeps to its exact path through changes of gravity, timestep and substeps, particles joining and leaving, steps of any length, a throw, a kinematic spell and a snapshot', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ gravity: { x: 0, y: 10 }, kernel, sleeping: false, variableStep: true });
+      const ball = world.addRigidBody({ radius: 0.5, x: 0, y: 0, collide: false });
+      // The exact path, phase by phase: position and velocity under a constant gravity g for a time τ.
+      const at = { x: 0, y: 0, vx: 0, vy: 0 };
+      const fly = (tau: number, g: { x: number; y: number }) => {
+        at.x += at.vx * tau + 0.5 * g.x * tau * tau;
+        at.y += at.vy * tau + 0.5 * g.y * tau * tau;
+        at.vx += g.x * tau;
+        at.vy += g.y * tau;
+      };
+      const phase = (name: string, steps: number, take: (k: number) => number = () => (world.step(), world.timestep)) => {
+        const g = { ...world.gravity };
+        for (let k = 0; k < steps; k++) fly(take(k), world.bodyType(ball) === 'kinematic' ? { x: 0, y: 0 } : g);
+        const pose = world.bodyPose(ball);
+        expect(pose.x, `${kernel}: ${name}`).to.be.closeTo(at.x, 1e-9);
+        expect(pose.y, `${kernel}: ${name}`).to.be.closeTo(at.y, 1e-9);
+      };
+      phase('falling from rest', 30);
+      world.setGravity(1, 4);
+      phase('gravity changed', 30);
+      const rope = createRope(world, { from: { x: 100, y: 0 }, to: { x: 104, y: 0 }, segments: 4 });
+      phase('a rope joined: the particle substeps', 30);
+      expect(world.substepCount).to.equal(AUTO_SUBSTEPS.particles);
+      world.removeBody(rope.body);
+      phase('the rope gone: the rigid substeps again', 20);
+      expect(world.substepCount).to.equal(AUTO_SUBSTEPS.rigid);
+      world.timestep = 1 / 90;
+      phase('timestep 1/90', 45);
+      world.substeps = 7;
+      phase('7 substeps', 30);
+      const lengths = [1 / 60, 1 / 30, 1 / 120, 1 / 45, 1 / 24, 1 / 90];
+      phase('steps of varying length', 18, (k) => (world.step(lengths[k % 6]), lengths[k % 6]));
+      world.setBodyVelocity(ball, 2, -3);
+      [at.vx, at.vy] = [2, -3];
+      phase('thrown again', 30);
+      world.setBodyType(ball, 'kinematic');
+      phase('kinematic: straight on at its speed', 30);
+      world.setBodyType(ball, 'dynamic');
+      phase('dynamic again', 30);
+      const copy = new World({ kernel });
+      copy.restore(world.snapshot());
+      phase('the original after a snapshot', 30);
+      for (let k = 0; k < 30; k++) copy.step();
+      expect(copy.bodyPose(ball), `${kernel}: the copy`).to.deep.equal(world.bodyPose(ball));
+    }
   });
 
   it('a falling particle keeps to ½·g·t² when the timestep or the substeps change, and reads g·t on leaving Verlet', () => {

@@ -58,7 +58,7 @@ export function step(ctx: StepContext, dt: number): void {
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);
   if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
-  // Between steps a particle's stored velocity is v − ½·g·h for the timestep's substeps; a step of another length
+  // Between steps a particle's (and a rigid row's) stored velocity is v − ½·g·h for the timestep's substeps; a step of another length
   // (variableStep, World.step(dt)) holds it for its own substeps meanwhile, so a thrown particle keeps to its parabola
   // through steps of any lengths.
   const timestepSubstep = ctx.settings.timestep / n;
@@ -136,7 +136,7 @@ export function substep(ctx: StepContext, h: number): void {
 function shiftVerletOffsets(ctx: StepContext, from: number, to: number): void {
   const { gravity, integrator } = ctx.settings;
   const d = verletHalfSubstep(integrator, from) - verletHalfSubstep(integrator, to);
-  if (d !== 0) shiftVerletVelocities(ctx.particles, gravity.x * d, gravity.y * d);
+  if (d !== 0) shiftVerletVelocities(ctx.particles, gravity.x * d, gravity.y * d, gravity.x * d, gravity.y * d);
 }
 
 /** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */

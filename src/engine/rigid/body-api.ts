@@ -5,6 +5,8 @@ import { OPTION_NAMES, resolveCollider, type MassInfo, type Pose, type ResolvedC
 import { knownNames, mass as massOf, MIN_INERTIA, objectOf, positive } from '../validate.js';
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
+import { ParticleFlag } from '../particles.js';
+import { rigidHalfSubstep } from '../settings.js';
 import { topologyChanged } from '../pipeline/topology.js';
 import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushedSpeed, pushSpeed, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
@@ -90,9 +92,29 @@ export function bodyVelocity(ctx: StepContext, body: Handle): Vec2 {
 export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: number): void {
   const r = rigidOf(ctx, body);
   const [x, y] = [speed('vx', vx), speed('vy', vy)];
-  ctx.particles.vx[r.i] = x;
-  ctx.particles.vy[r.i] = y;
   wake(ctx, r.slot);
+  writeRowVelocity(ctx, r.i, x, y);
+}
+
+/**
+ * Stores a rigid row's velocity as position Verlet's mean over the substep to come, v − ½·g·h (h the substep the
+ * world takes: rigidHalfSubstep), as particles store theirs, so that a thrown body follows x0 + v0·t + ½·g·t²
+ * exactly. A row that gravity does not move (static, kinematic, asleep: inverse mass 0) stores v itself.
+ */
+export function writeRowVelocity(ctx: StepContext, i: number, vx: number, vy: number): void {
+  const half = rowHalfSubstep(ctx, i);
+  ctx.particles.vx[i] = vx - ctx.settings.gravity.x * half;
+  ctx.particles.vy[i] = vy - ctx.settings.gravity.y * half;
+}
+
+/** A rigid row's velocity as writeRowVelocity was given it. */
+function rowVelocity(ctx: StepContext, i: number): Vec2 {
+  const half = rowHalfSubstep(ctx, i);
+  return { x: ctx.particles.vx[i] + ctx.settings.gravity.x * half, y: ctx.particles.vy[i] + ctx.settings.gravity.y * half };
+}
+
+function rowHalfSubstep(ctx: StepContext, i: number): number {
+  return ctx.particles.invMass[i] === 0 ? 0 : rigidHalfSubstep(ctx.settings, ctx.particleRows);
 }
 
 export function setBodyAngularVelocity(ctx: StepContext, body: Handle, w: number): void {
@@ -148,8 +170,12 @@ export function setBodyType(ctx: StepContext, body: Handle, type: BodyTypeName):
   const r = rigidOf(ctx, body);
   const t = BODY_TYPES.indexOf(oneOf('type', type, BODY_TYPES)) as BodyType;
   wake(ctx, r.slot);
+  // A kinematic body keeps its velocity as a dynamic one and back: read and written as the row's kind stores it.
+  const p = ctx.particles;
+  const v = rowVelocity(ctx, r.i);
   ctx.rigidShapes.set(r.slot, r.i, r.source, t);
-  setType(ctx.particles, r.i, r.source, t);
+  setType(p, r.i, r.source, t);
+  if (!(p.flags[r.i] & ParticleFlag.Static)) writeRowVelocity(ctx, r.i, v.x, v.y);
   ctx.collidersDirty = true;
   topologyChanged(ctx);
 }

@@ -19,13 +19,14 @@ describe('rigid bodies: the substep choice', () => {
     createBox(world, { x: -5, y: -1, width: 1, height: 1, model: 'particles', static: true });
     expect(world.substepCount).to.equal(AUTO_SUBSTEPS.rigid);
     expect(world.substepDt).to.be.closeTo(1 / 60 / AUTO_SUBSTEPS.rigid, 1e-15);
-    // The clock and the motion follow: one step of free fall from rest moves a body by g·dt²·(n + 1)/(2n) (position
-    // Verlet over n substeps), which tells the count the step really took.
+    // The motion follows: after one step of free fall from rest a body's velocity (the mean over the last substep)
+    // is g·(dt − h/2), which tells the substep h the step really took; it has fallen g·dt²/2 exactly.
     const free = new World({ sleeping: false, gravity: { x: 0, y: 10 } });
     const b = free.addRigidBody({ points: box(0.5, 0.5), x: 0, y: 0, collide: false });
     free.step();
     const n = AUTO_SUBSTEPS.rigid;
-    expect(free.bodyPose(b).y).to.be.closeTo((10 / 3600) * ((n + 1) / (2 * n)), 1e-12);
+    expect(free.bodyVelocity(b).y).to.be.closeTo(10 * (1 / 60 - 1 / 120 / n), 1e-12);
+    expect(free.bodyPose(b).y).to.be.closeTo(5 / 3600, 1e-12);
     // A rope joins: the particle count, until it is removed again.
     const rope = createRope(world, { from: { x: 8, y: -5 }, to: { x: 10, y: -5 }, segments: 4 });
     expect(world.substepCount).to.equal(AUTO_SUBSTEPS.particles);
