@@ -89,9 +89,9 @@ export function verletHalfSubstep(integrator: Integrator, h: number): number {
 
 /**
  * Adds (dx, dy) to the stored velocity of every movable particle that is not a rigid body's row, and (rx, ry) to every
- * movable rigid row: how the v − ½·g·h of position Verlet follows a change of g or h. Rigid rows keep the term for
- * the substep the world takes (rigidHalfSubstep), particles for the particle count, which differ under 'auto' in a
- * world of rigid bodies alone. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
+ * movable rigid row: how the v − ½·g·h of position Verlet follows a change of g or h (each kind of row keeps it for its
+ * own reference substep: verletReferenceHalf). A sleeping body's rows are at rest (invMass 0 while parked: they wake at
+ * rest).
  */
 export function shiftVerletVelocities(p: ParticleStore, dx: number, dy: number, rx: number, ry: number): void {
   if (dx === 0 && dy === 0 && rx === 0 && ry === 0) return;

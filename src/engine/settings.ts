@@ -105,12 +105,14 @@ export function substepCount(settings: StepSettings, particleRows: number): numb
 }
 
 /**
- * ½·h of the substep a rigid row takes (0 under the Euler integrators). Rigid rows store v − ½·g·h as particles do,
- * for the substep the world takes: a thrown body then follows x0 + v0·t + ½·g·t² exactly, where storing v itself
- * led it by ½·g·h·t. `particleRows` as substepCount takes it.
+ * ½·h of a row's reference substep (0 under the Euler integrators): between steps every movable row stores position
+ * Verlet's v − ½·g·h for it, so that a thrown particle or body follows x0 + v0·t + ½·g·t² exactly. A particle's is the
+ * substep of a world whose particles move, a rigid row's that of a world of rigid bodies alone (substepCount with
+ * no moving particles, or one: they differ only under 'auto'), both known from the settings alone; a step of another
+ * substep shifts to its own and back (step.ts).
  */
-export function rigidHalfSubstep(settings: StepSettings, particleRows: number): number {
-  return verletHalfSubstep(settings.integrator, settings.timestep / substepCount(settings, particleRows));
+export function verletReferenceHalf(settings: StepSettings, rigid: boolean): number {
+  return verletHalfSubstep(settings.integrator, settings.timestep / substepCount(settings, rigid ? 0 : 1));
 }
 
 /** Checked settings from options completed with the defaults (gravity and bounds copied, never shared). */

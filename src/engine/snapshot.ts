@@ -253,7 +253,7 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   ctx.pinMoved = false;
   ctx.collidersDirty = true;
   ctx.topologyDirty = true;
-  rebuildTopology(ctx, true);
+  rebuildTopology(ctx);
   // The rebuild starts the sleep bookkeeping and the grid's cell size afresh; the run had carried them on.
   loadFields(ctx.sleep, FIELDS.sleep.snapshotted, s.sleep);
   if (ctx.broadPhase instanceof GridBroadPhase) loadFields(ctx.broadPhase, FIELDS.grid.snapshotted, s.broadPhase);

@@ -7,7 +7,7 @@ import { stretchOf, type DistanceConstraints } from './constraints/distance.js';
 import type { PinConstraints } from './constraints/pin.js';
 import type { Springs } from './constraints/spring.js';
 import { grabLag, type GrabConstraints } from './constraints/grab.js';
-import { shiftVerletVelocities, verletHalfSubstep, type Integrator } from './integrate.js';
+import { shiftVerletVelocities, type Integrator } from './integrate.js';
 import type { Bounds } from './bounds.js';
 import { hashColumns } from './hash.js';
 import { GridBroadPhase, makeBroadPhase, type PairList } from './pipeline/broadphase.js';
@@ -25,7 +25,7 @@ import { applyImpulseByMass, centroid, softRingLength } from './body-registry.js
 import { BODY_KINDS, DEFAULT_LIMITS, OPTION_NAMES, resolveCollider, type ResolvedCollider } from './options.js';
 import type { AngleOptions, AreaOptions, BodyKind, ColliderOptions, ConstraintKind, DistanceOptions, GrabOptions } from './options.js';
 import type { JointOptions, Limits, MassInfo, ParticleOptions, PinOptions, Pose, RayCastHit, RigidBodyOptions, SpringOptions, SubstepChoice, Vec2, WorldOptions } from './options.js';
-import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, rigidHalfSubstep, stepLength, substepCount, type StepSettings } from './settings.js';
+import { BROAD_PHASES, CHECK, checkedSettings, DEFAULTS, MAX_STEP_SECONDS, NARROW_PHASES, stepLength, verletReferenceHalf, substepCount, type StepSettings } from './settings.js';
 import { restoreContext, snapshotContext, type WorldSnapshot } from './snapshot.js';
 import type { KernelOptions, WorldDiagnostics } from './kernel/choice.js';
 import { BodyType, type BodyTypeName } from './rigid/shapes.js';
@@ -361,43 +361,25 @@ export class World {
     return w === 0 ? Infinity : 1 / w;
   }
 
-  /**
-   * Position Verlet's velocity is the mean over a substep, i.e. the velocity half a substep earlier than the
-   * position. Storing v − ½·g·h makes a thrown particle follow x0 + v0·t + ½·g·t² exactly; a rigid row keeps the term
-   * for the substep the world takes (api.writeRowVelocity).
-   */
+  /** A particle's or rigid row's velocity, stored as position Verlet's v − ½·g·h (api.writeRowVelocity). */
   private writeVelocity(i: number, vx: number, vy: number): void {
-    const p = this.particles;
-    if (p.flags[i] & ParticleFlag.Rigid) return api.writeRowVelocity(this.ctx, i, vx, vy);
-    const half = p.invMass[i] !== 0 ? this.verletHalfStep() : 0;
-    p.vx[i] = vx - this.settings.gravity.x * half;
-    p.vy[i] = vy - this.settings.gravity.y * half;
+    api.writeRowVelocity(this.ctx, i, vx, vy);
   }
 
   /**
-   * ½·h of a substep of the particles under position Verlet, 0 under the Euler integrators. A moving particle that
-   * is not a rigid body makes 'auto' take the particle count, known without rebuilding the topology: builders write a
-   * velocity for every particle they add, and a rebuild per particle made building a cloth quadratic in its size.
-   */
-  private verletHalfStep(): number {
-    const s = this.settings;
-    return verletHalfSubstep(s.integrator, s.timestep / substepCount(s, 1));
-  }
-
-  /**
-   * A stored velocity is v − ½·g·h under the gravity, substep and integrator of the moment (writeVelocity), so a
-   * change of any of them shifts the stored velocity of every movable particle and rigid row by the difference of
-   * that term: without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once gravity was
-   * switched off. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
+   * A stored velocity is v − ½·g·h under the gravity, reference substep and integrator of the moment
+   * (verletReferenceHalf), so a change of any of them shifts the stored velocity of every movable row by the
+   * difference of that term (its own, for particles and rigid rows): without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once
+   * gravity was switched off. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
    */
   private keepingVelocities(change: () => void): void {
-    const rows = this.ctx.particleRows;
-    const { gravity: g0 } = this.settings;
-    const [h0, r0] = [this.verletHalfStep(), rigidHalfSubstep(this.settings, rows)];
+    const s = this.settings;
+    const { gravity: g0 } = s;
+    const [p0, r0] = [verletReferenceHalf(s, false), verletReferenceHalf(s, true)];
     change();
-    const { gravity: g1 } = this.settings;
-    const [h1, r1] = [this.verletHalfStep(), rigidHalfSubstep(this.settings, rows)];
-    shiftVerletVelocities(this.particles, g0.x * h0 - g1.x * h1, g0.y * h0 - g1.y * h1, g0.x * r0 - g1.x * r1, g0.y * r0 - g1.y * r1);
+    const { gravity: g1 } = s;
+    const [p1, r1] = [verletReferenceHalf(s, false), verletReferenceHalf(s, true)];
+    shiftVerletVelocities(this.particles, g0.x * p0 - g1.x * p1, g0.y * p0 - g1.y * p1, g0.x * r0 - g1.x * r1, g0.y * r0 - g1.y * r1);
   }
 
   // ---- constraints -------------------------------------------------------------------------------------------
@@ -690,7 +672,7 @@ export class World {
     this.ctx.rigidShapes.set(handleSlot(body), i, plan.source, plan.type);
     this.writeCollider(handleSlot(body), plan.collider);
     if (plan.type !== BodyType.Static) {
-      api.writeRowVelocity(this.ctx, i, plan.vx, plan.vy);
+      this.writeVelocity(i, plan.vx, plan.vy);
       this.particles.omega[i] = plan.w;
     }
     return body;

@@ -30,7 +30,7 @@ import { detectCollisions } from './collide.js';
 import { keepRowsFinite } from './guard.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
-import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount } from '../settings.js';
+import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount, verletReferenceHalf } from '../settings.js';
 import { integrateKinematic, integrateRotation, resyncRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
 import { applySpringForces, hasSprings, solveJoints } from '../rigid/joints.js';
 import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
@@ -46,6 +46,13 @@ export function step(ctx: StepContext, dt: number): void {
     return;
   }
   const t0 = ctx.measureTimings ? performance.now() : 0;
+  const n = substepCount(ctx.settings, ctx.particleRows);
+  const h = dt / n;
+  // Between steps every movable row's stored velocity is v − ½·g·h for its reference substep (verletReferenceHalf); a
+  // step of another substep (variableStep, World.step(dt), rigid bodies among moving particles under 'auto') holds it
+  // for its own meanwhile, so a thrown particle or body keeps to its parabola through any of them. Detection and the
+  // sleep test read the step's own (the mean over its last substep).
+  const shifted = shiftVerletOffsets(ctx, h, 1);
   ctx.pinMoved = false;
   recordStartPositions(ctx);
   detectCollisions(ctx, dt);
@@ -53,18 +60,10 @@ export function step(ctx: StepContext, dt: number): void {
   // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
   if (ctx.kernel) ctx.kernel.rigidLanes = false;
   const t1 = ctx.measureTimings ? performance.now() : 0;
-  const n = substepCount(ctx.settings, ctx.particleRows);
-  const h = dt / n;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);
   if (ctx.constraints.grabs.count > 0) beginGrabStep(ctx.constraints.grabs, dt);
-  // Between steps a particle's (and a rigid row's) stored velocity is v − ½·g·h for the timestep's substeps; a step of another length
-  // (variableStep, World.step(dt)) holds it for its own substeps meanwhile, so a thrown particle keeps to its parabola
-  // through steps of any lengths.
-  const timestepSubstep = ctx.settings.timestep / n;
-  if (h !== timestepSubstep) shiftVerletOffsets(ctx, timestepSubstep, h);
   for (let s = 0; s < n; s++) substep(ctx, h);
-  if (h !== timestepSubstep) shiftVerletOffsets(ctx, h, timestepSubstep);
   if (ctx.kernel?.rigidLanes) ctx.kernel.endRigid(ctx.rigidContacts);
   if (ctx.measureTimings) {
     ctx.timings.detect = t1 - t0;
@@ -78,6 +77,7 @@ export function step(ctx: StepContext, dt: number): void {
   breakLinks(ctx);
   if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
   updateSleep(ctx, dt);
+  if (shifted) shiftVerletOffsets(ctx, h, -1);
   clearForces(ctx);
   advanceClock(ctx, dt);
 }
@@ -132,11 +132,16 @@ export function substep(ctx: StepContext, h: number): void {
   }
 }
 
-/** Position Verlet's stored v − ½·g·h made for substeps of length `to` instead of `from`. */
-function shiftVerletOffsets(ctx: StepContext, from: number, to: number): void {
-  const { gravity, integrator } = ctx.settings;
-  const d = verletHalfSubstep(integrator, from) - verletHalfSubstep(integrator, to);
-  if (d !== 0) shiftVerletVelocities(ctx.particles, gravity.x * d, gravity.y * d, gravity.x * d, gravity.y * d);
+/** The stored v − ½·g·h made for substeps of length h instead of the reference ones (sign 1), or back (−1); false when both are h. */
+function shiftVerletOffsets(ctx: StepContext, h: number, sign: 1 | -1): boolean {
+  const s = ctx.settings;
+  const half = verletHalfSubstep(s.integrator, h);
+  // Only kinds of rows the world has (a world of rigid bodies alone steps at its rigid rows' reference: no pass).
+  const dp = ctx.particleRows > 0 ? sign * (verletReferenceHalf(s, false) - half) : 0;
+  const dr = ctx.rigidCount > 0 ? sign * (verletReferenceHalf(s, true) - half) : 0;
+  if (dp === 0 && dr === 0) return false;
+  shiftVerletVelocities(ctx.particles, s.gravity.x * dp, s.gravity.y * dp, s.gravity.x * dr, s.gravity.y * dr);
+  return true;
 }
 
 /** The kernel's Verlet step computes the accelerations itself (gravity and forces) when no springs add to them. */

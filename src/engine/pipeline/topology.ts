@@ -6,8 +6,6 @@ import { grown } from '../table.js';
 import { ParticleFlag } from '../particles.js';
 import { ColliderKind } from './colliders.js';
 import { BodyType } from '../rigid/shapes.js';
-import { rigidHalfSubstep } from '../settings.js';
-import { shiftVerletVelocities } from '../integrate.js';
 
 /**
  * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers floating,
@@ -35,12 +33,8 @@ export function ensureTopology(ctx: StepContext): void {
   if (ctx.topologyDirty) rebuildTopology(ctx);
 }
 
-/**
- * Particle → body map, cross-body constraint links and free particles, for sleeping (after any change). `restoring`:
- * the rows come from a snapshot, whose rigid velocities already hold the term of the count found here.
- */
-export function rebuildTopology(ctx: StepContext, restoring = false): void {
-  const rowsBefore = ctx.particleRows;
+/** Particle → body map, cross-body constraint links and free particles, for sleeping (after any change). */
+export function rebuildTopology(ctx: StepContext): void {
   ctx.kernel?.topologyChanged();
   if (ctx.collidersDirty) rebuildColliders(ctx);
   const { ids, particles: members } = ctx.bodies;
@@ -97,9 +91,6 @@ export function rebuildTopology(ctx: StepContext, restoring = false): void {
   // Less the dynamic rigid bodies' rows (listRigidRows above lists them with the kinematic ones).
   for (let k = 0; k < ctx.rigidCount; k++) if (p.invMass[ctx.rigidRows[k]] > 0) movable--;
   ctx.particleRows = movable;
-  // Under 'auto' the rigid rows' substep follows whether particles move; their stored v − ½·g·h follows it.
-  const shift = restoring ? 0 : rigidHalfSubstep(ctx.settings, rowsBefore) - rigidHalfSubstep(ctx.settings, movable);
-  if (shift !== 0) shiftVerletVelocities(p, 0, 0, ctx.settings.gravity.x * shift, ctx.settings.gravity.y * shift);
   let awake = 0;
   for (let b = 0; b < high; b++) if (ids.alive[b] && !sleep.asleep[b]) awake++;
   sleep.awakeCount = awake;

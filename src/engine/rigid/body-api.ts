@@ -6,7 +6,8 @@ import { knownNames, mass as massOf, MIN_INERTIA, objectOf, positive } from '../
 import { circleShape, compoundShape, polygonShape, withDensity } from './outline.js';
 import type { StepContext } from '../pipeline/context.js';
 import { ParticleFlag } from '../particles.js';
-import { rigidHalfSubstep } from '../settings.js';
+import { substepCount, verletReferenceHalf } from '../settings.js';
+import { verletHalfSubstep } from '../integrate.js';
 import { topologyChanged } from '../pipeline/topology.js';
 import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushedSpeed, pushSpeed, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
@@ -84,9 +85,16 @@ function wakeNear(ctx: StepContext, slot: number): void {
   }
 }
 
+/**
+ * The velocity a rigid body's row holds: the mean over the last substep (0 at rest; in free flight g·h/2 behind g·t).
+ * Stored for the reference substep (verletReferenceHalf), it is read for the substep the world takes.
+ */
 export function bodyVelocity(ctx: StepContext, body: Handle): Vec2 {
   const { i } = rigidOf(ctx, body);
-  return { x: ctx.particles.vx[i], y: ctx.particles.vy[i] };
+  const p = ctx.particles;
+  const s = ctx.settings;
+  const d = p.invMass[i] === 0 ? 0 : verletReferenceHalf(s, true) - verletHalfSubstep(s.integrator, s.timestep / substepCount(s, ctx.particleRows));
+  return { x: p.vx[i] + s.gravity.x * d, y: p.vy[i] + s.gravity.y * d };
 }
 
 export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: number): void {
@@ -97,24 +105,25 @@ export function setBodyVelocity(ctx: StepContext, body: Handle, vx: number, vy: 
 }
 
 /**
- * Stores a rigid row's velocity as position Verlet's mean over the substep to come, v − ½·g·h (h the substep the
- * world takes: rigidHalfSubstep), as particles store theirs, so that a thrown body follows x0 + v0·t + ½·g·t²
- * exactly. A row that gravity does not move (static, kinematic, asleep: inverse mass 0) stores v itself.
+ * Stores a row's velocity (a particle's or a rigid body's) as position Verlet's mean over the substep to come,
+ * v − ½·g·h for its reference substep (verletReferenceHalf), so that a thrown body follows x0 + v0·t + ½·g·t²
+ * exactly. A row that gravity does not move (static, kinematic, pinned, asleep: inverse mass 0) stores v itself.
  */
 export function writeRowVelocity(ctx: StepContext, i: number, vx: number, vy: number): void {
-  const half = rowHalfSubstep(ctx, i);
+  const half = rowHalf(ctx, i);
   ctx.particles.vx[i] = vx - ctx.settings.gravity.x * half;
   ctx.particles.vy[i] = vy - ctx.settings.gravity.y * half;
 }
 
-/** A rigid row's velocity as writeRowVelocity was given it. */
+/** A row's velocity as writeRowVelocity was given it. */
 function rowVelocity(ctx: StepContext, i: number): Vec2 {
-  const half = rowHalfSubstep(ctx, i);
+  const half = rowHalf(ctx, i);
   return { x: ctx.particles.vx[i] + ctx.settings.gravity.x * half, y: ctx.particles.vy[i] + ctx.settings.gravity.y * half };
 }
 
-function rowHalfSubstep(ctx: StepContext, i: number): number {
-  return ctx.particles.invMass[i] === 0 ? 0 : rigidHalfSubstep(ctx.settings, ctx.particleRows);
+function rowHalf(ctx: StepContext, i: number): number {
+  const p = ctx.particles;
+  return p.invMass[i] === 0 ? 0 : verletReferenceHalf(ctx.settings, (p.flags[i] & ParticleFlag.Rigid) !== 0);
 }
 
 export function setBodyAngularVelocity(ctx: StepContext, body: Handle, w: number): void {
