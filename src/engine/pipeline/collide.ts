@@ -37,7 +37,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   if (bounds && ctx.rigidCount > 0) boundsContacts(bounds, shapes, c, ctx.particles, ctx.motion, ctx.pairs, slop, ctx.settings.boundsFriction, ctx.rigidContacts);
   // A sleeping body about to be hit wakes before the solve, not after it (it would meet the impact as static).
   ctx.sleep.wakeTouched(ctx.contacts, ctx.rigidContacts, ctx.bodyParticlesOf, ctx.particles);
-  ctx.rigidAnchors.restore(ctx.rigidContacts, slop);
+  ctx.rigidAnchors.restore(ctx.rigidContacts, slop, ctx.particles, dt);
   ctx.anchors.restore(ctx.contacts);
   recordApproachSpeeds(ctx.contacts, ctx.particles);
 }

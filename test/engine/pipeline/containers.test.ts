@@ -31,15 +31,24 @@ describe('pipeline: containers', () => {
     for (let k = 0; k < 900; k++) world.step();
     const { x, y } = world.particles;
     const centres = balls.map((h) => world.bodyParticleIndices(h)[0]);
-    let deepest = 0;
+    const overlaps: number[] = [];
     for (let a = 0; a < centres.length; a++) {
       for (let b = a + 1; b < centres.length; b++) {
         const d = Math.hypot(x[centres[a]] - x[centres[b]], y[centres[a]] - y[centres[b]]);
-        deepest = Math.max(deepest, 1 - d);
+        if (d < 1) overlaps.push(1 - d);
       }
     }
-    console.log(`2000 circles, 15 s: escaped ${escaped(world, balls)}, deepest overlap ${(deepest * 100).toFixed(2)}% of a diameter`);
+    overlaps.sort((p, q) => q - p);
+    const deepest = overlaps[0];
+    const deepest50 = overlaps.slice(0, 50).reduce((s, v) => s + v, 0) / 50;
+    const mean = overlaps.reduce((s, v) => s + v, 0) / overlaps.length;
+    console.log(`2000 circles, 15 s: escaped ${escaped(world, balls)}, overlaps (% of a diameter): deepest ${(deepest * 100).toFixed(2)}, the 50 deepest ${(deepest50 * 100).toFixed(2)}, all ${(mean * 100).toFixed(3)}`);
     expect(escaped(world, balls)).to.equal(0);
-    expect(deepest).to.be.below(0.04);
+    // The deepest single overlap is a tail of the pile's chance arrangement: over 70 piles, both kernels, from gravities
+    // 10⁻⁹ apart, it ranged 2.0–4.6% (the 50 deepest 1.4–2.2%, all of them 0.29–0.37%). A single pile's deepest point
+    // against 4% failed on one pile in five; the 50 deepest and the mean tell how deep a pile sits.
+    expect(deepest).to.be.below(0.06);
+    expect(deepest50).to.be.below(0.025);
+    expect(mean).to.be.below(0.005);
   });
 });
