@@ -369,8 +369,9 @@ export class World {
   /**
    * A stored velocity is v − ½·g·h under the gravity, reference substep and integrator of the moment
    * (verletReferenceHalf), so a change of any of them shifts the stored velocity of every movable row by the
-   * difference of that term (its own, for particles and rigid rows): without it a particle at rest in the air drifted at ½·g·h (0.008 units/s under 9.81) once
-   * gravity was switched off. A sleeping body's rows are at rest (invMass 0 while parked: they wake at rest).
+   * difference of that term (its own, for particles and rigid rows): without it a particle at rest in the air drifted
+   * at ½·g·h (0.008 units/s under 9.81) once gravity was switched off. A sleeping body's rows are at rest (invMass 0
+   * while parked: they wake at rest).
    */
   private keepingVelocities(change: () => void): void {
     const s = this.settings;

@@ -184,20 +184,6 @@ function chainOf(key: number): number {
 }
 
 /**
- * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
- * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
- * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
- * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
- *
- * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
- * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
- * expects the next one; only a point the cursor misses builds the index by key (once a step, and only then). The
- * index chains the held entries by the key's high bits, body A's slot (chainOf): building it is one pass of two
- * stores an entry, where a hash table was a clear of twice the list's size plus a hashed insert per entry (S2 and S3
- * build it every step: a new contact or a pair met in another order misses the cursor), and a lookup walks the few
- * points of one body. Equal keys share a chain, so it finds what a hash table by key finds: the first held entry.
- */
-/**
  * Turns the lever (xs[i], ys[i]) by `turn` radians: by the series below 0.1 rad (within 3·10⁻¹³ there: the first
  * term left out), cheaper than a builtin cos and sin for each contact of a pile.
  */
@@ -213,6 +199,20 @@ function turnLever(xs: Float64Array, ys: Float64Array, i: number, turn: number):
   ys[i] = s * x + c * y;
 }
 
+/**
+ * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
+ * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
+ * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
+ * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
+ *
+ * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
+ * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
+ * expects the next one; only a point the cursor misses builds the index by key (once a step, and only then). The
+ * index chains the held entries by the key's high bits, body A's slot (chainOf): building it is one pass of two
+ * stores an entry, where a hash table was a clear of twice the list's size plus a hashed insert per entry (S2 and S3
+ * build it every step: a new contact or a pair met in another order misses the cursor), and a lookup walks the few
+ * points of one body. Equal keys share a chain, so it finds what a hash table by key finds: the first held entry.
+ */
 export class RigidAnchorCache {
   /** The chains hold this list (false: not built since the last store). */
   private tableBuilt = false;
