@@ -261,7 +261,7 @@ export class World {
     p.alive[slot] = 1;
     p.rc[slot] = 1; // a particle's frame is the world's (angle 0)
     p.flags[slot] = mass === Infinity ? ParticleFlag.Static : 0;
-    this.writeVelocity(slot, vx, vy);
+    api.writeRowVelocity(this.ctx, slot, vx, vy);
     topologyChanged(this.ctx);
     return handle;
   }
@@ -329,7 +329,7 @@ export class World {
     const i = this.particleIndex(handle);
     const [sx, sy] = [speed('vx', vx), speed('vy', vy)];
     wakeParticle(this.ctx, i);
-    this.writeVelocity(i, sx, sy);
+    api.writeRowVelocity(this.ctx, i, sx, sy);
   }
 
   /** Adds a force for the next step (cleared after it). */
@@ -359,11 +359,6 @@ export class World {
     const p = this.particles;
     const w = p.flags[i] & ParticleFlag.Pinned ? this.ctx.constraints.pinnedInvMass(i) : this.ctx.sleep.awakeInvMass(i, p);
     return w === 0 ? Infinity : 1 / w;
-  }
-
-  /** A particle's or rigid row's velocity, stored as position Verlet's v − ½·g·h (api.writeRowVelocity). */
-  private writeVelocity(i: number, vx: number, vy: number): void {
-    api.writeRowVelocity(this.ctx, i, vx, vy);
   }
 
   /**
@@ -673,7 +668,7 @@ export class World {
     this.ctx.rigidShapes.set(handleSlot(body), i, plan.source, plan.type);
     this.writeCollider(handleSlot(body), plan.collider);
     if (plan.type !== BodyType.Static) {
-      this.writeVelocity(i, plan.vx, plan.vy);
+      api.writeRowVelocity(this.ctx, i, plan.vx, plan.vy);
       this.particles.omega[i] = plan.w;
     }
     return body;

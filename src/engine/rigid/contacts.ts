@@ -1,5 +1,5 @@
 import { Table } from '../table.js';
-import type { BodyRows } from './rows.js';
+import { turnVector, vectorTurn, type BodyRows } from './rows.js';
 
 /**
  * Contact points where at least one side is a rigid body, solved in the XPBD substep loop (Müller et al. 2020, §3.5).
@@ -184,22 +184,6 @@ function chainOf(key: number): number {
 }
 
 /**
- * Turns the lever (xs[i], ys[i]) by `turn` radians: by the series below 0.1 rad (within 3·10⁻¹³ there: the first
- * term left out), cheaper than a builtin cos and sin for each contact of a pile.
- */
-function turnLever(xs: Float64Array, ys: Float64Array, i: number, turn: number): void {
-  if (turn === 0) return;
-  const t2 = turn * turn;
-  const small = t2 < 0.01;
-  const c = small ? 1 - (t2 / 2) * (1 - (t2 / 12) * (1 - t2 / 30)) : Math.cos(turn);
-  const s = small ? turn * (1 - (t2 / 6) * (1 - (t2 / 20) * (1 - t2 / 42))) : Math.sin(turn);
-  const x = xs[i];
-  const y = ys[i];
-  xs[i] = c * x - s * y;
-  ys[i] = s * x + c * y;
-}
-
-/**
  * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
  * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
  * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
@@ -373,8 +357,14 @@ export class RigidAnchorCache {
       // it turned ahead of it as the body rolled, and static friction held that point instead, so that the body ended
       // a step rolling at v = ω·r·cos(turn) (a disc spun onto a floor 0.3% fast at r 0.5, 1.9% slow at r 0.25 and
       // 12 rad/s). The point at the contact half-way through the step is the one half the step's turn behind it.
-      if (radA[i] > 0) turnLever(rAx, rAy, i, -0.5 * omega[A[i]] * dt);
-      if (radB[i] > 0 && B[i] >= 0) turnLever(rBx, rBy, i, -0.5 * omega[B[i]] * dt);
+      if (radA[i] > 0) {
+        vectorTurn[0] = -0.5 * omega[A[i]] * dt;
+        turnVector(rAx, rAy, i);
+      }
+      if (radB[i] > 0 && B[i] >= 0) {
+        vectorTurn[0] = -0.5 * omega[B[i]] * dt;
+        turnVector(rBx, rBy, i);
+      }
     }
   }
 

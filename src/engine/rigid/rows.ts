@@ -50,18 +50,39 @@ export const SERIES_TURN = 0.1;
 function rotate(b: BodyRows, i: number): void {
   const d = turnTo[0];
   const to = turnTo[1];
-  const c = b.rc[i];
-  const s = b.rs[i];
   if (d < SERIES_TURN && d > -SERIES_TURN) {
-    const d2 = d * d;
-    const cd = 1 + d2 * (-1 / 2 + d2 * (1 / 24 + d2 * (-1 / 720 + d2 * (1 / 40320))));
-    const sd = d * (1 + d2 * (-1 / 6 + d2 * (1 / 120 + d2 * (-1 / 5040 + d2 * (1 / 362880)))));
-    b.rc[i] = c * cd - s * sd;
-    b.rs[i] = s * cd + c * sd;
-  } else {
+    vectorTurn[0] = d;
+    turnVector(b.rc, b.rs, i);
+  }
+  else {
     b.rc[i] = Math.cos(to);
     b.rs[i] = Math.sin(to);
   }
+}
+
+/** The turn turnVector() applies, in radians (a typed array: V8 boxes a double passed to a call it does not inline). */
+export const vectorTurn = new Float64Array(1);
+
+/**
+ * Turns the vector (xs[i], ys[i]) by vectorTurn[0] radians: the series of rotate() below SERIES_TURN (exact to
+ * rounding there), Math.cos and Math.sin above it.
+ */
+export function turnVector(xs: Float64Array, ys: Float64Array, i: number): void {
+  const d = vectorTurn[0];
+  const x = xs[i];
+  const y = ys[i];
+  let cd: number;
+  let sd: number;
+  if (d < SERIES_TURN && d > -SERIES_TURN) {
+    const d2 = d * d;
+    cd = 1 + d2 * (-1 / 2 + d2 * (1 / 24 + d2 * (-1 / 720 + d2 * (1 / 40320))));
+    sd = d * (1 + d2 * (-1 / 6 + d2 * (1 / 120 + d2 * (-1 / 5040 + d2 * (1 / 362880)))));
+  } else {
+    cd = Math.cos(d);
+    sd = Math.sin(d);
+  }
+  xs[i] = x * cd - y * sd;
+  ys[i] = y * cd + x * sd;
 }
 
 /**

@@ -161,7 +161,7 @@ describe('rigid bodies: friction anchors from step to step', () => {
       const want = oracle(old, rows, fresh, reach, dt);
       cache.restore(fresh, reach, rows, dt);
       for (let i = 0; i < fresh.count; i++) {
-        // The cache turns a round side's lever by a series in small turns (within 3·10⁻¹³ of cos and sin).
+        // The cache turns a round side's lever by the rotation series of rows.ts below 0.1 rad (exact to rounding).
         const got = [fresh.rAx[i], fresh.rAy[i], fresh.rBx[i], fresh.rBy[i]];
         const wanted = [...want.rA[i], ...want.rB[i]];
         got.forEach((v, q) => expect(v, `trial ${trial}, point ${i}`).to.be.closeTo(wanted[q], 1e-12));
