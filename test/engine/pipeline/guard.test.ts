@@ -116,7 +116,7 @@ describe('the step guard: no row leaves a step with a value that is not finite',
       for (const h of bodies) expect(Number.isFinite(world.bodyPose(h).x), `scene ${scene} (${kernel})`).to.equal(true);
       if (world.diagnostics().rowsRepaired > 0) repaired++;
     }
-    // The tangles are real: the guard had rows to put back in some of them (4; 15 before the tree solve stepped aside
+    // The tangles are real: the guard had rows to put back in some of them (6; 15 before the tree solve stepped aside
     // from lopsided joints, rigid/joint-tree.ts LOPSIDED).
     console.log(`      the guard put rows back in ${repaired} of 60 tangles`);
     expect(repaired).to.be.above(2);
