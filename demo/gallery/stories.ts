@@ -35,6 +35,37 @@ function scene(attrs: Record<string, string | number | true>, children: Node[]):
   return n('physics-scene', { width: 16, height: 9, gravity: '0 9.81', ...attrs }, children);
 }
 
+/**
+ * `count` planks of length 1 hinged end to end from `from` to `to` (closer than `count`), sagging on a circular arc,
+ * the end planks hinged to the world: a loop through the world.
+ */
+function bridge(count: number, from: { x: number; y: number }, to: { x: number; y: number }): Node[] {
+  const half = (to.x - from.x) / 2;
+  // The circle's radius r whose `count` chords of length 1 span the gap: count·asin(1/2r) is the half angle φ, r·sin φ = half.
+  let lo = 0.5;
+  let hi = 1e6;
+  for (let k = 0; k < 200; k++) {
+    const r = (lo + hi) / 2;
+    const phi = count * Math.asin(1 / (2 * r));
+    if (phi > Math.PI / 2 || r * Math.sin(phi) < half) lo = r;
+    else hi = r;
+  }
+  const phi = count * Math.asin(1 / (2 * lo));
+  const points = Array.from({ length: count + 1 }, (_, k) => {
+    const t = -phi + (2 * phi * k) / count;
+    return { x: from.x + half + lo * Math.sin(t), y: from.y + lo * (Math.cos(t) - Math.cos(phi)) };
+  });
+  const nodes: Node[] = [];
+  for (let k = 0; k < count; k++) {
+    const [p, q] = [points[k], points[k + 1]];
+    nodes.push(n('physics-box', { id: `plank${k}`, x: (p.x + q.x) / 2, y: (p.y + q.y) / 2, width: 1, height: 0.18, angle: (Math.atan2(q.y - p.y, q.x - p.x) * 180) / Math.PI, fill: k % 2 ? '#c9a66b' : '#b8935a', stroke: '#8a6d3b' }));
+  }
+  nodes.push(n('physics-joint', { type: 'revolute', a: 'plank0', x: points[0].x, y: points[0].y }));
+  for (let k = 1; k < count; k++) nodes.push(n('physics-joint', { type: 'revolute', a: `plank${k}`, b: `plank${k - 1}`, x: points[k].x, y: points[k].y }));
+  nodes.push(n('physics-joint', { type: 'revolute', a: `plank${count - 1}`, x: points[count].x, y: points[count].y }));
+  return nodes;
+}
+
 // ---- one story per element --------------------------------------------------------------------------------------
 
 const elementStories: Story[] = [
@@ -206,6 +237,21 @@ const rigidStories: Story[] = [
       ...[0, 1, 2, 3].map((k) => n('physics-box', { id: `bar${k}`, x: 8.7 + 1.4 * k, y: 1.5, width: 1.4, height: 0.2, fill: k % 2 ? '#3d7dd8' : '#f2c14e', stroke: '#4a4f57' })),
       n('physics-joint', { type: 'revolute', a: 'bar0', x: 8, y: 1.5 }),
       ...[1, 2, 3].map((k) => n('physics-joint', { type: 'revolute', a: `bar${k}`, b: `bar${k - 1}`, x: 8 + 1.4 * k, y: 1.5 })),
+    ]),
+  },
+  {
+    id: 'plank-bridge',
+    group: 'Rigid bodies',
+    title: 'A plank bridge',
+    description: 'Thirteen planks hinged end to end between two posts, their ends hinged to the world: the last hinge closes a loop through the world, which the solver takes with the hinge tree in one solve, so the bridge holds its hinges while crates, one of them as heavy as the whole bridge, land on it.',
+    root: scene({}, [
+      floor(),
+      n('physics-box', { x: 1.5, y: 6.2, width: 1, height: 3.6, static: true, fill: '#596273' }),
+      n('physics-box', { x: 14.5, y: 6.2, width: 1, height: 3.6, static: true, fill: '#596273' }),
+      ...bridge(13, { x: 2, y: 4.4 }, { x: 14, y: 4.4 }),
+      n('physics-box', { x: 6.2, y: 0, width: 0.8, height: 0.8, fill: '#f2c14e', stroke: '#a5812a' }),
+      n('physics-box', { x: 8.3, y: -2, width: 1.1, height: 1.1, density: 1.8, fill: '#2b2f36', stroke: '#000000' }),
+      n('physics-circle', { x: 10.5, y: -1, radius: 0.45, fill: '#c0392b', stroke: '#7a241b' }),
     ]),
   },
   {
