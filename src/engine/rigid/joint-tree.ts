@@ -168,7 +168,7 @@ export function solveJointTrees(j: Joints, r: BodyRows, h: number): boolean {
  * are measured at the current levers L, so a joint's system D = α̃ + L·Q is not symmetric: its skew part grows with
  * the turn since the substep's start. Near a fold (a chain pulled straight between its anchor and a heavy load hinged
  * to it) D's symmetric part, the stiffness along the chain, shrinks to nearly nothing; the skew part then made D
- * indefinite and the solve threw the links about without bound (a load 300 or 900 times a plank's mass on a chain of
+ * indefinite and the solve threw the links about without bound (a load 100 to 900 times a plank's mass on a chain of
  * 10–30 planks blew up in 17 of 24 such scenes). Where a joint's point block has a symmetric part whose least
  * eigenvalue is not LOPSIDED times its skew part, solveForest stops and the substep is solved again along the current
  * levers (symmetric: a projection, which loses a little energy instead; 0 of the 24 blow up). Chains of equal links
