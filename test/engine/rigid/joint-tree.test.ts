@@ -128,6 +128,48 @@ function sagging(planks: number): Vec2[] {
   });
 }
 
+/** Bars hinged end to end along `points`, the first to the world at points[0] and, when `closed`, the last at the end. */
+interface BarChain {
+  bodies: Handle[];
+  points: Vec2[];
+  /** Each bar's half length (its hinges at ∓half along its x axis). */
+  halves: number[];
+  closed: boolean;
+}
+
+/**
+ * A bar from each point to the next, `halfThickness` thick each side: length 1 (planks) or, without `length`, the
+ * distance between its points; density 1 or `density()` bar by bar.
+ */
+function barChain(world: World, points: Vec2[], o: { closed: boolean; halfThickness: number; length?: number; density?: () => number; collide?: boolean }): BarChain {
+  const bodies: Handle[] = [];
+  const halves: number[] = [];
+  for (let k = 0; k + 1 < points.length; k++) {
+    const [p, q] = [points[k], points[k + 1]];
+    halves.push((o.length ?? Math.hypot(q.x - p.x, q.y - p.y)) / 2);
+    bodies.push(world.addRigidBody({
+      points: box(halves[k], o.halfThickness), x: (p.x + q.x) / 2, y: (p.y + q.y) / 2, angle: Math.atan2(q.y - p.y, q.x - p.x),
+      ...(o.density ? { density: o.density() } : {}), ...(o.collide === false ? { collide: false } : {}),
+    }));
+    world.addJoint({ type: 'revolute', a: bodies[k], b: k === 0 ? null : bodies[k - 1], anchor: p });
+  }
+  if (o.closed) world.addJoint({ type: 'revolute', a: bodies[bodies.length - 1], b: null, anchor: points[points.length - 1] });
+  return { bodies, points, halves, closed: o.closed };
+}
+
+/** The widest of a chain's hinges now: between its bars, at its first anchor and (closed) its last. */
+function widestHinge(world: World, chain: BarChain): number {
+  const { bodies, points, halves } = chain;
+  const n = bodies.length;
+  let gap = 0;
+  for (let k = 0; k <= (chain.closed ? n : n - 1); k++) {
+    const a = k === 0 ? points[0] : worldPoint(world, bodies[k - 1], { x: halves[k - 1], y: 0 });
+    const b = k === n ? points[n] : worldPoint(world, bodies[k], { x: -halves[k], y: 0 });
+    gap = Math.max(gap, Math.hypot(a.x - b.x, a.y - b.y));
+  }
+  return gap;
+}
+
 describe('rigid joints: revolute and weld trees solved at once', () => {
   it('60 random trees (masses 10⁴ apart, anchors off the centres, soft joints) stay finite, joined and without energy from nowhere, in both kernels', () => {
     expect(randomTrees(60, 4242, false)).to.be.above(300);
@@ -147,12 +189,8 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
             const label = `${planks} planks, a load ${times}× the chain, ${arc ? 'on an arc' : 'level'}, ${collide ? '' : 'not '}colliding`;
             const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
             const points = arc ? sagging(planks) : Array.from({ length: planks + 1 }, (_, k): Vec2 => ({ x: k, y: 0 }));
-            const bodies: Handle[] = [];
-            for (let k = 0; k < planks; k++) {
-              const [p, q] = [points[k], points[k + 1]];
-              bodies.push(world.addRigidBody({ points: box(0.5, 0.0625), x: (p.x + q.x) / 2, y: (p.y + q.y) / 2, angle: Math.atan2(q.y - p.y, q.x - p.x), collide }));
-              world.addJoint({ type: 'revolute', a: bodies[k], b: k === 0 ? null : bodies[k - 1], anchor: p });
-            }
+            const chainOfPlanks = barChain(world, points, { closed: false, halfThickness: 0.0625, length: 1, collide });
+            const bodies = chainOfPlanks.bodies;
             const chain = bodies.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
             const middle = points[planks >> 1];
             const load = world.addRigidBody({ points: box(0.5, 0.5), x: middle.x, y: middle.y + 1.5, density: times * chain, collide: false });
@@ -169,12 +207,7 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
               rise = Math.max(rise, (rigidEnergy(world, all, 10) - start) / scale);
               for (const b of bodies) speed = Math.max(speed, Math.hypot(world.bodyVelocity(b).x, world.bodyVelocity(b).y));
             }
-            let gap = 0;
-            for (let k = 1; k < planks; k++) {
-              const a = worldPoint(world, bodies[k - 1], { x: 0.5, y: 0 });
-              const b = worldPoint(world, bodies[k], { x: -0.5, y: 0 });
-              gap = Math.max(gap, Math.hypot(a.x - b.x, a.y - b.y));
-            }
+            const gap = widestHinge(world, chainOfPlanks);
             expect(speed, `${label}: fastest plank`).to.be.below(150);
             expect(rise, `${label}: energy gained over the load's drop`).to.be.below(0.25);
             expect(gap, `${label}: widest hinge after 10 s`).to.be.below(0.01);
@@ -194,13 +227,8 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
     for (const times of [0, 1, 3, 10, 30] as const) {
       const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
       const points = sagging(30);
-      const planks: Handle[] = [];
-      for (let k = 0; k < 30; k++) {
-        const [p, q] = [points[k], points[k + 1]];
-        planks.push(world.addRigidBody({ points: box(0.5, 0.0625), x: (p.x + q.x) / 2, y: (p.y + q.y) / 2, angle: Math.atan2(q.y - p.y, q.x - p.x) }));
-        world.addJoint({ type: 'revolute', a: planks[k], b: k === 0 ? null : planks[k - 1], anchor: p });
-      }
-      world.addJoint({ type: 'revolute', a: planks[29], b: null, anchor: points[30] });
+      const bridge = barChain(world, points, { closed: true, halfThickness: 0.0625, length: 1 });
+      const planks = bridge.bodies;
       if (times > 0) {
         const mass = planks.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
         const load = world.addRigidBody({ points: box(0.5, 0.5), x: points[15].x, y: points[15].y + 1.5, density: times * mass, collide: false });
@@ -209,11 +237,7 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
       let gap = 0;
       for (let s = 1; s <= 600; s++) {
         world.step();
-        for (let k = 0; k <= 30; k++) {
-          const a = k === 0 ? points[0] : worldPoint(world, planks[k - 1], { x: 0.5, y: 0 });
-          const b = k === 30 ? points[30] : worldPoint(world, planks[k], { x: -0.5, y: 0 });
-          gap = Math.max(gap, Math.hypot(a.x - b.x, a.y - b.y));
-        }
+        gap = Math.max(gap, widestHinge(world, bridge));
       }
       console.log(`      load ${times}×: widest hinge ${gap.toExponential(1)}`);
       expect(gap, `load ${times}× the bridge: widest hinge`).to.be.below(limits[times]);
@@ -230,23 +254,15 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
     for (const kernel of ['js', 'wasm'] as const)
       for (const times of [1, 3, 10] as const) {
         const world = new World({ kernel, gravity: { x: 0, y: 10 }, sleeping: false });
-        const planks: Handle[] = [];
-        for (let k = 0; k < 30; k++) {
-          planks.push(world.addRigidBody({ points: box(0.5, 0.0625), x: k + 0.5, y: 0 }));
-          world.addJoint({ type: 'revolute', a: planks[k], b: k === 0 ? null : planks[k - 1], anchor: { x: k, y: 0 } });
-        }
-        world.addJoint({ type: 'revolute', a: planks[29], b: null, anchor: { x: 30, y: 0 } });
+        const bridge = barChain(world, Array.from({ length: 31 }, (_, k): Vec2 => ({ x: k, y: 0 })), { closed: true, halfThickness: 0.0625, length: 1 });
+        const planks = bridge.bodies;
         const mass = planks.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
         world.addRigidBody({ points: box(0.5, 0.5), x: 15, y: -3, density: times * mass });
         let gap = 0;
         let speed = 0;
         for (let s = 1; s <= 600; s++) {
           world.step();
-          for (let k = 0; k <= 30; k++) {
-            const a = k === 0 ? { x: 0, y: 0 } : worldPoint(world, planks[k - 1], { x: 0.5, y: 0 });
-            const b = k === 30 ? { x: 30, y: 0 } : worldPoint(world, planks[k], { x: -0.5, y: 0 });
-            gap = Math.max(gap, Math.hypot(a.x - b.x, a.y - b.y));
-          }
+          gap = Math.max(gap, widestHinge(world, bridge));
           for (const p of planks) speed = Math.max(speed, Math.hypot(world.bodyVelocity(p).x, world.bodyVelocity(p).y));
         }
         console.log(`      ${kernel}, box ${times}×: widest hinge ${gap.toFixed(3)}, fastest plank ${speed.toFixed(1)}`);
@@ -270,15 +286,8 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
       const points: Vec2[] = [{ x: 0, y: 0 }];
       for (let k = 1; k < links; k++) points.push({ x: points[k - 1].x + 0.5 + rnd() * 1.5, y: (rnd() * 2 - 0.5) * 1.5 });
       points.push({ x: points[links - 1].x + 0.5 + rnd() * 1.5, y: 0 });
-      const bodies: Handle[] = [];
-      const lengths: number[] = [];
-      for (let k = 0; k < links; k++) {
-        const [p, q] = [points[k], points[k + 1]];
-        lengths.push(Math.hypot(q.x - p.x, q.y - p.y));
-        bodies.push(world.addRigidBody({ points: box(lengths[k] / 2, 0.05), x: (p.x + q.x) / 2, y: (p.y + q.y) / 2, angle: Math.atan2(q.y - p.y, q.x - p.x), density: 10 ** (3 * rnd() - 1.5), collide: false }));
-        world.addJoint({ type: 'revolute', a: bodies[k], b: k === 0 ? null : bodies[k - 1], anchor: p });
-      }
-      world.addJoint({ type: 'revolute', a: bodies[links - 1], b: null, anchor: points[links] });
+      const loop = barChain(world, points, { closed: true, halfThickness: 0.05, density: () => 10 ** (3 * rnd() - 1.5), collide: false });
+      const bodies = loop.bodies;
       const start = rigidEnergy(world, bodies, 10);
       // The energy scale: every link dropped by the span's length.
       const scale = bodies.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0) * 10 * points[links].x;
@@ -286,11 +295,7 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
       let loopRise = 0;
       for (let s = 1; s <= 600; s++) {
         world.step();
-        for (let k = 0; k <= links; k++) {
-          const a = k === 0 ? points[0] : worldPoint(world, bodies[k - 1], { x: lengths[k - 1] / 2, y: 0 });
-          const b = k === links ? points[links] : worldPoint(world, bodies[k], { x: -lengths[k] / 2, y: 0 });
-          gap = Math.max(gap, Math.hypot(a.x - b.x, a.y - b.y));
-        }
+        gap = Math.max(gap, widestHinge(world, loop));
         if (s % 10 === 0) loopRise = Math.max(loopRise, (rigidEnergy(world, bodies, 10) - start) / scale);
       }
       expect(gap, `loop ${scene} (${links} links): widest hinge`).to.be.below(0.05);
