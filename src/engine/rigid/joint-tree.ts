@@ -33,8 +33,8 @@ let parentJoint = new Int32Array(16);
 let bodyF = new Float64Array(16 * 27);
 let startCos = new Float64Array(16);
 let startSin = new Float64Array(16);
-/** 1: the body's levers S are its current ones this substep (below a lopsided joint; see LOPSIDED). */
-let plainLevers = new Uint8Array(16);
+/** 1: the body's levers S are half-way between its start and current ones this substep (below a lopsided joint). */
+let halfwayLevers = new Uint8Array(16);
 
 // Per joint of the table: its local bodies (A, B).
 let jA = new Int32Array(16);
@@ -77,7 +77,7 @@ function ensure(rows: number, n: number): void {
     bodyF = new Float64Array(size * BF);
     startCos = new Float64Array(size);
     startSin = new Float64Array(size);
-    plainLevers = new Uint8Array(size);
+    halfwayLevers = new Uint8Array(size);
   }
   if (jA.length < n) {
     const size = Math.max(n, jA.length * 2);
@@ -152,15 +152,16 @@ export function solveJointTrees(j: Joints, r: BodyRows, h: number): boolean {
   if (m < 2 && closureCount === 0) return false;
   injected = -1;
   currentLevers = false;
-  plainLevers.fill(0, 0, nb);
+  halfwayLevers.fill(0, 0, nb);
   let solved = solveForest(j, r, h, m, nb);
-  // Lopsided joints (LOPSIDED): solved again with their subtrees' current levers, then, if some joint is still
-  // lopsided, with every body's. A forest with loops takes every body's at once: the closing rows act through the
-  // whole forest, and the mixed levers opened a sagging bridge's hinges under ten times its weight twice as wide.
-  const retries = closureCount > 0 ? 0 : PLAIN_RETRIES;
-  for (let retry = 0; !solved && lopsided && newlyPlain && retry < retries; retry++) {
-    // A joint's system D depends on its child's subtree alone: with every lever there current it is symmetric.
-    for (let k = 0; k < m; k++) if (plainLevers[orderParent[k]] === 1) plainLevers[orderChild[k]] = 1;
+  // Lopsided joints (LOPSIDED): solved again with their subtrees' levers half-way to now, then, if some joint is
+  // still lopsided, with every body's current levers. A forest with loops takes every body's current levers at once:
+  // the closing rows act through the whole forest, and mixed levers opened a sagging bridge's hinges under ten times
+  // its weight twice as wide.
+  const retries = closureCount > 0 ? 0 : HALFWAY_RETRIES;
+  for (let retry = 0; !solved && lopsided && newlyHalfway && retry < retries; retry++) {
+    // A joint's system D depends on its child's subtree alone.
+    for (let k = 0; k < m; k++) if (halfwayLevers[orderParent[k]] === 1) halfwayLevers[orderChild[k]] = 1;
     solved = solveForest(j, r, h, m, nb);
   }
   if (!solved && lopsided) {
@@ -219,23 +220,26 @@ function widestTreeGap(j: Joints, r: BodyRows, m: number): number {
  * to it) D's symmetric part, the stiffness along the chain, shrinks to nearly nothing; the skew part then made D
  * indefinite and the solve threw the links about without bound (a load 100 to 900 times a plank's mass on a chain of
  * 10–30 planks blew up in 17 of 24 such scenes). Where a joint's point block has a symmetric part whose least
- * eigenvalue is not LOPSIDED times its skew part, the substep is solved again with the current levers in that joint's
- * child subtree (D depends on that subtree alone, which makes it symmetric: a projection there, which loses a little
- * energy instead), up to PLAIN_RETRIES times as more joints turn lopsided, then with every body's current levers.
- * 0 of the 24 blow up. Chains of equal links whipping come down to 0.55 (40 links, unaffected) and 0.41 (50 links,
- * whose whipping tail then loses 12.7% of the drop energy in 10 s instead of 1.4%); the heavy loads' ratio falls
- * through 0.5 steps before it turns negative. Retried with every body's current levers at once, those loads gained up
- * to 21% of their drop's energy (7% with the subtrees); with only the joint's own two bodies', they blew up again.
+ * eigenvalue is not LOPSIDED times its skew part, the substep is solved again with levers half-way between the start
+ * and current ones in that joint's child subtree (D depends on that subtree alone; its skew part, which grows with the
+ * turn between S and L, about halves), up to HALFWAY_RETRIES times as more joints turn lopsided, then with every
+ * body's current levers (S = L: D symmetric, a projection, which loses a little energy instead). Chains of equal links
+ * whipping come down to 0.55 (40 links, unaffected) and 0.41 (50 links, whose whipping tail then loses 9.6% of the
+ * drop energy in 10 s instead of 1.4%); the heavy loads' ratio falls through 0.5 steps before it turns negative.
+ * Loads 50 to 150 times a chain of 20–30 planks (36 scenes, the chain level or tilted, planks 0.125 or 0.2 thick):
+ * 16 ran away with the subtrees' current levers, 2 with half-way ones (4 with a third or 0.58 of the way from the
+ * start, 7 with a quarter); with the joint's own two bodies' current levers the loads of 10–30 times blew up again,
+ * and with every body's at once they gained up to 21% of their drop's energy.
  */
 const LOPSIDED = 0.5;
-/** How many times a substep is solved again with more bodies' levers made current before all of them are. */
-const PLAIN_RETRIES = 3;
+/** How many times a substep is solved again with more bodies' levers half-way before every body's are current. */
+const HALFWAY_RETRIES = 3;
 /** solveForest's levers S are the current ones (the last retry after a lopsided joint). */
 let currentLevers = false;
 /** The last solveForest() found a lopsided joint. */
 let lopsided = false;
-/** The last solveForest() marked a body's levers plain that were not. */
-let newlyPlain = false;
+/** The last solveForest() marked a body's levers half-way that were not. */
+let newlyHalfway = false;
 
 /**
  * The forest buildForest() last built: the joint table it was built for (a weak reference: the arrays here are shared
@@ -616,19 +620,15 @@ function invertJoint(f: number, w: number): boolean {
 /** The numbers: up the forest, the roots, down, then the moves. */
 function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): boolean {
   lopsided = false;
-  newlyPlain = false;
-  // Bodies start at D = I, rhs = 0; cos and sin of their angles at the substep's start (now, for plain levers).
+  newlyHalfway = false;
+  // Bodies start at D = I, rhs = 0; cos and sin of their angles at the substep's start (half-way to now, for the
+  // bodies below a lopsided joint).
   for (let k = 1; k < nb; k++) {
     const o = k * BF;
     const row = bodyRow[k];
-    if (plainLevers[k] === 1) {
-      startCos[k] = r.rc[row];
-      startSin[k] = r.rs[row];
-    } else {
-      const t = r.pangle[row];
-      startCos[k] = Math.cos(t);
-      startSin[k] = Math.sin(t);
-    }
+    const t = halfwayLevers[k] === 1 ? 0.5 * (r.pangle[row] + r.angle[row]) : r.pangle[row];
+    startCos[k] = Math.cos(t);
+    startSin[k] = Math.sin(t);
     for (let q = 0; q < 9; q++) bodyF[o + q] = 0;
     bodyF[o] = bodyF[o + 4] = bodyF[o + 8] = 1;
     bodyF[o + 18] = bodyF[o + 19] = bodyF[o + 20] = 0;
@@ -729,8 +729,8 @@ function solveForest(j: Joints, r: BodyRows, h: number, m: number, nb: number): 
       const spread = Math.sqrt(0.25 * (dk[0] - dk[4]) * (dk[0] - dk[4]) + 0.25 * (dk[1] + dk[3]) * (dk[1] + dk[3]));
       if (!(mean - spread > LOPSIDED * 0.5 * Math.abs(dk[1] - dk[3]))) {
         lopsided = true;
-        if (plainLevers[c] === 0) newlyPlain = true;
-        plainLevers[c] = 1;
+        if (halfwayLevers[c] === 0) newlyHalfway = true;
+        halfwayLevers[c] = 1;
       }
     }
     if (!invertJoint(f, w)) return false;
