@@ -157,6 +157,20 @@ function barChain(world: World, points: Vec2[], o: { closed: boolean; halfThickn
   return { bodies, points, halves, closed: o.closed };
 }
 
+/**
+ * Planks of length 1 hinged along `points` (the first to the world), and a 1 × 1 box `times` the chain's mass hinged
+ * 1.5 below its middle hinge; the energy scale is the load's drop by half the chain's length.
+ */
+function loadedChain(world: World, points: Vec2[], times: number, halfThickness: number, collide: boolean): { chain: BarChain; all: Handle[]; scale: number } {
+  const chain = barChain(world, points, { closed: false, halfThickness, length: 1, collide });
+  const planks = chain.bodies.length;
+  const mass = chain.bodies.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
+  const middle = points[planks >> 1];
+  const load = world.addRigidBody({ points: box(0.5, 0.5), x: middle.x, y: middle.y + 1.5, density: times * mass, collide: false });
+  world.addJoint({ type: 'revolute', a: load, b: chain.bodies[planks >> 1], anchor: middle });
+  return { chain, all: [...chain.bodies, load], scale: (times * mass * 10 * planks) / 2 };
+}
+
 /** The widest of a chain's hinges now: between its bars, at its first anchor and (closed) its last. */
 function widestHinge(world: World, chain: BarChain): number {
   const { bodies, points, halves } = chain;
@@ -191,16 +205,9 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
             const label = `${planks} planks, a load ${times}× the chain, ${arc ? 'on an arc' : 'level'}, ${collide ? '' : 'not '}colliding`;
             const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
             const points = arc ? sagging(planks) : Array.from({ length: planks + 1 }, (_, k): Vec2 => ({ x: k, y: 0 }));
-            const chainOfPlanks = barChain(world, points, { closed: false, halfThickness: 0.0625, length: 1, collide });
+            const { chain: chainOfPlanks, all, scale } = loadedChain(world, points, times, 0.0625, collide);
             const bodies = chainOfPlanks.bodies;
-            const chain = bodies.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
-            const middle = points[planks >> 1];
-            const load = world.addRigidBody({ points: box(0.5, 0.5), x: middle.x, y: middle.y + 1.5, density: times * chain, collide: false });
-            world.addJoint({ type: 'revolute', a: load, b: bodies[planks >> 1], anchor: middle });
-            const all = [...bodies, load];
             const start = rigidEnergy(world, all, 10);
-            // The energy scale: the load's drop by half the chain's length.
-            const scale = (times * chain * 10 * planks) / 2;
             let rise = 0;
             let speed = 0;
             // The widest hinge every step of the last 5 s: it opens for a step or two as the free planks whip (up to
@@ -237,14 +244,9 @@ describe('rigid joints: revolute and weld trees solved at once', () => {
           for (const halfThickness of [0.0625, 0.1]) {
             const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
             const points = Array.from({ length: planks + 1 }, (_, k): Vec2 => ({ x: k * Math.cos(tilt), y: k * Math.sin(tilt) }));
-            const bodies = barChain(world, points, { closed: false, halfThickness, length: 1, collide: false }).bodies;
-            const chain = bodies.reduce((sum, b) => sum + world.bodyMassInfo(b).mass, 0);
-            const middle = points[planks >> 1];
-            const load = world.addRigidBody({ points: box(0.5, 0.5), x: middle.x, y: middle.y + 1.5, density: times * chain, collide: false });
-            world.addJoint({ type: 'revolute', a: load, b: bodies[planks >> 1], anchor: middle });
-            const all = [...bodies, load];
+            const { chain, all, scale } = loadedChain(world, points, times, halfThickness, false);
+            const bodies = chain.bodies;
             const start = rigidEnergy(world, all, 10);
-            const scale = (times * chain * 10 * planks) / 2;
             let ranAway = false;
             for (let s = 1; s <= 600 && !ranAway; s++) {
               world.step();
