@@ -386,10 +386,32 @@ function rigidBegin(packets: usize, count: i32, maxPush: f64): void {
  * The material points' offset along the tangent t = (−ny, nx): (pA − pB)·t, each point its body's centre plus its
  * lever turned by the angle since the reference (first order).
  */
-function offsetAlong(ax: v128, ay: v128, bx: v128, by: v128, dA: v128, dB: v128, mAx: v128, mAy: v128, mBx: v128, mBy: v128, nx: v128, ny: v128): v128 {
+function offsetAlong(ax: v128, ay: v128, bx: v128, by: v128, dA: v128, dB: v128, mAx: v128, mAy: v128, mBx: v128, mBy: v128, nx: v128, ny: v128, radA: v128, radB: v128): v128 {
   const ux = f64x2.sub(f64x2.sub(f64x2.add(ax, mAx), f64x2.mul(dA, mAy)), f64x2.sub(f64x2.add(bx, mBx), f64x2.mul(dB, mBy)));
   const uy = f64x2.sub(f64x2.add(f64x2.add(ay, mAy), f64x2.mul(dA, mAx)), f64x2.add(f64x2.add(by, mBy), f64x2.mul(dB, mBx)));
-  return f64x2.add(f64x2.mul(f64x2.neg(ux), ny), f64x2.mul(uy, nx));
+  const offset = f64x2.add(f64x2.mul(f64x2.neg(ux), ny), f64x2.mul(uy, nx));
+  const zero = f64x2.splat(0);
+  if (!v128.any_true(v128.or(f64x2.gt(radA, zero), f64x2.gt(radB, zero)))) return offset;
+  // A round side's material point measured along its rim (contacts.ts arcBeyond, the same series).
+  return f64x2.sub(f64x2.add(offset, arcBeyond(alongTangent(mAx, mAy, dA, nx, ny), radA)), arcBeyond(alongTangent(mBx, mBy, dB, nx, ny), radB));
+}
+
+/** contacts.ts alongTangent: a lever turned by d (first order), along t = (−ny, nx). */
+function alongTangent(mx: v128, my: v128, d: v128, nx: v128, ny: v128): v128 {
+  return f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(mx, f64x2.mul(d, my))), ny), f64x2.mul(f64x2.add(my, f64x2.mul(d, mx)), nx));
+}
+
+/** contacts.ts arcBeyond: r·asin(s) − m·t for s = m·t / r, its series to s¹¹ term by term; 0 where the side is not round. */
+function arcBeyond(mt: v128, rad: v128): v128 {
+  const s = f64x2.div(mt, rad);
+  const s2 = f64x2.mul(s, s);
+  let term = f64x2.mul(f64x2.mul(mt, s2), f64x2.splat(1.0 / 6.0));
+  let sum = term;
+  for (let n = 1; n < 5; n++) {
+    term = f64x2.mul(f64x2.mul(term, s2), f64x2.splat(<f64>((2 * n + 1) * (2 * n + 1)) / <f64>((2 * n + 2) * (2 * n + 3))));
+    sum = f64x2.add(sum, term);
+  }
+  return v128.and(sum, f64x2.gt(rad, f64x2.splat(0)));
 }
 
 /** One position sweep over `count` packets: normal correction, then friction, per point. */
@@ -481,7 +503,7 @@ function rigidSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usize, 
     const w = f64x2.add(f64x2.add(imA, f64x2.mul(f64x2.mul(iiA, rtA), rtA)), f64x2.add(imB, f64x2.mul(f64x2.mul(iiB, rtB), rtB)));
     const holds = v128.and(v128.and(acts, v128.and(f64x2.ne(mu, zero), f64x2.gt(lambda, zero))), f64x2.gt(w, zero));
     if (v128.any_true(v128.or(holds, apart))) {
-      const offset = offsetAlong(ax, ay, bx, by, dA, dB, mAx, mAy, mBx, mBy, nx, ny);
+      const offset = offsetAlong(ax, ay, bx, by, dA, dB, mAx, mAy, mBx, mBy, nx, ny, radA, radB);
       const slip = v128.bitselect(offset, fld(pk, 288), apart);
       const drift = f64x2.sub(offset, slip);
       const want = f64x2.div(drift, w);
@@ -651,7 +673,8 @@ function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usiz
     const sA = gather2(rs, oa0, oa1);
     const cB = gather2(rc, ob0, ob1);
     const sB = gather2(rs, ob0, ob1);
-    // Material levers (m) and normal levers (l) of both points (a round side's normal lever runs along n).
+    // Material levers (m) of both points, which are also their normal levers: no side is round here (lanesFit in
+    // wasm-kernel.ts leaves a step with manifolds and round points to the JS solver).
     let rx = v128.load(q0);
     let ry = v128.load(q0, 16);
     const mA0x = f64x2.sub(f64x2.mul(cA, rx), f64x2.mul(sA, ry));
@@ -668,26 +691,7 @@ function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usiz
     ry = v128.load(q1, 48);
     const mB1x = f64x2.sub(f64x2.mul(cB, rx), f64x2.mul(sB, ry));
     const mB1y = f64x2.add(f64x2.mul(sB, rx), f64x2.mul(cB, ry));
-    // Normal levers: the material ones, unless a side is round (its normal lever runs from its centre along n).
-    let lA0x = mA0x, lA0y = mA0y, lB0x = mB0x, lB0y = mB0y, lA1x = mA1x, lA1y = mA1y, lB1x = mB1x, lB1y = mB1y;
-    const radA0 = v128.load(q0, 64);
-    const radB0 = v128.load(q0, 80);
-    const radA1 = v128.load(q1, 64);
-    const radB1 = v128.load(q1, 80);
-    if (v128.any_true(v128.or(v128.or(f64x2.gt(radA0, zero), f64x2.gt(radB0, zero)), v128.or(f64x2.gt(radA1, zero), f64x2.gt(radB1, zero))))) {
-      let round = f64x2.gt(radA0, zero);
-      lA0x = v128.bitselect(f64x2.mul(nx, radA0), mA0x, round);
-      lA0y = v128.bitselect(f64x2.mul(ny, radA0), mA0y, round);
-      round = f64x2.gt(radB0, zero);
-      lB0x = v128.bitselect(f64x2.mul(f64x2.neg(nx), radB0), mB0x, round);
-      lB0y = v128.bitselect(f64x2.mul(f64x2.neg(ny), radB0), mB0y, round);
-      round = f64x2.gt(radA1, zero);
-      lA1x = v128.bitselect(f64x2.mul(nx, radA1), mA1x, round);
-      lA1y = v128.bitselect(f64x2.mul(ny, radA1), mA1y, round);
-      round = f64x2.gt(radB1, zero);
-      lB1x = v128.bitselect(f64x2.mul(f64x2.neg(nx), radB1), mB1x, round);
-      lB1y = v128.bitselect(f64x2.mul(f64x2.neg(ny), radB1), mB1y, round);
-    }
+    const lA0x = mA0x, lA0y = mA0y, lB0x = mB0x, lB0y = mB0y, lA1x = mA1x, lA1y = mA1y, lB1x = mB1x, lB1y = mB1y;
     // Overlaps past their allowances.
     const g0 = f64x2.sub(f64x2.add(
       f64x2.mul(f64x2.sub(f64x2.sub(f64x2.add(ax0, lA0x), f64x2.mul(dA, lA0y)), f64x2.sub(f64x2.add(bx0, lB0x), f64x2.mul(dB, lB0y))), nx),
@@ -810,8 +814,8 @@ function manifoldSweep(x: usize, y: usize, angle: usize, qangle: usize, rc: usiz
     const mu = mf(pk, 2);
     const loaded = v128.and(acts, v128.and(f64x2.ne(mu, zero), v128.or(f64x2.gt(lambda0, zero), f64x2.gt(lambda1, zero))));
     if (v128.any_true(v128.or(loaded, apart))) {
-      const drift0 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA0x, mA0y, mB0x, mB0y, nx, ny);
-      const drift1 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA1x, mA1y, mB1x, mB1y, nx, ny);
+      const drift0 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA0x, mA0y, mB0x, mB0y, nx, ny, zero, zero);
+      const drift1 = offsetAlong(ax1, ay1, bx1, by1, dA, dB, mA1x, mA1y, mB1x, mB1y, nx, ny, zero, zero);
       const rtA0 = f64x2.add(f64x2.mul(mA0x, nx), f64x2.mul(mA0y, ny));
       const rtB0 = f64x2.add(f64x2.mul(mB0x, nx), f64x2.mul(mB0y, ny));
       const rtA1 = f64x2.add(f64x2.mul(mA1x, nx), f64x2.mul(mA1y, ny));

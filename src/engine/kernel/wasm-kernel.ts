@@ -630,14 +630,16 @@ export class WasmKernel {
 /**
  * Whether the lanes take the step's rigid contacts: 0 no, 1 as single points (all lone), 2 by manifold (some pairs).
  * Each point between two rows or with the world (no particle-built edge point), restitution 0, no shock sweep; a
- * pair's partner follows it (the same bodies).
+ * pair's partner follows it (the same bodies); by manifold only when no side is round.
  */
 function lanesFit(c: RigidContacts): 0 | 1 | 2 {
   if (c.shockCount > 0 || c.edgePoints > 0) return 0;
-  const { pair, b2, restitution, a, b } = c;
+  const { pair, b2, restitution, a, b, radA, radB } = c;
   let fit: 0 | 1 | 2 = 1;
+  let round = false;
   for (let i = 0, n = c.count; i < n; i++) {
     if (b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0) return 0;
+    if (radA[i] > 0 || radB[i] > 0) round = true;
     if (pair[i] === 1) {
       const j = i + 1;
       if (j >= n || b2[j] >= 0 || restitution[j] !== 0 || a[j] !== a[i] || b[j] !== b[i] || pair[j] !== 0) return 0;
@@ -645,7 +647,8 @@ function lanesFit(c: RigidContacts): 0 | 1 | 2 {
       i++;
     } else if (pair[i] !== 0) return 0;
   }
-  return fit;
+  // The manifold lanes hold no round side (their sweep has no rim arcs: solver.as): such a step is the JS solver's.
+  return fit === 2 && round ? 0 : fit;
 }
 
 function align16(bytes: number): number {

@@ -253,12 +253,12 @@ describe('solver kernel: determinism (golden hashes of the WebAssembly kernel)',
     pyramid: '0c1c93e6d8c470ad',
     stack: '92bae300f49b6d38',
     boxes: '8ac49288b5e00e8b',
-    circles: 'baa9195bf828944b',
+    circles: '9a3f6a3c44519426',
     chain: '7521bc88cdb4b3e1',
     cloth: '3bb7be7c5318fcc5',
     thrown: 'fed4f89683c07317',
-    ragdolls: 'ad5692fdc2c84a86',
-    soft: 'cd8293c0fbcd4628',
+    ragdolls: '121163f4fbcce627',
+    soft: '7cbab55353d014cb',
   };
 
   for (const name of SCENE_NAMES) {

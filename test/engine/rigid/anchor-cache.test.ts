@@ -4,7 +4,7 @@
 // dropped and new ones added, duplicate keys, and body slots past 32768 (whose keys wrap at 2^53). A round side's fresh
 // anchor that is not replaced by a kept one is turned back by half the step's turn of its body (−ω·dt/2).
 import { expect } from 'chai';
-import { RigidAnchorCache, RigidContacts, writeAnchorKey } from '../../../src/engine/rigid/contacts.js';
+import { arcBeyond, RigidAnchorCache, RigidContacts, writeAnchorKey } from '../../../src/engine/rigid/contacts.js';
 import type { BodyRows } from '../../../src/engine/rigid/rows.js';
 import { random } from '../pipeline/scene-helpers.js';
 
@@ -40,6 +40,17 @@ function fill(table: RigidContacts, points: Point[]): void {
  * order, each with its anchors if it acted; a fresh point takes the entry at the cursor when that has its key (the
  * cursor then moves past it), else the first entry of its key that holds anchors (a Map here).
  */
+/** Point i's A anchor minus its B anchor along the tangent, a round side's along its arc (arcBeyond), levers only. */
+function offsetAlongTangent(c: RigidContacts, rows: BodyRows, i: number, a: number[], b: number[]): number {
+  const along = (p: number[], row: number): number => {
+    const [x, y] = row < 0 ? p : [rows.rc[row] * p[0] - rows.rs[row] * p[1], rows.rs[row] * p[0] + rows.rc[row] * p[1]];
+    return -x * c.ny[i] + y * c.nx[i];
+  };
+  const tA = along(a, c.a[i]);
+  const tB = along(b, c.b[i]);
+  return tA + arcBeyond(tA, c.radA[i]) - (c.b[i] < 0 ? tB : tB + arcBeyond(tB, c.radB[i]));
+}
+
 function oracle(old: RigidContacts, rows: BodyRows, fresh: RigidContacts, reach: number, dt: number): { rA: number[][]; rB: number[][]; allowance: number[] } {
   const list: { key: number; held: boolean; rA: number[]; rB: number[]; allow: number }[] = [];
   const firstHeld = new Map<number, number>();
@@ -103,9 +114,28 @@ function oracle(old: RigidContacts, rows: BodyRows, fresh: RigidContacts, reach:
         }
       }
     }
-    // Not kept from last step: a round side's fresh anchor turned back by half its body's turn in the step.
-    if (!kept && fresh.radA[i] > 0) a = turned(a[0], a[1], fresh.a[i]);
-    if (!kept && fresh.radB[i] > 0 && fresh.b[i] >= 0) b = turned(b[0], b[1], fresh.b[i]);
+    // Not kept from last step: a round side's fresh anchor turned back by half its body's turn in the step, and the
+    // anchors shifted along the tangent (the side that is not round, else both by half) so that the point's offset
+    // as friction measures it (a rim along its arc) is what the narrow phase found.
+    const roundA = fresh.radA[i] > 0;
+    const roundB = fresh.radB[i] > 0 && fresh.b[i] >= 0;
+    if (!kept && (roundA || roundB)) {
+      const found = offsetAlongTangent(fresh, rows, i, a, b);
+      if (roundA) a = turned(a[0], a[1], fresh.a[i]);
+      if (roundB) b = turned(b[0], b[1], fresh.b[i]);
+      const moved = offsetAlongTangent(fresh, rows, i, a, b) - found;
+      const shift = (p: number[], row: number, d: number): number[] => {
+        const t = [-fresh.ny[i] * d, fresh.nx[i] * d];
+        if (row < 0) return [p[0] + t[0], p[1] + t[1]];
+        return [p[0] + rows.rc[row] * t[0] + rows.rs[row] * t[1], p[1] - rows.rs[row] * t[0] + rows.rc[row] * t[1]];
+      };
+      if (!roundB) b = shift(b, fresh.b[i], moved);
+      else if (!roundA) a = shift(a, fresh.a[i], -moved);
+      else {
+        a = shift(a, fresh.a[i], -0.5 * moved);
+        b = shift(b, fresh.b[i], 0.5 * moved);
+      }
+    }
     rA.push(a);
     rB.push(b);
     allowance.push(allow);
@@ -116,8 +146,8 @@ function oracle(old: RigidContacts, rows: BodyRows, fresh: RigidContacts, reach:
 describe('rigid bodies: friction anchors from step to step', () => {
   it('restores what a map by feature key gives, for lists kept, reordered, thinned and grown (200 cases)', () => {
     const rnd = random(5);
-    const rows = { rc: new Float64Array(64), rs: new Float64Array(64), omega: new Float64Array(90000) } as unknown as BodyRows;
-    for (let r = 0; r < 64; r++) {
+    const rows = { rc: new Float64Array(90000), rs: new Float64Array(90000), omega: new Float64Array(90000) } as unknown as BodyRows;
+    for (let r = 0; r < 90000; r++) {
       const t = rnd() * 6.3;
       rows.rc[r] = Math.cos(t);
       rows.rs[r] = Math.sin(t);
