@@ -24,7 +24,7 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */
-const BUSY = '6da6efaac7b7ee27';
+const BUSY = '73ff099980b6650f';
 
 const STEPS = 300;
 

@@ -86,7 +86,11 @@ export function createCloth(world: World, o: ClothOptions): Built {
     }
     for (const c of pinned) constraints.push(world.addPin(at(c, 0)));
     if ((o.tethers ?? breakStrain === undefined) && structural === 0) {
-      const rest = (a: number, b: number) => spacing * Math.hypot((a % columns) - (b % columns), Math.floor(a / columns) - Math.floor(b / columns));
+      // The path along the structural links (across, then down), not the straight line: a particle can be that far
+      // from its pin and no farther. In the plane the straight line locked a cloth hung from two corners (or from
+      // pins apart along the top): a column swinging sideways moves away from the nearest pin off its top, and every
+      // column's nearest pin held it, so wind and sideways gravity moved the cloth 0.05 in 4 s.
+      const rest = (a: number, b: number) => spacing * (Math.abs((a % columns) - (b % columns)) + Math.abs(Math.floor(a / columns) - Math.floor(b / columns)));
       addTethers(world, particles, pinned, rest, constraints);
     }
     // Collides (when asked) as circles of the particles' radius; off by default.
