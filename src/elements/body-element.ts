@@ -67,6 +67,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   set x(value: number) {
     const old = this._x;
     if (Object.is(old, value)) return;
+    this.keepLivePose('x');
     this._x = value;
     this.requestUpdate('x', old, DECLARED_CHANGED);
   }
@@ -83,6 +84,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   set y(value: number) {
     const old = this._y;
     if (Object.is(old, value)) return;
+    this.keepLivePose('y');
     this._y = value;
     this.requestUpdate('y', old, DECLARED_CHANGED);
   }
@@ -100,8 +102,26 @@ export abstract class PhysicsBodyElement extends LitElement {
   set angle(value: number) {
     const old = this._angle;
     if (Object.is(old, value)) return;
+    this.keepLivePose('angle');
     this._angle = value;
     this.requestUpdate('angle', old, DECLARED_CHANGED);
+  }
+
+  /** The parts of the pose set by property since the last update. */
+  private poseSet = new Set<'x' | 'y' | 'angle'>();
+
+  /**
+   * Setting one part of a simulated body's pose moves it there from where it is: the other parts take their live
+   * values, unless they too were set since the last update (`b.x += 1` put the body back at its markup y and angle).
+   */
+  private keepLivePose(part: 'x' | 'y' | 'angle'): void {
+    const pose = this._scene?.poseOf(this);
+    if (pose && this.poseSet.size === 0) {
+      if (part !== 'x') this._x = pose[0];
+      if (part !== 'y') this._y = pose[1];
+      if (part !== 'angle') this._angle = toDegrees(pose[2]);
+    }
+    this.poseSet.add(part);
   }
 
   /** The declared (markup) position and angle, not the live pose. */
@@ -194,6 +214,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   }
 
   protected override updated(): void {
+    this.poseSet.clear();
     this._scene?.childChanged(this);
   }
 }

@@ -86,10 +86,17 @@ describe('<physics-scene> live markup', () => {
     expect(box.x).to.be.closeTo(4, 1e-6);
     expect(box.y).to.be.closeTo(4, 1e-6);
     expect(box.angle).to.be.closeTo(30, 1e-6);
-    // Setting a pose property moves the body there (the markup's value changes too).
+    // Setting a pose property moves the body there (the markup's value changes too), from where it is: the other parts
+    // keep their live values (it went back to the markup's y = 5 before), unless they are set in the same task.
     box.x = 7;
     await scene.step(1);
     expect(box.x).to.be.closeTo(7, 1e-9);
+    expect(box.y).to.be.closeTo(4, 1e-6);
+    expect(box.angle).to.be.closeTo(30, 1e-6);
+    box.y = 2;
+    box.x = 3;
+    await scene.step(1);
+    expect([box.x, box.y, box.angle].map((v) => Number(v.toFixed(6)))).to.deep.equal([3, 2, 30]);
   });
   it('the view walls follow width and height changed live; bounds="none" takes them away', async () => {
     // Gravity to the right: the ball rests against the right wall, at x = width − radius.
