@@ -8,7 +8,7 @@
 // act. Nothing passes or returns a double across a call: V8 boxes a double handed to a function it does not inline
 // (a heap allocation each time); the helpers take integers and pass reals through typed arrays.
 import type { BodyRows } from './rows.js';
-import { alongTangent, arcBeyond, type RigidContacts } from './contacts.js';
+import { rim, rimArc, type RigidContacts } from './contacts.js';
 import { grown } from '../table.js';
 
 /** Approach speeds below this do not bounce (resting contacts would jitter otherwise). */
@@ -337,10 +337,28 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
       // Apart, and not touched yet this step: friction's reference follows the bodies (see followApart).
       if (friction[i] !== 0 && touched[i] === 0 && (!two || touched[j] === 0)) {
         let apart = -(ax + mA0x - dA * mA0y - (onRow ? bx + mB0x - dB * mB0y : rBx[i])) * ny + (ay + mA0y + dA * mA0x - (onRow ? by + mB0y + dB * mB0x : rBy[i])) * nx;
-        if (ra0 > 0 || rb0 > 0) apart = apart + arcBeyond(alongTangent(mA0x, mA0y, dA, nx, ny), ra0) - arcBeyond(alongTangent(mB0x, mB0y, dB, nx, ny), rb0);
+        if (ra0 > 0 || rb0 > 0) {
+          rim[0] = -(mA0x - dA * mA0y) * ny + (mA0y + dA * mA0x) * nx;
+          rim[1] = ra0;
+          rimArc();
+          apart = apart + rim[2];
+          rim[0] = -(mB0x - dB * mB0y) * ny + (mB0y + dB * mB0x) * nx;
+          rim[1] = rb0;
+          rimArc();
+          apart = apart - rim[2];
+        }
         if (two) {
           let apart1 = -(ax + mA1x - dA * mA1y - (onRow ? bx + mB1x - dB * mB1y : rBx[j])) * ny + (ay + mA1y + dA * mA1x - (onRow ? by + mB1y + dB * mB1x : rBy[j])) * nx;
-          if (radA[j] > 0 || radB[j] > 0) apart1 = apart1 + arcBeyond(alongTangent(mA1x, mA1y, dA, nx, ny), radA[j]) - arcBeyond(alongTangent(mB1x, mB1y, dB, nx, ny), radB[j]);
+          if (radA[j] > 0 || radB[j] > 0) {
+            rim[0] = -(mA1x - dA * mA1y) * ny + (mA1y + dA * mA1x) * nx;
+            rim[1] = radA[j];
+            rimArc();
+            apart1 = apart1 + rim[2];
+            rim[0] = -(mB1x - dB * mB1y) * ny + (mB1y + dB * mB1x) * nx;
+            rim[1] = radB[j];
+            rimArc();
+            apart1 = apart1 - rim[2];
+          }
           apart = 0.5 * (apart + apart1);
           slip[j] = apart;
         }
@@ -443,7 +461,16 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
     }
     let drift = -(ax + mA0x - dA * mA0y - (onRow ? bx + mB0x - dB * mB0y : rBx[i])) * ny + (ay + mA0y + dA * mA0x - (onRow ? by + mB0y + dB * mB0x : rBy[i])) * nx;
     // A round side's material point measured along its rim (arcBeyond).
-    if (ra0 > 0 || rb0 > 0) drift = drift + arcBeyond(alongTangent(mA0x, mA0y, dA, nx, ny), ra0) - arcBeyond(alongTangent(mB0x, mB0y, dB, nx, ny), rb0);
+    if (ra0 > 0 || rb0 > 0) {
+      rim[0] = -(mA0x - dA * mA0y) * ny + (mA0y + dA * mA0x) * nx;
+      rim[1] = ra0;
+      rimArc();
+      drift = drift + rim[2];
+      rim[0] = -(mB0x - dB * mB0y) * ny + (mB0y + dB * mB0x) * nx;
+      rim[1] = rb0;
+      rimArc();
+      drift = drift - rim[2];
+    }
     // Cross products of the material levers with t = (−ny, nx), and the weight along t.
     const rtA0 = mA0x * nx + mA0y * ny;
     const rtB0 = mB0x * nx + mB0y * ny;
@@ -453,7 +480,16 @@ export function solveRigidContacts(c: RigidContacts, r: BodyRows): void {
     let load = impulseN[i];
     if (two) {
       let drift1 = -(ax + mA1x - dA * mA1y - (onRow ? bx + mB1x - dB * mB1y : rBx[j])) * ny + (ay + mA1y + dA * mA1x - (onRow ? by + mB1y + dB * mB1x : rBy[j])) * nx;
-      if (radA[j] > 0 || radB[j] > 0) drift1 = drift1 + arcBeyond(alongTangent(mA1x, mA1y, dA, nx, ny), radA[j]) - arcBeyond(alongTangent(mB1x, mB1y, dB, nx, ny), radB[j]);
+      if (radA[j] > 0 || radB[j] > 0) {
+        rim[0] = -(mA1x - dA * mA1y) * ny + (mA1y + dA * mA1x) * nx;
+        rim[1] = radA[j];
+        rimArc();
+        drift1 = drift1 + rim[2];
+        rim[0] = -(mB1x - dB * mB1y) * ny + (mB1y + dB * mB1x) * nx;
+        rim[1] = radB[j];
+        rimArc();
+        drift1 = drift1 - rim[2];
+      }
       const rtA1 = mA1x * nx + mA1y * ny;
       const rtB1 = mB1x * nx + mB1y * ny;
       const w1 = imA + iiA * rtA1 * rtA1 + (onRow ? imB + iiB * rtB1 * rtB1 : 0);
@@ -574,8 +610,17 @@ function drift(c: RigidContacts, r: BodyRows, i: number, o: number): void {
   // A round side's material point measured along its rim (arcBeyond); B's is a rigid row's unless it is an edge point.
   const ib = c.b[i];
   if (c.radA[i] > 0 || (ib >= 0 && c.b2[i] < 0 && c.radB[i] > 0)) {
-    offset = offset + arcBeyond(alongTangent(mx, my, d, c.nx[i], c.ny[i]), c.radA[i]);
-    if (ib >= 0 && c.b2[i] < 0) offset = offset - arcBeyond(alongTangent(c.mBx[i], c.mBy[i], r.angle[ib] - r.qangle[ib], c.nx[i], c.ny[i]), c.radB[i]);
+    rim[0] = -(mx - d * my) * c.ny[i] + (my + d * mx) * c.nx[i];
+    rim[1] = c.radA[i];
+    rimArc();
+    offset = offset + rim[2];
+    if (ib >= 0 && c.b2[i] < 0) {
+      const dB = r.angle[ib] - r.qangle[ib];
+      rim[0] = -(c.mBx[i] - dB * c.mBy[i]) * c.ny[i] + (c.mBy[i] + dB * c.mBx[i]) * c.nx[i];
+      rim[1] = c.radB[i];
+      rimArc();
+      offset = offset - rim[2];
+    }
   }
   pt[o] = offset - c.slip[i];
 }

@@ -206,7 +206,27 @@ function chainOf(key: number): number {
  * floor). Measured along the rim, a disc that rolls keeps its point where it was.
  */
 export function arcBeyond(mt: number, radius: number): number {
-  if (!(radius > 0)) return 0;
+  rim[0] = mt;
+  rim[1] = radius;
+  rimArc();
+  return rim[2];
+}
+
+/**
+ * arcBeyond's arguments and result, for the solver's loops: [0] m·t, [1] the radius in; [2] the arc beyond out. (An
+ * array rather than arguments: doubles passed to or returned from a call that is not inlined are boxed, and the
+ * sweeps make this call for every round point every substep.)
+ */
+export const rim = new Float64Array(3);
+
+/** arcBeyond on `rim`. */
+export function rimArc(): void {
+  const mt = rim[0];
+  const radius = rim[1];
+  if (!(radius > 0)) {
+    rim[2] = 0;
+    return;
+  }
   const s = mt / radius;
   const s2 = s * s;
   // asin(s) − s = Σ c_n·s^(2n+1), c_1 = 1/6, c_(n+1) = c_n·(2n+1)² / ((2n+2)(2n+3)); times r: m·t·Σ c_n·s^(2n).
@@ -216,12 +236,7 @@ export function arcBeyond(mt: number, radius: number): number {
     term = term * s2 * (((2 * n + 1) * (2 * n + 1)) / ((2 * n + 2) * (2 * n + 3)));
     sum += term;
   }
-  return sum;
-}
-
-/** The tangential part (along t = (−ny, nx)) of a lever (mx, my) turned by d since (rc, rs) (first order). */
-export function alongTangent(mx: number, my: number, d: number, nx: number, ny: number): number {
-  return -(mx - d * my) * ny + (my + d * mx) * nx;
+  rim[2] = sum;
 }
 
 export class RigidAnchorCache {
@@ -390,7 +405,8 @@ export class RigidAnchorCache {
       const roundA = radA[i] > 0;
       const roundB = radB[i] > 0 && B[i] >= 0;
       if (!roundA && !roundB) continue;
-      const found = tangentOffset(c, r, i);
+      tangentOffset(c, r, i);
+      const found = shift[0];
       if (roundA) {
         vectorTurn[0] = -0.5 * omega[A[i]] * dt;
         turnVector(rAx, rAy, i);
@@ -399,13 +415,11 @@ export class RigidAnchorCache {
         vectorTurn[0] = -0.5 * omega[B[i]] * dt;
         turnVector(rBx, rBy, i);
       }
-      const moved = tangentOffset(c, r, i) - found;
-      if (!roundB) shiftAnchor(c, r, i, 1, moved);
-      else if (!roundA) shiftAnchor(c, r, i, 0, -moved);
-      else {
-        shiftAnchor(c, r, i, 0, -0.5 * moved);
-        shiftAnchor(c, r, i, 1, 0.5 * moved);
-      }
+      tangentOffset(c, r, i);
+      const moved = shift[0] - found;
+      shift[0] = roundB ? (roundA ? -0.5 * moved : -moved) : 0;
+      shift[1] = roundB ? (roundA ? 0.5 * moved : 0) : moved;
+      shiftAnchors(c, r, i);
     }
   }
 
@@ -454,8 +468,11 @@ export class RigidAnchorCache {
   }
 }
 
-/** Point i's A material point minus its B one along the tangent, as friction measures it (rims along their arc). */
-function tangentOffset(c: RigidContacts, r: BodyRows, i: number): number {
+/** tangentOffset's result, then shiftAnchors' moves of A's and B's anchors (scratch: no doubles through calls). */
+const shift = new Float64Array(2);
+
+/** Point i's A material point minus its B one along the tangent, as friction measures it (rims along their arc), into shift[0]. */
+function tangentOffset(c: RigidContacts, r: BodyRows, i: number): void {
   const { rc, rs } = r;
   const a = c.a[i];
   const b = c.b[i];
@@ -463,23 +480,38 @@ function tangentOffset(c: RigidContacts, r: BodyRows, i: number): number {
   const ny = c.ny[i];
   const mAx = rc[a] * c.rAx[i] - rs[a] * c.rAy[i];
   const mAy = rs[a] * c.rAx[i] + rc[a] * c.rAy[i];
-  const tA = alongTangent(mAx, mAy, 0, nx, ny);
-  if (b < 0) return tA + arcBeyond(tA, c.radA[i]) - alongTangent(c.rBx[i], c.rBy[i], 0, nx, ny);
+  rim[0] = -mAx * ny + mAy * nx;
+  rim[1] = c.radA[i];
+  rimArc();
+  let offset = rim[0] + rim[2];
+  if (b < 0) {
+    shift[0] = offset - (-c.rBx[i] * ny + c.rBy[i] * nx);
+    return;
+  }
   const mBx = rc[b] * c.rBx[i] - rs[b] * c.rBy[i];
   const mBy = rs[b] * c.rBx[i] + rc[b] * c.rBy[i];
-  const tB = alongTangent(mBx, mBy, 0, nx, ny);
-  return tA + arcBeyond(tA, c.radA[i]) - (tB + arcBeyond(tB, c.radB[i]));
+  rim[0] = -mBx * ny + mBy * nx;
+  rim[1] = c.radB[i];
+  rimArc();
+  offset -= rim[0] + rim[2];
+  shift[0] = offset;
 }
 
-/** Moves point i's anchor on side 0 (A) or 1 (B) by `d` along the tangent (in its body's frame, or the world's). */
-function shiftAnchor(c: RigidContacts, r: BodyRows, i: number, side: number, d: number): void {
-  const tx = -c.ny[i] * d;
-  const ty = c.nx[i] * d;
-  const row = side === 0 ? c.a[i] : c.b[i];
-  const cs = row < 0 ? 1 : r.rc[row];
-  const sn = row < 0 ? 0 : r.rs[row];
-  const xs = side === 0 ? c.rAx : c.rBx;
-  const ys = side === 0 ? c.rAy : c.rBy;
-  xs[i] += cs * tx + sn * ty;
-  ys[i] += -sn * tx + cs * ty;
+/** Moves point i's A anchor by shift[0] and its B anchor by shift[1] along the tangent (in their bodies' frames, or the world's). */
+function shiftAnchors(c: RigidContacts, r: BodyRows, i: number): void {
+  const nx = c.nx[i];
+  const ny = c.ny[i];
+  for (let side = 0; side < 2; side++) {
+    const d = shift[side];
+    if (d === 0) continue;
+    const row = side === 0 ? c.a[i] : c.b[i];
+    const cs = row < 0 ? 1 : r.rc[row];
+    const sn = row < 0 ? 0 : r.rs[row];
+    const tx = -ny * d;
+    const ty = nx * d;
+    const xs = side === 0 ? c.rAx : c.rBx;
+    const ys = side === 0 ? c.rAy : c.rBy;
+    xs[i] += cs * tx + sn * ty;
+    ys[i] += -sn * tx + cs * ty;
+  }
 }
