@@ -401,17 +401,12 @@ function alongTangent(mx: v128, my: v128, d: v128, nx: v128, ny: v128): v128 {
   return f64x2.add(f64x2.mul(f64x2.neg(f64x2.sub(mx, f64x2.mul(d, my))), ny), f64x2.mul(f64x2.add(my, f64x2.mul(d, mx)), nx));
 }
 
-/** contacts.ts arcBeyond: r·asin(s) − m·t for s = m·t / r, its series to s¹¹ term by term; 0 where the side is not round. */
+/** contacts.ts arcBeyond: r·asin(s) − m·t for s = m·t / r, its series to s⁷ (Horner's rule); 0 where the side is not round. */
 function arcBeyond(mt: v128, rad: v128): v128 {
   const s = f64x2.div(mt, rad);
   const s2 = f64x2.mul(s, s);
-  let term = f64x2.mul(f64x2.mul(mt, s2), f64x2.splat(1.0 / 6.0));
-  let sum = term;
-  for (let n = 1; n < 5; n++) {
-    term = f64x2.mul(f64x2.mul(term, s2), f64x2.splat(<f64>((2 * n + 1) * (2 * n + 1)) / <f64>((2 * n + 2) * (2 * n + 3))));
-    sum = f64x2.add(sum, term);
-  }
-  return v128.and(sum, f64x2.gt(rad, f64x2.splat(0)));
+  const p = f64x2.mul(s2, f64x2.add(f64x2.splat(1.0 / 6.0), f64x2.mul(s2, f64x2.add(f64x2.splat(3.0 / 40.0), f64x2.mul(s2, f64x2.splat(5.0 / 112.0))))));
+  return v128.and(f64x2.mul(mt, p), f64x2.gt(rad, f64x2.splat(0)));
 }
 
 /** One position sweep over `count` packets: normal correction, then friction, per point. */

@@ -73,7 +73,8 @@ describe('rigid bodies: motion on a slope', () => {
     // Friction holds a material point of the rim through the step; measured straight along the tangent it moves
     // r·(φ − sin φ) more than the disc rolls as it passes the contact, which friction could not undo: the disc slid,
     // braking, 2.2% of its speed lost in 10 s at r 0.25 and 5 units/s, 14% at 10, 32% at 20 (9.1% at r 0.5 and 20).
-    // Measured along the rim (contacts.ts arcBeyond) it rolls on: within 0.7% at 1.3 rad a step (the series' error).
+    // Measured along the rim (contacts.ts arcBeyond) it rolls on: within 0.01% up to 0.67 rad a step, 5.7% at 1.3 rad
+    // (the series' error there).
     let worst = 0;
     for (const kernel of ['js', 'wasm'] as const)
       for (const [r, v0, mu] of [[0.25, 5, 0.6], [0.25, 10, 0.6], [0.25, 10, 1], [0.5, 20, 0.6], [1, 10, 0.2], [0.25, 20, 0.6]]) {
@@ -84,8 +85,8 @@ describe('rigid bodies: motion on a slope', () => {
         const at = `${kernel}, r ${r}, v0 ${v0}, μ ${mu}`;
         const v = world.bodyVelocity(disc).x;
         const turn = (v0 / r) / 60;
-        expect(v, at).to.be.closeTo(v0, (turn < 1 ? 0.001 : 0.01) * v0);
-        expect(world.bodyAngularVelocity(disc) * r, at).to.be.closeTo(v, 0.001 * v);
+        expect(v, at).to.be.closeTo(v0, (turn < 1 ? 0.001 : 0.1) * v0);
+        expect(world.bodyAngularVelocity(disc) * r, at).to.be.closeTo(v, 0.005 * v);
         if (turn < 1) worst = Math.max(worst, Math.abs(v / v0 - 1));
       }
     console.log(`      rolling discs: speed kept within ${(100 * worst).toFixed(3)}% over 10 s up to 0.67 rad a step`);
@@ -1168,8 +1169,9 @@ describe('rigid bodies: seams between static pieces', () => {
       // it off (an earlier form held it on the peak).
       const one = path(false);
       // The same path but for rounding (the same contact points, found by other arithmetic; rolling over the peak
-      // grows a difference of 10⁻¹⁶ to 10⁻⁸ in two seconds), where being thrown off moves it by tenths.
-      path(true).forEach((v, k) => expect(v, `${kernel}: coordinate ${k}`).to.be.closeTo(one[k], 1e-6));
+      // grows a difference of 10⁻¹⁶ to 10⁻⁸ in two seconds; 5·10⁻⁴ since friction measures the ball's rim along its
+      // arc: its anchors are fresh on one side of the seam, kept on the other), where being thrown off moves it by tenths.
+      path(true).forEach((v, k) => expect(v, `${kernel}: coordinate ${k}`).to.be.closeTo(one[k], 2e-3));
       // A disc spawned inside the middle tile of a 3×3 block, every face of that tile a seam: pushed out somewhere,
       // never an infinite depth or NaN.
       const world = new World({ kernel, gravity: { x: 0, y: g }, sleeping: false });
