@@ -184,20 +184,6 @@ function chainOf(key: number): number {
 }
 
 /**
- * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
- * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
- * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
- * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
- *
- * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
- * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
- * expects the next one; only a point the cursor misses builds the index by key (once a step, and only then). The
- * index chains the held entries by the key's high bits, body A's slot (chainOf): building it is one pass of two
- * stores an entry, where a hash table was a clear of twice the list's size plus a hashed insert per entry (S2 and S3
- * build it every step: a new contact or a pair met in another order misses the cursor), and a lookup walks the few
- * points of one body. Equal keys share a chain, so it finds what a hash table by key finds: the first held entry.
- */
-/**
  * How much farther along its rim than its lever's tangential part m·t a round side's material point is from the
  * contact: r·asin(s) − m·t for s = m·t / r (its series to s⁷, by Horner's rule as the WebAssembly kernel computes it); 0 for a
  * side that is not round. Friction holds a material point through the step; measured along the tangent, a rim point
@@ -230,10 +216,25 @@ export function rimArc(): void {
   const s = mt / radius;
   const s2 = s * s;
   // asin(s) − s = s³/6 + 3s⁵/40 + 5s⁷/112 + …; times r: m·t·(s²/6 + …). Two more terms (to s¹¹) kept a disc turning
-  // 1.3 rad a step within 0.7% of its speed instead of 5.7%, but cost the WebAssembly kernel's disc pile (S3) 8% of its step.
+  // 1.3 rad a step within 0.7% of its speed instead of 5.7%, but the WebAssembly kernel's disc pile (S3) paid 19% of
+  // its step for the arcs with them, 10% without.
   rim[2] = mt * (s2 * (1 / 6 + s2 * (3 / 40 + s2 * (5 / 112))));
 }
 
+/**
+ * Last step's friction anchors by feature key (Box2D keeps impulses by feature id for warm starting; a position-based
+ * solver keeps the material points instead). A point found again next step starts from the anchors it held, moved
+ * by what it slid, so static friction holds a resting body where it first touched and creep cannot accumulate from
+ * step to step; anchors more than `reach` from the fresh contact (the bodies moved) are dropped.
+ *
+ * Speed: the narrow phase meets the pairs in much the same order every step, so the anchors are kept as a list in
+ * last step's order (every point, those that did not act marked as holding none) and looked up by a cursor that
+ * expects the next one; only a point the cursor misses builds the index by key (once a step, and only then). The
+ * index chains the held entries by the key's high bits, body A's slot (chainOf): building it is one pass of two
+ * stores an entry, where a hash table was a clear of twice the list's size plus a hashed insert per entry (S2 and S3
+ * build it every step: a new contact or a pair met in another order misses the cursor), and a lookup walks the few
+ * points of one body. Equal keys share a chain, so it finds what a hash table by key finds: the first held entry.
+ */
 export class RigidAnchorCache {
   /** The chains hold this list (false: not built since the last store). */
   private tableBuilt = false;
