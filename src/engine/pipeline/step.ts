@@ -59,6 +59,8 @@ export function step(ctx: StepContext, dt: number): void {
   kernelAtWork(ctx)?.beginStep(ctx);
   // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
   if (ctx.kernel) ctx.kernel.rigidLanes = false;
+  const g = ctx.settings.gravity;
+  ctx.rigidContacts.setMotion(g.x, g.y, h, verletHalfSubstep(ctx.settings.integrator, h));
   const t1 = ctx.measureTimings ? performance.now() : 0;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);

@@ -24,7 +24,7 @@ import { turnVector, vectorTurn, type BodyRows } from './rows.js';
 export class RigidContacts extends Table {
   readonly columns = [
     'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN',
-    'slip', 'allowance', 'approach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
+    'slip', 'allowance', 'approach', 'lift', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
     'lAx', 'lAy', 'mAx', 'mAy', 'lBx', 'lBy', 'mBx', 'mBy', 'rnA', 'rnB', 'rtA', 'rtB', 'wn', 'wt', 'kn01', 'kt01',
   ] as const;
   a = new Int32Array(16);
@@ -51,8 +51,16 @@ export class RigidContacts extends Table {
   slip = new Float64Array(16);
   /** Overlap tolerated this substep: an old deep overlap is pushed out at a bounded speed, not in one substep. */
   allowance = new Float64Array(16);
-  /** Normal speed (B relative to A, negative approaching) when the point first acted in this step; NaN before. */
+  /**
+   * Normal speed (B relative to A, negative approaching) at impact, the fastest of the substeps in which the point
+   * acted this step (contact-solver.ts keepApproach); NaN before, +∞ once it bounced.
+   */
   approach = new Float64Array(16);
+  /**
+   * What a bounce adds to −e × approach so that the stored velocity, under position Verlet the mean over a substep,
+   * leaves the contact at e × the impact speed: −a·h/2, a the two sides' relative normal acceleration by gravity.
+   */
+  lift = new Float64Array(16);
   touched = new Uint8Array(16);
   /** 1 on the first point of a two-point manifold (its partner is the next row). */
   pair = new Uint8Array(16);
@@ -105,6 +113,19 @@ export class RigidContacts extends Table {
   shockReady = false;
   shockCount = 0;
   /**
+   * Set by the step (setMotion): gravity, the substep and half of it under position Verlet (0 for the Euler
+   * integrators, whose stored velocity is the one at the substep's end). A bounce's impact speed needs them
+   * (keepApproach); with the defaults, 0, the approach is the stored normal speed itself.
+   */
+  readonly motion = new Float64Array(4);
+
+  setMotion(gx: number, gy: number, h: number, verletHalf: number): void {
+    this.motion[0] = gx;
+    this.motion[1] = gy;
+    this.motion[2] = h;
+    this.motion[3] = verletHalf;
+  }
+  /**
    * Points whose B side is an edge of a particle-built outline (b2 ≥ 0), counted with the shock set-up once a step:
    * only they need the per-substep prepare pass.
    */
@@ -140,6 +161,7 @@ export class RigidContacts extends Table {
     this.impulseT[i] = 0;
     this.slip[i] = 0;
     this.approach[i] = NaN;
+    this.lift[i] = 0;
     this.touched[i] = 0;
     this.pair[i] = pair;
     this.bodyA[i] = bodyA;
