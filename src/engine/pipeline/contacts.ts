@@ -1,6 +1,7 @@
 import { Table } from '../table.js';
 import type { ParticleStore } from '../particles.js';
 import { KeyTable } from './key-table.js';
+import { BOUNCE_THRESHOLD } from '../impact.js';
 
 /**
  * Contacts found by the narrow phase once per step, solved by projection inside every relaxation sweep (seed 4.2).
@@ -232,9 +233,6 @@ export function solveContacts(c: Contacts, p: ParticleStore): void {
     }
   }
 }
-
-/** Approach speeds below this do not bounce (resting contacts would jitter otherwise). */
-const BOUNCE_THRESHOLD = 0.5;
 
 /**
  * Records each contact's approach speed at the start of the step (restitution needs the speed before impact): the

@@ -24,7 +24,7 @@ import { turnVector, vectorTurn, type BodyRows } from './rows.js';
 export class RigidContacts extends Table {
   readonly columns = [
     'a', 'b', 'b2', 'alpha', 'nx', 'ny', 'rAx', 'rAy', 'rBx', 'rBy', 'radA', 'radB', 'friction', 'restitution', 'lambdaN',
-    'slip', 'allowance', 'approach', 'lift', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
+    'slip', 'allowance', 'approach', 'lift', 'ownApproach', 'touched', 'pair', 'bodyA', 'bodyB', 'depth', 'gap', 'feature', 'impulseN', 'impulseT',
     'lAx', 'lAy', 'mAx', 'mAy', 'lBx', 'lBy', 'mBx', 'mBy', 'rnA', 'rnB', 'rtA', 'rtB', 'wn', 'wt', 'kn01', 'kt01',
   ] as const;
   a = new Int32Array(16);
@@ -61,6 +61,11 @@ export class RigidContacts extends Table {
    * leaves the contact at e × the impact speed: −a·h/2, a the two sides' relative normal acceleration by gravity.
    */
   lift = new Float64Array(16);
+  /**
+   * 1 once `approach` is the point's own, 0 while it is lent by its manifold partner's touch (keepApproach). It and
+   * `lift` hold only while approach is a number: the narrow phase resets approach alone.
+   */
+  ownApproach = new Uint8Array(16);
   touched = new Uint8Array(16);
   /** 1 on the first point of a two-point manifold (its partner is the next row). */
   pair = new Uint8Array(16);
@@ -162,6 +167,7 @@ export class RigidContacts extends Table {
     this.slip[i] = 0;
     this.approach[i] = NaN;
     this.lift[i] = 0;
+    this.ownApproach[i] = 0;
     this.touched[i] = 0;
     this.pair[i] = pair;
     this.bodyA[i] = bodyA;

@@ -4,7 +4,7 @@
 // colliding with rigid bodies.
 import { expect } from 'chai';
 import { createBox, createCircle, createCloth, createRope, World, type Handle, type Vec2 } from '../../../src/engine/index.js';
-import { BOUNCE_THRESHOLD } from '../../../src/engine/rigid/contact-solver.js';
+import { BOUNCE_THRESHOLD } from '../../../src/engine/impact.js';
 import type { StepContext } from '../../../src/engine/pipeline/context.js';
 import { box, rigidEnergy } from '../helpers.js';
 import { rng } from '../collision/helpers.js';
@@ -165,6 +165,32 @@ describe('rigid bodies: impacts', () => {
             expect(peaks[k - 1], `${kernel} ${shape} e ${e}, bounce ${k}`).to.be.closeTo(expected, tolerance * expected);
           }
         }
+  });
+
+  it('elastic box–box hits (e = 1, μ = 0, no gravity) gain no energy: of 200 spun random hits none gains 1%, at most 3 lose 1%', () => {
+    // A manifold's point that only joined its touching partner bounced from its speed after the partner's correction
+    // had swung it in, or bounced alone; a touching point kept the speed its overlap's push gave it, or was stopped
+    // dead after its bounce. Before, on these 200: 9 off by more than 1%, gains up to 22% and losses up to 19%.
+    // What is left are losses of corners that go on overlapping the face after their bounce, a spin turning them
+    // about the step's fixed normal (other seeds: up to 10%).
+    const random = rng(16);
+    const errors: number[] = [];
+    for (let k = 0; k < 200; k++) {
+      const world = new World({ sleeping: false, gravity: { x: 0, y: 0 } });
+      const side = (): number => 0.3 + 0.5 * random();
+      const a = world.addRigidBody({ points: box(side(), side()), x: -2, y: 0, angle: 6 * random(), vx: 3 + 5 * random(), vy: random() - 0.5, angularVelocity: 4 * (random() - 0.5), restitution: 1, friction: 0 });
+      const b = world.addRigidBody({ points: box(side(), side()), x: 2, y: random() - 0.5, angle: 6 * random(), vx: -3 - 5 * random(), angularVelocity: 4 * (random() - 0.5), restitution: 1, friction: 0 });
+      const before = rigidEnergy(world, [a, b], 0);
+      steps(world, 90);
+      errors.push(rigidEnergy(world, [a, b], 0) / before - 1);
+    }
+    const off = errors.filter((e) => Math.abs(e) > 0.01).length;
+    const gained = Math.max(...errors);
+    const lost = -Math.min(...errors);
+    console.log(`      elastic box hits: ${off} of 200 off by more than 1%; most gained ${(100 * gained).toFixed(2)}%, most lost ${(100 * lost).toFixed(1)}%`);
+    expect(gained).to.be.lessThan(0.01);
+    expect(off).to.be.at.most(3);
+    expect(lost).to.be.lessThan(0.05);
   });
 
   it('with e = 0 a box at 300 u/s is stopped by a 0.1-thick wall and leaves it at < 0.5 u/s, not through it', () => {
