@@ -1,4 +1,6 @@
 import { ParticleFlag, type ParticleStore } from './particles.js';
+import { BOUNCE_THRESHOLD, hit, impact } from './impact.js';
+import { grown } from './table.js';
 
 /** An axis-aligned box the particles cannot leave (Jakobsen's first collision). */
 export interface Bounds {
@@ -9,11 +11,43 @@ export interface Bounds {
 }
 
 /**
+ * The particles the walls pushed back in this substep, for their bounce (bounceOffBounds): per particle and axis the
+ * normal speed toward the wall when it was first pushed (NaN: not pushed), how deep, and which wall (+1 the low one,
+ * −1 the high one); the particles pushed, listed.
+ */
+export class WallHits {
+  approachX = new Float64Array(0);
+  approachY = new Float64Array(0);
+  overlapX = new Float64Array(0);
+  overlapY = new Float64Array(0);
+  sideX = new Float64Array(0);
+  sideY = new Float64Array(0);
+  list = new Int32Array(0);
+  count = 0;
+
+  /** Room for n particles (grows, never in a step that does not add particles). */
+  reserve(n: number): void {
+    const had = this.approachX.length;
+    if (had >= n) return;
+    this.approachX = grown(this.approachX, n);
+    this.approachY = grown(this.approachY, n);
+    this.approachX.fill(NaN, had);
+    this.approachY.fill(NaN, had);
+    this.overlapX = grown(this.overlapX, n);
+    this.overlapY = grown(this.overlapY, n);
+    this.sideX = grown(this.sideX, n);
+    this.sideY = grown(this.sideY, n);
+    this.list = grown(this.list, this.approachX.length);
+  }
+}
+
+/**
  * Projects particles (inflated by their radius) back inside the box. Friction is Coulomb's on the step's
  * tangential motion: the tangential displacement since the substep began is cancelled up to `friction` times the
- * normal correction (static when it all fits, kinetic otherwise).
+ * normal correction (static when it all fits, kinetic otherwise). The first push of a substep on each axis is noted
+ * in `hits` (reserved for p.count) for the particle's bounce.
  */
-export function keepInBounds(p: ParticleStore, b: Bounds, friction: number): void {
+export function keepInBounds(p: ParticleStore, b: Bounds, friction: number, hits: WallHits): void {
   const { x, y, px, py, radius, invMass, flags } = p;
   for (let i = 0, n = p.count; i < n; i++) {
     // A rigid body meets the walls by its shape (rigid contacts with the world), not as a circle.
@@ -26,6 +60,21 @@ export function keepInBounds(p: ParticleStore, b: Bounds, friction: number): voi
     if (y[i] < b.minY + r) dy = b.minY + r - y[i];
     else if (y[i] > b.maxY - r) dy = b.maxY - r - y[i];
     if (dx === 0 && dy === 0) continue;
+    // The first push of the substep on each axis, for the bounce (written out: doubles passed to a call are boxed).
+    const { approachX, approachY } = hits;
+    if (approachX[i] !== approachX[i] && approachY[i] !== approachY[i]) hits.list[hits.count++] = i;
+    if (dx !== 0 && approachX[i] !== approachX[i]) {
+      const s = dx > 0 ? 1 : -1;
+      hits.sideX[i] = s;
+      approachX[i] = s * p.vx[i];
+      hits.overlapX[i] = s * dx;
+    }
+    if (dy !== 0 && approachY[i] !== approachY[i]) {
+      const s = dy > 0 ? 1 : -1;
+      hits.sideY[i] = s;
+      approachY[i] = s * p.vy[i];
+      hits.overlapY[i] = s * dy;
+    }
     x[i] += dx;
     y[i] += dy;
     if (friction > 0) {
@@ -40,4 +89,41 @@ export function frictionShift(t: number, limit: number): number {
   if (t > limit) return limit;
   if (t < -limit) return -limit;
   return t;
+}
+
+/**
+ * The velocity pass of the walls, after a substep's velocities are derived: a particle the walls pushed back while
+ * approaching faster than BOUNCE_THRESHOLD leaves with −e × the speed it hit with (impact()), e its body's
+ * restitution (`restitution` per body slot, `ownerOf` a particle's body slot or −1: e 0, it stays as the push left
+ * it, at rest along the wall's normal). `motion` is [gx, gy, h, half], gravity and the substep as impact() takes
+ * them. Clears `hits` for the next substep.
+ */
+export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { ownerOf(i: number): number }, restitution: Float64Array, motion: Float64Array): void {
+  const { approachX, approachY, sideX, sideY } = hits;
+  for (let k = 0; k < hits.count; k++) {
+    const i = hits.list[k];
+    const body = owner.ownerOf(i);
+    const e = body >= 0 ? restitution[body] : 0;
+    if (e > 0 && approachX[i] === approachX[i]) {
+      bounce(approachX[i], sideX[i] * motion[0], hits.overlapX[i], motion);
+      if (hit[0] < -BOUNCE_THRESHOLD) p.vx[i] = sideX[i] * (-e * hit[0] + hit[1]);
+    }
+    if (e > 0 && approachY[i] === approachY[i]) {
+      bounce(approachY[i], sideY[i] * motion[1], hits.overlapY[i], motion);
+      if (hit[0] < -BOUNCE_THRESHOLD) p.vy[i] = sideY[i] * (-e * hit[0] + hit[1]);
+    }
+    approachX[i] = NaN;
+    approachY[i] = NaN;
+  }
+  hits.count = 0;
+}
+
+/** impact() of a hit at `approach` (called for bouncy particles that hit a wall only). */
+function bounce(approach: number, a: number, overlap: number, motion: Float64Array): void {
+  hit[0] = approach;
+  hit[1] = a;
+  hit[2] = overlap;
+  hit[3] = motion[2];
+  hit[4] = motion[3];
+  impact();
 }

@@ -15,6 +15,7 @@ import { shouldCollide } from './collide.js';
 import { RigidNarrowPhase } from './rigid-narrowphase.js';
 import { RigidAnchorCache, RigidContacts } from '../rigid/contacts.js';
 import { RigidShapes } from '../rigid/shapes.js';
+import { WallHits } from '../bounds.js';
 import { chooseKernel, type KernelDiagnostics } from '../kernel/choice.js';
 import type { WasmKernel } from '../kernel/wasm-kernel.js';
 
@@ -52,6 +53,10 @@ export class StepContext {
   /** Rigid bodies: their shapes (per body slot), this step's contact points, and the narrow phase that finds them. */
   readonly rigidShapes = new RigidShapes();
   readonly rigidContacts = new RigidContacts();
+  /** The particles the world's bounds pushed back in the current substep, for their bounces. */
+  readonly wallHits = new WallHits();
+  /** This step's gravity and substep: [gx, gy, h, h/2 under position Verlet or 0] (impact.ts). */
+  readonly substepMotion = new Float64Array(4);
   readonly rigidNarrowPhase = new RigidNarrowPhase();
   /** Friction anchors of last step's rigid contact points, by feature. */
   readonly rigidAnchors = new RigidAnchorCache();

@@ -24,7 +24,7 @@ import { solveAreas } from '../constraints/area.js';
 import { accumulateSprings } from '../constraints/spring.js';
 import { aimGrabs, beginGrabStep, solveGrabs } from '../constraints/grab.js';
 import { integrate, shiftVerletVelocities, updateVelocities, verletHalfSubstep } from '../integrate.js';
-import { keepInBounds } from '../bounds.js';
+import { bounceOffBounds, keepInBounds } from '../bounds.js';
 import { solveContacts, solveContactVelocities } from './contacts.js';
 import { detectCollisions } from './collide.js';
 import { keepRowsFinite } from './guard.js';
@@ -60,7 +60,13 @@ export function step(ctx: StepContext, dt: number): void {
   // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
   if (ctx.kernel) ctx.kernel.rigidLanes = false;
   const g = ctx.settings.gravity;
-  ctx.rigidContacts.setMotion(g.x, g.y, h, verletHalfSubstep(ctx.settings.integrator, h));
+  const motion = ctx.substepMotion;
+  motion[0] = g.x;
+  motion[1] = g.y;
+  motion[2] = h;
+  motion[3] = verletHalfSubstep(ctx.settings.integrator, h);
+  ctx.rigidContacts.motion.set(motion);
+  if (ctx.settings.bounds) ctx.wallHits.reserve(ctx.particles.count);
   const t1 = ctx.measureTimings ? performance.now() : 0;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);
@@ -128,6 +134,7 @@ export function substep(ctx: StepContext, h: number): void {
   else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
+  if (ctx.wallHits.count > 0) bounceOffBounds(ctx.wallHits, particles, ctx.bodies, ctx.colliders.restitution, ctx.substepMotion);
   if (rigid.count > 0) {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidVelocities();
     else solveRigidContactVelocities(rigid, particles, h);
@@ -278,7 +285,7 @@ function relax(ctx: StepContext, h: number): void {
     else solveRigidContacts(ctx.rigidContacts, p);
   }
   const bounds = ctx.settings.bounds;
-  if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction);
+  if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction, ctx.wallHits);
 }
 
 /** Tearing: links stretched past their breakStrain break; their handles go to `breaks`. */

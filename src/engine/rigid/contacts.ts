@@ -118,18 +118,11 @@ export class RigidContacts extends Table {
   shockReady = false;
   shockCount = 0;
   /**
-   * Set by the step (setMotion): gravity, the substep and half of it under position Verlet (0 for the Euler
+   * Set by the step (StepContext.motion): gravity, the substep and half of it under position Verlet (0 for the Euler
    * integrators, whose stored velocity is the one at the substep's end). A bounce's impact speed needs them
    * (keepApproach); with the defaults, 0, the approach is the stored normal speed itself.
    */
   readonly motion = new Float64Array(4);
-
-  setMotion(gx: number, gy: number, h: number, verletHalf: number): void {
-    this.motion[0] = gx;
-    this.motion[1] = gy;
-    this.motion[2] = h;
-    this.motion[3] = verletHalf;
-  }
   /**
    * Points whose B side is an edge of a particle-built outline (b2 ≥ 0), counted with the shock set-up once a step:
    * only they need the per-substep prepare pass.

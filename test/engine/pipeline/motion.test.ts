@@ -78,6 +78,48 @@ describe('pipeline: motion', () => {
     expect(sliding).to.be.closeTo(expected, 0.03 * expected);
   });
 
+  it("the world's bounds bounce particle balls: e = 1 keeps its height over 5 bounces, e = 0.8 each within 1% of e²ᵏ·h, e = 0 stays down (both kernels)", () => {
+    // The walls only pushed particles back (Jakobsen's projection): every particle landed dead, whatever its
+    // restitution. A rigid ball bounced (its walls are rigid contacts): the two agree now.
+    const h = 2;
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const [e, bounces, tolerance] of [[1, 5, 1e-3], [0.8, 3, 1e-2], [0, 0, 0]] as const) {
+        const world = new World({ kernel, sleeping: false, bounds: { minX: -10, maxX: 10, minY: -20, maxY: 0 } });
+        const ball = createCircle(world, { x: 0, y: -h - 0.5, radius: 0.5, restitution: e, model: 'particles' });
+        const i = ball.particles[0];
+        const p = world.particles;
+        const peaks: number[] = [];
+        let top = Infinity;
+        let falling = true;
+        for (let n = 0; n < 60 * 12 && peaks.length <= bounces; n++) {
+          world.step();
+          if (!falling) top = Math.min(top, p.y[i]);
+          if (falling && p.vy[i] < -0.1) falling = false;
+          else if (!falling && p.vy[i] >= 0) {
+            peaks.push(-(top + 0.5));
+            top = Infinity;
+            falling = true;
+          }
+        }
+        const at = `${kernel}, e ${e}`;
+        if (e === 0) expect(peaks.length === 0 || peaks[0] < 0.01, `${at}: ${peaks[0]}`).to.equal(true);
+        for (let k = 1; k <= bounces; k++) expect(peaks[k - 1], `${at}, bounce ${k}`).to.be.closeTo(h * e ** (2 * k), tolerance * h * e ** (2 * k));
+      }
+  });
+
+  it("the bounds' side walls and corners bounce a particle ball without gravity at its speed (e = 1) or e times it", () => {
+    for (const e of [1, 0.5]) {
+      const world = new World({ sleeping: false, gravity: { x: 0, y: 0 }, bounds: { minX: -5, maxX: 5, minY: -5, maxY: 5 } });
+      // Aimed at the corner (4.5, 4.5): it meets both walls at once.
+      const ball = createCircle(world, { x: 0, y: 0, radius: 0.5, vx: 9, vy: 9, restitution: e, model: 'particles' });
+      const i = ball.particles[0];
+      for (let n = 0; n < 45; n++) world.step();
+      const p = world.particles;
+      expect(p.vx[i], `e ${e}`).to.be.closeTo(-9 * e, 1e-9);
+      expect(p.vy[i], `e ${e}`).to.be.closeTo(-9 * e, 1e-9);
+    }
+  });
+
   it('restitution: a ball with e = 0.8 dropped from 5 bounces back to about e²·5', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true, restitution: 0.8 });
