@@ -116,10 +116,10 @@ export class Checker {
     const n = typeof value === 'number' ? value : typeof value === 'symbol' ? NaN : Number(value);
     let problem = '';
     if (!Number.isFinite(n)) problem = 'must be a finite number';
+    else if (rule.integer && (!Number.isInteger(n) || n < (rule.min ?? -Infinity) || n > (rule.max ?? Infinity))) problem = `must be ${wholeNumber(rule)}`;
     else if (rule.positive && !(n > 0)) problem = 'must be a number > 0';
     else if (rule.min !== undefined && n < rule.min) problem = `must be >= ${rule.min}`;
     else if (rule.max !== undefined && n > rule.max) problem = `must be <= ${rule.max}`;
-    else if (rule.integer && !Number.isInteger(n)) problem = 'must be a whole number';
     else if ((rule.coordinate ?? COORDINATES.has(attribute)) && outOfRange(n)) problem = OUT_OF_RANGE;
     if (problem) {
       this.fail(attribute, value, problem);
@@ -231,3 +231,14 @@ export function misspeltAttributes(el: Element): Problem[] {
   return problems;
 }
 
+
+/**
+ * "a whole number from 2 to 4096" (or ">= 0", "<= 9"): an integer rule's whole range in one message, so 1.5 for a
+ * minimum of 2 is not told to be ">= 2".
+ */
+function wholeNumber(rule: NumberRule): string {
+  if (rule.min !== undefined && rule.max !== undefined) return `a whole number from ${rule.min} to ${rule.max}`;
+  if (rule.min !== undefined) return `a whole number >= ${rule.min}`;
+  if (rule.max !== undefined) return `a whole number <= ${rule.max}`;
+  return 'a whole number';
+}

@@ -20,6 +20,9 @@ import type { FrameStore } from '../worker/client.js';
 import { track } from '../worker/resources.js';
 import { PAINTERS, type BodyPainter, type BodyStyle, type Pen } from './bodies/index.js';
 
+/** CSS pixels kept free around the world box: half a body outline's width (1.5 px), rounded up. */
+export const EDGE_MARGIN = 1;
+
 export type { BodyStyle } from './bodies/index.js';
 
 const TAU = Math.PI * 2;
@@ -459,9 +462,14 @@ export class SceneRenderer {
     this.shownView = this.viewNow();
   }
 
-  /** viewBox fit: the whole world box visible, centred, aspect ratio kept. */
+  /**
+   * viewBox fit: the whole world box visible, centred, aspect ratio kept, within EDGE_MARGIN of the canvas' edges so
+   * an outline on the view's floor or walls (centred on the body's edge) is drawn whole.
+   */
   private fit(): void {
-    const s = Math.min(this.cssWidth / this.viewWidth, this.cssHeight / this.viewHeight);
+    const w = this.cssWidth - 2 * EDGE_MARGIN;
+    const h = this.cssHeight - 2 * EDGE_MARGIN;
+    const s = Math.min(w / this.viewWidth, h / this.viewHeight);
     this.scale = s > 0 && Number.isFinite(s) ? s : 1;
     this.offsetX = (this.cssWidth - this.viewWidth * this.scale) / 2;
     this.offsetY = (this.cssHeight - this.viewHeight * this.scale) / 2;

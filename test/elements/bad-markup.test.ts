@@ -74,6 +74,25 @@ describe('<physics-scene> bad markup', () => {
     expect([d.bodyCount, d.linkCount]).to.deep.equal([2, 1]);
   });
 
+  it('a whole-number attribute names its whole range: columns="1.5" is not told "must be >= 2"', async () => {
+    console.warn = () => {};
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount(
+      'width="10" height="10"',
+      `<physics-cloth id="sheet" x="2" y="1" columns="1.5" rows="5000" spacing="0.3"></physics-cloth>
+       <physics-rope id="line" x1="6" y1="1" x2="8" y2="1" segments="2.5"></physics-rope>
+       <physics-pin body="line" x="8" y="1" particle="-1"></physics-pin>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    const seen = errors.map((e) => [e.element.localName, e.attribute, e.value, e.message]);
+    expect(seen, JSON.stringify(seen)).to.have.deep.members([
+      ['physics-cloth', 'columns', '1.5', 'must be a whole number from 2 to 4096'],
+      ['physics-cloth', 'rows', '5000', 'must be a whole number from 2 to 4096'],
+      ['physics-rope', 'segments', '2.5', 'must be a whole number from 1 to 10000'],
+      ['physics-pin', 'particle', '-1', 'must be a whole number >= 0'],
+    ]);
+  });
+
   it('on a right-to-left page the messages read left to right, marked as English, and the page stays right to left', async () => {
     console.warn = () => {};
     scene = await mount('width="10" height="10"', `<physics-box x="3" y="2" width="1" wdth="3"></physics-box>`, { ready: false });

@@ -3,6 +3,7 @@
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsSceneElement } from '../../src/index.js';
 import { drawn, mount, pointerAt, simulated, steppedDrag, unmount, waitFor } from './helpers.js';
+import { EDGE_MARGIN } from '../../src/render/renderer.js';
 
 describe('<physics-scene> pointer drag', () => {
   let scene: PhysicsSceneElement | null = null;
@@ -95,9 +96,15 @@ describe('<physics-scene> pointer drag', () => {
       // A touch takes a body it sees drawn (the hit test reads the drawn outlines).
       await simulated(scene, crate);
       await drawn(scene);
+      // Where the page shows world (x, y): the renderer's fit of the 10 × 10 world in the canvas' own CSS pixels
+      // (within its edge margin), scaled as the page scales the canvas.
       const seen = (x: number, y: number) => {
-        const r = scene!.canvas!.getBoundingClientRect();
-        return { x: r.left + (x / 10) * r.width, y: r.top + (y / 10) * r.height };
+        const canvas = scene!.canvas!;
+        const r = canvas.getBoundingClientRect();
+        const w = canvas.clientWidth;
+        const h = canvas.clientHeight;
+        const s = Math.min(w - 2 * EDGE_MARGIN, h - 2 * EDGE_MARGIN) / 10;
+        return { x: r.left + (((w - 10 * s) / 2 + x * s) / w) * r.width, y: r.top + (((h - 10 * s) / 2 + y * s) / h) * r.height };
       };
       expect(scene.canvas!.getBoundingClientRect().width, 'on screen').to.be.closeTo(200, 1);
       const mapped = scene.worldToClient(3, 5);

@@ -4,11 +4,16 @@
 // back by the browser (a PointerEvent's offsetX / offsetY on the canvas: its own inverse of the transforms).
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsSceneElement } from '../../src/index.js';
+import { EDGE_MARGIN } from '../../src/render/renderer.js';
 import { colourDistance, drawn, mount, rgb, simulated, unmount, waitFor } from './helpers.js';
 
-/** 400 × 400 CSS pixels showing a 10 × 10 world: 40 pixels per unit, no letterbox. */
+/** 400 × 400 CSS pixels showing a 10 × 10 world: 39.8 pixels per unit within the renderer's 1 px edge margin. */
 const SIZE = 400;
-const PX = SIZE / 10;
+const PX = (SIZE - 2 * EDGE_MARGIN) / 10;
+
+/** Canvas CSS pixel of world coordinate u on either axis of the square scene. */
+const canvasAt = (u: number): number => EDGE_MARGIN + u * PX;
+
 const BODIES = `<physics-box id="crate" x="3" y="5" width="1.2" height="1.2" fill="#ff0000" stroke="none"></physics-box>
   <physics-box id="east" x="7" y="5" width="1.2" height="1.2" fill="#00ff00" stroke="none"></physics-box>
   <physics-box id="north" x="5" y="3" width="1.2" height="1.2" fill="#0000ff" stroke="none"></physics-box>`;
@@ -80,7 +85,7 @@ describe('<physics-scene> transformed by the page', () => {
       // Each world point: to the viewport where the transform puts it, and back to itself.
       for (const [x, y] of [[0, 0], [10, 0], [10, 10], [0, 10], [3, 5], [7, 5], [5, 3], [2.5, 7.3], [8.9, 1.1]]) {
         const client = s.worldToClient(x, y);
-        const expected = expectedClient(origin, transform, x * PX, y * PX);
+        const expected = expectedClient(origin, transform, canvasAt(x), canvasAt(y));
         expect(client.x, `client x of (${x}, ${y})`).to.be.closeTo(expected.x, 0.01);
         expect(client.y, `client y of (${x}, ${y})`).to.be.closeTo(expected.y, 0.01);
         const back = s.clientToWorld(client.x, client.y);
@@ -93,8 +98,8 @@ describe('<physics-scene> transformed by the page', () => {
       for (const [x, y, colour] of [[3, 5, '#ff0000'], [7, 5, '#00ff00'], [5, 3, '#0000ff']] as const) {
         const client = s.worldToClient(x, y);
         const seen = browserCanvasPoint(canvas, client.x, client.y);
-        expect(seen.x, `canvas x under (${x}, ${y})`).to.be.closeTo(x * PX, 0.1);
-        expect(seen.y, `canvas y under (${x}, ${y})`).to.be.closeTo(y * PX, 0.1);
+        expect(seen.x, `canvas x under (${x}, ${y})`).to.be.closeTo(canvasAt(x), 0.1);
+        expect(seen.y, `canvas y under (${x}, ${y})`).to.be.closeTo(canvasAt(y), 0.1);
         expect(colourDistance(canvasPixel(canvas, seen.x, seen.y), rgb(colour)), `colour under (${x}, ${y})`).to.be.below(8);
       }
 
@@ -102,7 +107,7 @@ describe('<physics-scene> transformed by the page', () => {
       // transform here, so that the drag tests the pointer's own mapping) takes the crate: it follows the drag (down
       // the world's y, away from the others); the others stay put.
       const press = (type: string, x: number, y: number) => {
-        const p = expectedClient(origin, transform, x * PX, y * PX);
+        const p = expectedClient(origin, transform, canvasAt(x), canvasAt(y));
         const init = { clientX: p.x, clientY: p.y, pointerId: 7, pointerType: 'mouse', isPrimary: true, button: 0, buttons: type === 'pointerup' ? 0 : 1 };
         canvas.dispatchEvent(new PointerEvent(type, { ...init, bubbles: true, composed: true, cancelable: true }));
       };
@@ -140,10 +145,11 @@ describe('<physics-scene> transformed by the page', () => {
       // The content box: inside the 3 px border and the padding; its CSS size is what the renderer draws in.
       const content = { left: box.left + 3 + 6, top: box.top + 3 + 5, width: box.width - 6 - 6 - 7, height: box.height - 6 - 5 - 4 };
       expect(box.left - s.getBoundingClientRect().left, 'the margin moved the canvas').to.be.closeTo(20, 0.01);
+      // The renderer draws the scene's SIZE × SIZE box; the browser fits that image into the content box.
       for (const [x, y] of [[0, 0], [10, 0], [10, 10], [3, 5], [8.9, 1.1]]) {
         const client = s.worldToClient(x, y);
-        expect(client.x, `client x of (${x}, ${y})`).to.be.closeTo(content.left + (x / 10) * content.width, 0.01);
-        expect(client.y, `client y of (${x}, ${y})`).to.be.closeTo(content.top + (y / 10) * content.height, 0.01);
+        expect(client.x, `client x of (${x}, ${y})`).to.be.closeTo(content.left + (canvasAt(x) * content.width) / SIZE, 0.01);
+        expect(client.y, `client y of (${x}, ${y})`).to.be.closeTo(content.top + (canvasAt(y) * content.height) / SIZE, 0.01);
         const back = s.clientToWorld(client.x, client.y);
         expect(back.x).to.be.closeTo(x, 1e-6);
         expect(back.y).to.be.closeTo(y, 1e-6);
