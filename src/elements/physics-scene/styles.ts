@@ -92,20 +92,28 @@ export const sceneStyles = css`
   .error[hidden] {
     display: none;
   }
-  /* At the top, where a scene is mostly empty (bodies fall and rest on a floor at the bottom). */
+  /* At the top, where a scene is mostly empty (bodies fall and rest on a floor at the bottom); opaque, and at least
+     about five lines tall in a small scene (a phone's), so the list reads over a busy scene and scrolls past them. */
   .error {
     position: absolute;
     left: 6px;
     right: 6px;
     top: 6px;
-    max-height: 45%;
+    max-height: min(max(45%, 7.5em), calc(100% - 12px));
     overflow: auto;
+    overscroll-behavior: contain;
     padding: 4px 8px;
     border: 1px solid #e0a090;
     border-color: light-dark(#e0a090, #9a5447);
     border-radius: 4px;
-    background: #fff3efee;
-    background: light-dark(#fff3efee, #3a1e1aee);
+    --error-paper: #fff3ef;
+    --error-paper: light-dark(#fff3ef, #3a1e1a);
+    /* A shade along the bottom edge while more lines are below (the cover, attached to the content, hides it at the
+       end): a scrolling list shows that it scrolls. */
+    background:
+      linear-gradient(transparent, var(--error-paper) 70%) center bottom / 100% 1.6em no-repeat local,
+      radial-gradient(farthest-side at 50% 100%, #8a1c0c55, transparent) center bottom / 100% 0.7em no-repeat scroll,
+      var(--error-paper);
     color: #8a1c0c;
     color: light-dark(#8a1c0c, #ffc4b8);
     font: 12px/1.35 system-ui, sans-serif;
