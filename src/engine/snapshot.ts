@@ -90,7 +90,7 @@ export const FIELDS = {
     ),
   },
   sleep: {
-    snapshotted: ['sleepTime', 'asleep', 'dynamic', 'parkedInvMass', 'parkedInvInertia', 'awakeCount', 'asleepCount', 'speedThreshold', 'timeToSleep'],
+    snapshotted: ['sleepTime', 'lastMove', 'growing', 'asleep', 'dynamic', 'parkedInvMass', 'parkedInvInertia', 'awakeCount', 'asleepCount', 'speedThreshold', 'timeToSleep'],
     notSnapshotted: {
       enabled: 'settings.sleeping',
       particleBody: 'rebuilt from the bodies by restore()',

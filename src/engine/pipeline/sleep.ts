@@ -8,6 +8,11 @@ import type { ContactPairs } from './events.js';
  * inverse mass, so they cost nothing and act as static to whatever touches them; touching an awake body wakes the
  * island again, and so does anything the user does to it. When every body sleeps, a step does no work at all.
  */
+/** A step's move (squared) at least this much larger than the step before's counts as growing (1% in speed). */
+const GROWTH = 1.0201;
+/** Steps in a row of growing motion that keep a body awake however slow it still is. */
+const GROWING_STEPS = 10;
+
 export class Sleep {
   enabled = true;
   speedThreshold = 0.05;
@@ -15,6 +20,9 @@ export class Sleep {
 
   /** Per body slot. */
   sleepTime = new Float64Array(16);
+  /** The body's fastest point's squared move over the last step, and for how many steps in a row it grew. */
+  lastMove = new Float64Array(16);
+  growing = new Uint8Array(16);
   asleep = new Uint8Array(16);
   /** 1 for bodies that take part (live, with at least one movable particle when awake). */
   dynamic = new Uint8Array(16);
@@ -35,7 +43,7 @@ export class Sleep {
 
   /** Rebuilds the particle → body map and the cross-body links (outside step(), when the topology changed). */
   rebuild(slots: number, particleCount: number, bodyParticles: (slot: number) => Int32Array | null): void {
-    for (const name of ['sleepTime', 'asleep', 'dynamic', 'parent', 'islandMin'] as const) {
+    for (const name of ['sleepTime', 'lastMove', 'growing', 'asleep', 'dynamic', 'parent', 'islandMin'] as const) {
       (this as unknown as Record<string, Float64Array>)[name] = grown((this as unknown as Record<string, Float64Array>)[name], slots);
     }
     this.particleBody = grown(this.particleBody, particleCount);
@@ -103,7 +111,12 @@ export class Sleep {
         if (d2 > fastest) fastest = d2;
       }
       this.dynamic[s] = movable;
-      this.sleepTime[s] = movable && fastest < limit2 ? this.sleepTime[s] + dt : 0;
+      // A body leaving an unstable balance (a box on its corner a hair off, a ball on a peak) speeds up step after
+      // step from almost nothing: still slower than the threshold after timeToSleep, it fell asleep balanced.
+      const grows = fastest > GROWTH * this.lastMove[s];
+      this.lastMove[s] = fastest;
+      this.growing[s] = grows ? Math.min(this.growing[s] + 1, GROWING_STEPS) : 0;
+      this.sleepTime[s] = movable && fastest < limit2 && this.growing[s] < GROWING_STEPS ? this.sleepTime[s] + dt : 0;
     }
     // Contacts join islands; an awake body touching a sleeping one wakes it.
     this.joinTouching(c, bodyParticles, p);

@@ -230,6 +230,21 @@ describe('pipeline: sleeping', () => {
     expect(world.settled).to.equal(false);
   });
 
+  it('a box balanced on its corner a hair off (10⁻³, 10⁻⁴ rad) topples instead of falling asleep balanced', () => {
+    // Its corner speeds up from almost nothing, step after step, and was still under the sleep threshold after
+    // timeToSleep: both fell asleep at step 30 on their corner. Now they lie flat (and sleep there).
+    const square = [{ x: -0.5, y: -0.5 }, { x: 0.5, y: -0.5 }, { x: 0.5, y: 0.5 }, { x: -0.5, y: 0.5 }];
+    for (const off of [1e-3, 1e-4]) {
+      const world = new World();
+      world.addRigidBody({ points: square.map((p) => ({ x: 20 * p.x, y: p.y })), x: 0, y: 0.5, type: 'static', friction: 0.8 });
+      const box = world.addRigidBody({ points: square, x: 0, y: -Math.SQRT1_2 - 1e-4, angle: Math.PI / 4 + off, friction: 0.8 });
+      for (let k = 0; k < 600; k++) world.step();
+      const turned = world.bodyPose(box).angle - Math.PI / 4;
+      expect(Math.abs(Math.abs(turned) - Math.PI / 4), `${off} rad off: turned ${turned.toFixed(3)}`).to.be.below(0.01);
+      expect(world.settled, `${off} rad off: asleep at last`).to.equal(true);
+    }
+  });
+
   it('a box dropped on a sleeping pile wakes it', () => {
     const { world, bodies } = scene('stack');
     for (let k = 0; k < 120; k++) world.step();
