@@ -1024,6 +1024,26 @@ describe('rigid bodies: stacks, pyramids, heavy loads', () => {
     }
   });
 
+  it('towers whose boxes grow heavier upward, each 1.5× to 10× the one below, stand: overlaps under 1% of a box (both kernels)', () => {
+    // The shock sweep was for contacts across masses 10× apart: a tower of 6 boxes each 5× the one below sank 69% of
+    // a box into itself, each 8× or 10× collapsed, 16 boxes each 1.9× too. It now also takes a contact across 1.5×
+    // where the world's masses spread 10×.
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const [n, ratio] of [[6, 3], [6, 5], [6, 8], [6, 10], [4, 30], [10, 1.5], [16, 1.9]] as const) {
+        const world = new World({ kernel, sleeping: false });
+        world.addRigidBody({ points: box(10, 0.5), x: 0, y: 0.5, type: 'static' });
+        const tower = Array.from({ length: n }, (_, k) => world.addRigidBody({ points: box(0.5, 0.5), x: 0, y: -0.5 - k, density: ratio ** k }));
+        let deepest = 0;
+        steps(world, 300, () => {
+          tower.forEach((b, k) => {
+            const below = k === 0 ? 0 : world.bodyPose(tower[k - 1]).y - 0.5;
+            deepest = Math.max(deepest, world.bodyPose(b).y + 0.5 - below);
+          });
+        });
+        expect(deepest, `${kernel}: ${n} boxes, each ${ratio}×`).to.be.below(0.01);
+      }
+  });
+
   it('a box 30× to 1000× heavier resting on a light one is still (no creeping approach speed), does not hop, and sleeps', () => {
     for (const kernel of ['js', 'wasm'] as const)
       for (const ratio of [30, 100, 1000])
