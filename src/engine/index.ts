@@ -1,5 +1,6 @@
 // physics-elements/engine: the headless engine. No DOM, no worker, no p5: runs in Node, a worker or a page.
 export { World, BODY_KINDS, DEFAULT_LIMITS, MAX_STEP_SECONDS, MIN_STEP_SECONDS } from './world.js';
+export { WORLD_BOUNDS } from './pipeline/events.js';
 export type {
   WorldOptions, WorldSnapshot, ParticleOptions, DistanceOptions, AngleOptions, SpringOptions, PinOptions, AreaOptions,
   BodyKind, ConstraintKind, Vec2, Handle, Integrator, Bounds, ColliderOptions, Limits, GrabOptions, RayCastHit,

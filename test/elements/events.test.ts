@@ -1,7 +1,7 @@
 // physics-collision: detail names the two body elements, the normal and the depth; events cross the worker
 // boundary only while someone listens.
 import { expect } from '@open-wc/testing';
-import type { PhysicsBoxElement, PhysicsCollisionDetail, PhysicsSceneElement } from '../../src/index.js';
+import type { PhysicsBoxElement, PhysicsCircleElement, PhysicsCollisionDetail, PhysicsSceneElement } from '../../src/index.js';
 import { mount, stepUntil, unmount } from './helpers.js';
 
 describe('<physics-scene> collision events', () => {
@@ -33,6 +33,21 @@ describe('<physics-scene> collision events', () => {
     const off = await scene.diagnostics();
     expect(off.events).to.equal(false);
     expect(off.eventsSent).to.be.at.least(1);
+  });
+
+  it("a body landing on the view's floor fires physics-collision with b null, the normal from it into the floor; thrown off, physics-collision-end", async () => {
+    scene = await mount('width="10" height="10" gravity="0 20" paused', `<physics-circle id="ball" x="5" y="6" radius="0.5"></physics-circle>`);
+    const begins: PhysicsCollisionDetail[] = [];
+    const ends: PhysicsCollisionDetail[] = [];
+    scene.addEventListener('physics-collision', (e) => begins.push(e.detail));
+    scene.addEventListener('physics-collision-end', (e) => ends.push(e.detail));
+    await stepUntil(scene, () => begins.length > 0, 'a landing');
+    const ball = scene.querySelector('#ball');
+    expect([begins[0].a, begins[0].b]).to.deep.equal([ball, null]);
+    expect([begins[0].normal.x, begins[0].normal.y]).to.deep.equal([0, 1]);
+    (ball as PhysicsCircleElement).velocity = '0 -12';
+    await stepUntil(scene, () => ends.length > 0, 'the ball thrown off the floor');
+    expect([ends[0].a, ends[0].b]).to.deep.equal([ball, null]);
   });
 
   it('a touching body that is removed or rebuilt ends its pairs, naming its element; a reset ends every pair, then they begin again', async () => {

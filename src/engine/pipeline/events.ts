@@ -12,9 +12,13 @@ export interface ContactPairs {
 }
 import { KeyTable } from './key-table.js';
 
+/** The body handle events give the world's bounds (a rigid body landing on the bounds' floor: bodyB = WORLD_BOUNDS). */
+export const WORLD_BOUNDS = -1;
+
 /**
  * Collision events of the last step: a 'begin' when two bodies start touching, an 'end' when they stop. Filled
- * after each step from the contacts that acted; read them before the next step. Body fields hold body handles.
+ * after each step from the contacts that acted; read them before the next step. Body fields hold body handles, and
+ * bodyB WORLD_BOUNDS for a rigid body and the world's bounds (particles meet the bounds without contacts: none).
  */
 export class CollisionEvents {
   count = 0;
@@ -48,6 +52,8 @@ export class CollisionEvents {
 }
 
 const SLOTS = 4194304;
+/** The slot that stands for the world's bounds in a pair's key (after every body's). */
+const WORLD = SLOTS - 1;
 
 /** Turns the touching contacts of each step into begin/end events. */
 export class EventTracker {
@@ -86,7 +92,7 @@ export class EventTracker {
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
       if (lo !== slot && hi !== slot) continue;
-      this.ended.push(handleOf(lo), handleOf(hi));
+      this.ended.push(handleOf(lo), hi === WORLD ? WORLD_BOUNDS : handleOf(hi));
       // A tombstone: lookups probe past it, and no pair matches it.
       table.keys[h] = -2;
     }
@@ -94,8 +100,8 @@ export class EventTracker {
 
   /**
    * The contacts of both tables that acted this step (`touched`) give the touching body pairs; `handleOf` maps a
-   * body slot to its handle. Contacts with the world's bounds (body −1) make no events. Pairs whose body was removed
-   * end first, under the handles they had (bodyRemoved).
+   * body slot to its handle. A contact with the world's bounds (body −1) pairs its body with WORLD_BOUNDS, the body
+   * first. Pairs whose body was removed end first, under the handles they had (bodyRemoved).
    */
   update(c: ContactPairs, r: ContactPairs, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
@@ -113,7 +119,12 @@ export class EventTracker {
       const v = cur.values[h];
       const t = v % 2 === 0 ? c : r;
       const i = (v - (v % 2)) / 2;
-      out.push(0, handleOf(t.bodyA[i]), handleOf(t.bodyB[i]), t.nx[i], t.ny[i], Math.max(0, t.depth[i]));
+      const a = t.bodyA[i];
+      const b = t.bodyB[i];
+      const depth = Math.max(0, t.depth[i]);
+      // The normal runs from A to B: the world as A turns it.
+      if (a < 0) out.push(0, handleOf(b), WORLD_BOUNDS, -t.nx[i], -t.ny[i], depth);
+      else out.push(0, handleOf(a), b < 0 ? WORLD_BOUNDS : handleOf(b), t.nx[i], t.ny[i], depth);
     }
     const prev = this.previous;
     for (let h = 0; h < prev.keys.length; h++) {
@@ -121,8 +132,8 @@ export class EventTracker {
       if (key < 0 || cur.find(key) >= 0) continue;
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
-      if (!alive(lo) || !alive(hi)) continue;
-      out.push(1, handleOf(lo), handleOf(hi), 0, 0, 0);
+      if (!alive(lo) || (hi !== WORLD && !alive(hi))) continue;
+      out.push(1, handleOf(lo), hi === WORLD ? WORLD_BOUNDS : handleOf(hi), 0, 0, 0);
     }
   }
 
@@ -134,9 +145,9 @@ export class EventTracker {
     const cur = this.current;
     for (let i = 0; i < t.count; i++) {
       if (!t.touched[i]) continue;
-      const a = t.bodyA[i];
-      const b = t.bodyB[i];
-      if (a < 0 || b < 0) continue;
+      const a = t.bodyA[i] < 0 ? WORLD : t.bodyA[i];
+      const b = t.bodyB[i] < 0 ? WORLD : t.bodyB[i];
+      if (a === b) continue;
       const lo = a < b ? a : b;
       const hi = a < b ? b : a;
       const slot = cur.insert(lo * SLOTS + hi, i * 2 + table);

@@ -1,5 +1,5 @@
 import { expect } from 'chai';
-import { World, createBox, createCircle, createCloth, createPolygon, createSoftBody, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
+import { World, WORLD_BOUNDS, createBox, createCircle, createCloth, createPolygon, createSoftBody, buildScene, catalogue, type BoxOptions } from '../../../src/engine/index.js';
 import { scene } from './scene-helpers.js';
 
 describe('pipeline: narrow phase modes', () => {
@@ -65,6 +65,33 @@ describe('pipeline: events', () => {
     expect(seen.length).to.equal(landed + 1);
     expect(seen[landed].type).to.equal(1);
     expect(seen[landed].step).to.equal(60);
+  });
+
+  it("a rigid body landing on the world's bounds begins a pair with WORLD_BOUNDS (normal from the body into the floor), thrown off it ends", () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, bounds: { minX: -5, minY: -20, maxX: 5, maxY: 0 } });
+    const box = createBox(world, { x: 0, y: -2, width: 1, height: 1 });
+    const seen: number[][] = [];
+    const collect = (step: number) => {
+      const e = world.events;
+      for (let i = 0; i < e.count; i++) seen.push([e.type[i], e.bodyA[i], e.bodyB[i], e.normalX[i], e.normalY[i], step]);
+    };
+    for (let k = 0; k < 60; k++) {
+      world.step();
+      collect(k);
+    }
+    expect(seen.length, JSON.stringify(seen)).to.be.greaterThan(0);
+    const [type, a, b, nx, ny, step] = seen[0];
+    expect([type, a, b]).to.deep.equal([0, box.body, WORLD_BOUNDS]);
+    expect([nx, ny]).to.deep.equal([0, 1]);
+    // Free fall of 1.5 units: ≈ step 32.
+    expect(step).to.be.within(30, 34);
+    const landed = seen.length;
+    world.applyBodyImpulse(box.body, 0, -8);
+    for (let k = 60; k < 70; k++) {
+      world.step();
+      collect(k);
+    }
+    expect(seen.slice(landed).map((e) => e.slice(0, 3))).to.deep.equal([[1, box.body, WORLD_BOUNDS]]);
   });
 
   it('cost nothing until read: no tracking before the first read; from it on, a landing begins and a throw ends', () => {
