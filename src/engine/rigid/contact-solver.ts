@@ -1126,7 +1126,6 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
       }
     } else if (use0) p0 = k00 > 0 ? (t0 - v0) / k00 : 0;
     else if (use1) p1 = wn[j] > 0 ? (t1 - v1) / wn[j] : 0;
-    if ((globalThis as any).DBG && e > 0) console.log('vel', JSON.stringify({ i, two, acted0, acted1, use0, use1, v0, v1, kept0: c.approach[i], kept1: two ? c.approach[j] : 0, own0: c.ownApproach[i], own1: two ? c.ownApproach[j] : 0, t0, t1, p0, p1, gap0: gap[i], gap1: gap[j] }, (k, v) => typeof v === 'number' ? Math.round(v * 1e4) / 1e4 : v));
     if (p0 === 0 && p1 === 0) {
       if (two) i++;
       continue;
