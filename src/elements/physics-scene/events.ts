@@ -21,7 +21,10 @@ export interface PhysicsCollisionDetail {
   b: Element | null;
   /** Contact normal from a to b (zero for end events). */
   normal: { x: number; y: number };
-  /** Deepest overlap seen when the contact began (0 for end events). */
+  /**
+   * How deep the bodies overlapped when their contact was found: usually 0, since contacts are found before bodies
+   * touch (0 for end events).
+   */
   depth: number;
 }
 

@@ -26,7 +26,10 @@ export class CollisionEvents {
   type = new Uint8Array(64);
   bodyA = new Float64Array(64);
   bodyB = new Float64Array(64);
-  /** Normal from A to B and the deepest overlap seen (begin events; 0 for end events). */
+  /**
+   * Normal from A to B and the overlap when the contact was found, usually 0 as contacts are found before bodies
+   * touch (begin events; 0 for end events).
+   */
   normalX = new Float64Array(64);
   normalY = new Float64Array(64);
   depth = new Float64Array(64);
