@@ -1,5 +1,5 @@
 import { ParticleFlag, type ParticleStore } from './particles.js';
-import { BOUNCE_THRESHOLD, hit, impact } from './impact.js';
+import { BOUNCE_THRESHOLD, hit, impactInSubstep } from './impact.js';
 import { grown } from './table.js';
 
 /** An axis-aligned box the particles cannot leave (Jakobsen's first collision). */
@@ -105,25 +105,19 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
     const body = owner.ownerOf(i);
     const e = body >= 0 ? restitution[body] : 0;
     if (e > 0 && approachX[i] === approachX[i]) {
-      bounce(approachX[i], sideX[i] * motion[0], hits.overlapX[i], motion);
+      hit[0] = approachX[i];
+      hit[1] = sideX[i] * motion[0];
+      impactInSubstep(hits.overlapX, i, motion);
       if (hit[0] < -BOUNCE_THRESHOLD) p.vx[i] = sideX[i] * (-e * hit[0] + hit[1]);
     }
     if (e > 0 && approachY[i] === approachY[i]) {
-      bounce(approachY[i], sideY[i] * motion[1], hits.overlapY[i], motion);
+      hit[0] = approachY[i];
+      hit[1] = sideY[i] * motion[1];
+      impactInSubstep(hits.overlapY, i, motion);
       if (hit[0] < -BOUNCE_THRESHOLD) p.vy[i] = sideY[i] * (-e * hit[0] + hit[1]);
     }
     approachX[i] = NaN;
     approachY[i] = NaN;
   }
   hits.count = 0;
-}
-
-/** impact() of a hit at `approach` (called for bouncy particles that hit a wall only). */
-function bounce(approach: number, a: number, overlap: number, motion: Float64Array): void {
-  hit[0] = approach;
-  hit[1] = a;
-  hit[2] = overlap;
-  hit[3] = motion[2];
-  hit[4] = motion[3];
-  impact();
 }

@@ -39,7 +39,7 @@ export function detectCollisions(ctx: StepContext, dt: number): void {
   ctx.sleep.wakeTouched(ctx.contacts, ctx.rigidContacts, ctx.bodyParticlesOf, ctx.particles);
   ctx.rigidAnchors.restore(ctx.rigidContacts, slop, ctx.particles, dt);
   ctx.anchors.restore(ctx.contacts);
-  recordApproachSpeeds(ctx.contacts, ctx.particles);
+  recordApproachSpeeds(ctx.contacts, ctx.particles, ctx.substepMotion);
 }
 
 /**

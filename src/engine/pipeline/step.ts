@@ -55,10 +55,7 @@ export function step(ctx: StepContext, dt: number): void {
   const shifted = shiftVerletOffsets(ctx, h, 1);
   ctx.pinMoved = false;
   recordStartPositions(ctx);
-  detectCollisions(ctx, dt);
-  kernelAtWork(ctx)?.beginStep(ctx);
-  // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
-  if (ctx.kernel) ctx.kernel.rigidLanes = false;
+  // Gravity and the substep, for the bounces (impact.ts): the particle contacts' approach speeds are taken in detection.
   const g = ctx.settings.gravity;
   const motion = ctx.substepMotion;
   motion[0] = g.x;
@@ -67,6 +64,10 @@ export function step(ctx: StepContext, dt: number): void {
   motion[3] = verletHalfSubstep(ctx.settings.integrator, h);
   ctx.rigidContacts.motion.set(motion);
   if (ctx.settings.bounds) ctx.wallHits.reserve(ctx.particles.count);
+  detectCollisions(ctx, dt);
+  kernelAtWork(ctx)?.beginStep(ctx);
+  // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
+  if (ctx.kernel) ctx.kernel.rigidLanes = false;
   const t1 = ctx.measureTimings ? performance.now() : 0;
   // Gravity and the user's forces hold for the whole step: their accelerations once, unless springs add to them.
   if (!perSubstepAccelerations(ctx) && !fusedAccelerations(ctx)) accelerate(ctx, h);

@@ -10,7 +10,7 @@
 import type { BodyRows } from './rows.js';
 import { rim, rimArc, type RigidContacts } from './contacts.js';
 import { grown } from '../table.js';
-import { BOUNCE_THRESHOLD, hit, impact } from '../impact.js';
+import { BOUNCE_THRESHOLD, hit, impactInSubstep } from '../impact.js';
 
 /** B's current normal point [0, 1] and material point [2, 3] of the point being solved (pointsOf). */
 const at = new Float64Array(4);
@@ -288,10 +288,7 @@ function impactSpeed(c: RigidContacts, r: BodyRows, i: number): void {
   }
   hit[0] = vel[0];
   hit[1] = share * (m[0] * c.nx[i] + m[1] * c.ny[i]);
-  hit[2] = c.gap[i];
-  hit[3] = m[2];
-  hit[4] = m[3];
-  impact();
+  impactInSubstep(c.gap, i, m);
   vel[0] = hit[0];
   vel[1] = hit[1];
 }
