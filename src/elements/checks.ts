@@ -231,7 +231,6 @@ export function misspeltAttributes(el: Element): Problem[] {
   return problems;
 }
 
-
 /**
  * "a whole number from 2 to 4096" (or ">= 0", "<= 9"): an integer rule's whole range in one message, so 1.5 for a
  * minimum of 2 is not told to be ">= 2".

@@ -2,17 +2,17 @@ import { grown } from '../table.js';
 import { ParticleFlag, type ParticleStore } from '../particles.js';
 import type { ContactPairs } from './events.js';
 
+/** A step's move (squared) at least this much larger than the step before's counts as growing (1% in speed). */
+const GROWTH = 1.0201;
+/** Steps in a row of growing motion that keep a body awake however slow it still is. */
+const GROWING_STEPS = 10;
+
 /**
  * Sleeping: bodies that have all moved slower than `speedThreshold` for `timeToSleep` seconds, together with every
  * body they touch or are constrained to (their island), stop being simulated. A sleeping body's particles park their
  * inverse mass, so they cost nothing and act as static to whatever touches them; touching an awake body wakes the
  * island again, and so does anything the user does to it. When every body sleeps, a step does no work at all.
  */
-/** A step's move (squared) at least this much larger than the step before's counts as growing (1% in speed). */
-const GROWTH = 1.0201;
-/** Steps in a row of growing motion that keep a body awake however slow it still is. */
-const GROWING_STEPS = 10;
-
 export class Sleep {
   enabled = true;
   speedThreshold = 0.05;
