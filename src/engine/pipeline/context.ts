@@ -55,8 +55,8 @@ export class StepContext {
   readonly rigidContacts = new RigidContacts();
   /** The particles the world's bounds pushed back in the current substep, for their bounces. */
   readonly wallHits = new WallHits();
-  /** This step's gravity and substep: [gx, gy, h, h/2 under position Verlet or 0] (impact.ts). */
-  readonly substepMotion = new Float64Array(4);
+  /** This step's gravity and substep: [gx, gy, h, h/2 under position Verlet or 0] (impact.ts); the rigid contacts' own. */
+  readonly substepMotion = this.rigidContacts.motion;
   readonly rigidNarrowPhase = new RigidNarrowPhase();
   /** Friction anchors of last step's rigid contact points, by feature. */
   readonly rigidAnchors = new RigidAnchorCache();

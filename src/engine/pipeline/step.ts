@@ -62,7 +62,6 @@ export function step(ctx: StepContext, dt: number): void {
   motion[1] = g.y;
   motion[2] = h;
   motion[3] = verletHalfSubstep(ctx.settings.integrator, h);
-  ctx.rigidContacts.motion.set(motion);
   if (ctx.settings.bounds) ctx.wallHits.reserve(ctx.particles.count);
   detectCollisions(ctx, dt);
   kernelAtWork(ctx)?.beginStep(ctx);

@@ -118,7 +118,7 @@ export class RigidContacts extends Table {
   shockReady = false;
   shockCount = 0;
   /**
-   * Set by the step (StepContext.motion): gravity, the substep and half of it under position Verlet (0 for the Euler
+   * Set by the step (the same array as StepContext.substepMotion): gravity, the substep and half of it under position Verlet (0 for the Euler
    * integrators, whose stored velocity is the one at the substep's end). A bounce's impact speed needs them
    * (keepApproach); with the defaults, 0, the approach is the stored normal speed itself.
    */
