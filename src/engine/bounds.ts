@@ -1,6 +1,7 @@
 import { ParticleFlag, type ParticleStore } from './particles.js';
 import { BOUNCE_THRESHOLD, hit, impactInSubstep } from './impact.js';
 import { grown } from './table.js';
+import { setSide, type FrameBounces } from './pipeline/frame-bounces.js';
 
 /** An axis-aligned box the particles cannot leave (Jakobsen's first collision). */
 export interface Bounds {
@@ -98,7 +99,7 @@ export function frictionShift(t: number, limit: number): number {
  * it, at rest along the wall's normal). `motion` is [gx, gy, h, half], gravity and the substep as impact() takes
  * them. Clears `hits` for the next substep.
  */
-export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { ownerOf(i: number): number }, restitution: Float64Array, motion: Float64Array): void {
+export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { ownerOf(i: number): number }, restitution: Float64Array, motion: Float64Array, bounces: FrameBounces): void {
   const { approachX, approachY, sideX, sideY } = hits;
   for (let k = 0; k < hits.count; k++) {
     const i = hits.list[k];
@@ -108,16 +109,32 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
       hit[0] = approachX[i];
       hit[1] = sideX[i] * motion[0];
       impactInSubstep(hits.overlapX, i, motion);
-      if (hit[0] < -BOUNCE_THRESHOLD) p.vx[i] = sideX[i] * (-e * hit[0] + hit[1]);
+      if (hit[0] < -BOUNCE_THRESHOLD) {
+        p.vx[i] = sideX[i] * (-e * hit[0] + hit[1]);
+        wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1);
+      }
     }
     if (e > 0 && approachY[i] === approachY[i]) {
       hit[0] = approachY[i];
       hit[1] = sideY[i] * motion[1];
       impactInSubstep(hits.overlapY, i, motion);
-      if (hit[0] < -BOUNCE_THRESHOLD) p.vy[i] = sideY[i] * (-e * hit[0] + hit[1]);
+      if (hit[0] < -BOUNCE_THRESHOLD) {
+        p.vy[i] = sideY[i] * (-e * hit[0] + hit[1]);
+        wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1);
+      }
     }
     approachX[i] = NaN;
     approachY[i] = NaN;
   }
   hits.count = 0;
+}
+
+/** Particle i's bounce off a wall on `axis` (x 0, y 1; `side` +1 the low wall), for its frame (frame-bounces.ts). */
+function wallBounce(bounces: FrameBounces, p: ParticleStore, i: number, axis: 0 | 1, side: 1 | -1): void {
+  const k = bounces.add();
+  setSide(bounces, k, 0, -1, -1);
+  setSide(bounces, k, 1, i, -1);
+  bounces.nx[k] = axis === 0 ? side : 0;
+  bounces.ny[k] = axis === 1 ? side : 0;
+  bounces.target[k] = side * (axis === 0 ? p.vx[i] : p.vy[i]);
 }

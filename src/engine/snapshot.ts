@@ -61,6 +61,7 @@ export const FIELDS = {
       bodyParticlesOf: CALLBACK,
       rigidContacts: `${PER_STEP} (cleared by restore())`,
       wallHits: 'per substep: cleared by the velocity pass of the substep that noted them',
+      frameBounces: 'per substep: cleared by the velocity pass of the substep that noted them',
       substepMotion: 'set at the start of each step from the settings',
       jointedPairs: 'rebuilt from the joints by restore()',
       jointedApart: 'rebuilt from the joints by restore()',

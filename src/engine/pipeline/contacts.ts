@@ -2,6 +2,7 @@ import { Table } from '../table.js';
 import type { ParticleStore } from '../particles.js';
 import { KeyTable } from './key-table.js';
 import { BOUNCE_THRESHOLD, hit, impact } from '../impact.js';
+import { setSide, type FrameBounces } from './frame-bounces.js';
 
 /**
  * Contacts found by the narrow phase once per step, solved by projection inside every relaxation sweep (seed 4.2).
@@ -311,7 +312,7 @@ function hitSpeed(c: Contacts, p: ParticleStore, i: number, alpha: number, nx: n
  * penetration out within one substep of length h would leave the bodies flying apart at depth / h, and resting
  * stacks would keep a residual normal jitter that lets them creep.
  */
-export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
+export function solveContactVelocities(c: Contacts, p: ParticleStore, bounces: FrameBounces): void {
   const { vx, vy, invMass } = p;
   const { v, e0, e1, lambda, restitution, normalSpeed, solvedNx, solvedNy, solvedAlpha } = c;
   for (let i = 0, n = c.count; i < n; i++) {
@@ -342,6 +343,14 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore): void {
     if (restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD) {
       target = -restitution[i] * normalSpeed[i] + c.lift[i];
       normalSpeed[i] = 0; // bounce once per impact
+      // For a particle frame on either side (frame-bounces.ts).
+      const k = bounces.add();
+      setSide(bounces, k, 0, i0, i1);
+      bounces.alpha[2 * k] = i1 >= 0 ? alpha : 0;
+      setSide(bounces, k, 1, iv, -1);
+      bounces.nx[k] = nx;
+      bounces.ny[k] = ny;
+      bounces.target[k] = target;
     }
     const dl = (target - vn) / w;
     vx[iv] += wv * dl * nx;

@@ -16,6 +16,7 @@ import { RigidNarrowPhase } from './rigid-narrowphase.js';
 import { RigidAnchorCache, RigidContacts } from '../rigid/contacts.js';
 import { RigidShapes } from '../rigid/shapes.js';
 import { WallHits } from '../bounds.js';
+import { FrameBounces } from './frame-bounces.js';
 import { chooseKernel, type KernelDiagnostics } from '../kernel/choice.js';
 import type { WasmKernel } from '../kernel/wasm-kernel.js';
 
@@ -55,6 +56,8 @@ export class StepContext {
   readonly rigidContacts = new RigidContacts();
   /** The particles the world's bounds pushed back in the current substep, for their bounces. */
   readonly wallHits = new WallHits();
+  /** The current substep's bounces, solved again for the particle frames in them (frame-bounces.ts). */
+  readonly frameBounces = new FrameBounces();
   /** This step's gravity and substep: [gx, gy, h, h/2 under position Verlet or 0] (impact.ts); the rigid contacts' own. */
   readonly substepMotion = this.rigidContacts.motion;
   readonly rigidNarrowPhase = new RigidNarrowPhase();

@@ -3,7 +3,7 @@
 //   prepare → detect collisions (bounding boxes, broad phase, narrow phase) → accelerate (gravity and forces, once)
 //   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → aim grabs → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
-//     velocities (linear, angular) → contact velocities (particle, rigid)
+//     velocities (linear, angular) → contact velocities (particle, walls, rigid) → particle frames' bounces
 //   → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
@@ -26,6 +26,7 @@ import { aimGrabs, beginGrabStep, solveGrabs } from '../constraints/grab.js';
 import { integrate, shiftVerletVelocities, updateVelocities, verletHalfSubstep } from '../integrate.js';
 import { bounceOffBounds, keepInBounds } from '../bounds.js';
 import { solveContacts, solveContactVelocities } from './contacts.js';
+import { solveFrameBounces } from './frame-bounces.js';
 import { detectCollisions } from './collide.js';
 import { keepRowsFinite } from './guard.js';
 import { ensureTopology } from './topology.js';
@@ -133,12 +134,15 @@ export function substep(ctx: StepContext, h: number): void {
   if (velocityKernel && settings.integrator !== 'explicit-euler') velocityKernel.updateVelocities(particles, h);
   else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
-  if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles);
-  if (ctx.wallHits.count > 0) bounceOffBounds(ctx.wallHits, particles, ctx.bodies, ctx.colliders.restitution, ctx.substepMotion);
+  const bounces = ctx.frameBounces;
+  if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles, bounces);
+  if (ctx.wallHits.count > 0) bounceOffBounds(ctx.wallHits, particles, ctx.bodies, ctx.colliders.restitution, ctx.substepMotion, bounces);
   if (rigid.count > 0) {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidVelocities();
-    else solveRigidContactVelocities(rigid, particles, h);
+    else solveRigidContactVelocities(rigid, particles, h, bounces);
   }
+  // The bounces again, with each particle frame in them as one rigid body.
+  if (bounces.count > 0) solveFrameBounces(bounces, particles, ctx.bodies);
 }
 
 /** The stored v − ½·g·h made for substeps of length h instead of the reference ones (sign 1), or back (−1); false when both are h. */

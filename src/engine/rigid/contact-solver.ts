@@ -11,6 +11,7 @@ import type { BodyRows } from './rows.js';
 import { rim, rimArc, type RigidContacts } from './contacts.js';
 import { grown } from '../table.js';
 import { BOUNCE_THRESHOLD, hit, impactInSubstep } from '../impact.js';
+import { setSide, type FrameBounces } from '../pipeline/frame-bounces.js';
 
 /** B's current normal point [0, 1] and material point [2, 3] of the point being solved (pointsOf). */
 const at = new Float64Array(4);
@@ -26,6 +27,8 @@ const vel = new Float64Array(4);
 
 /** Per point at offset o of the velocity pass (vel's), 1 when its target is a bounce (target(), settle()). */
 const bounce = new Uint8Array(4);
+/** Where the velocity pass notes its bounces (solveRigidContactVelocities' argument; null: nowhere). */
+let bounces: FrameBounces | null = null;
 
 /**
  * Lever arms, their cross products with the normal and the tangent, and the weights along both, from the bodies'
@@ -1016,6 +1019,23 @@ function settle(c: RigidContacts, i: number, o: number): void {
   if (bounce[o] === 0) return;
   c.approach[i] = Infinity;
   c.lift[i] = vel[o + 1];
+  // For a particle frame on side B (frame-bounces.ts).
+  const b = bounces;
+  if (b === null) return;
+  const k = b.add();
+  const j = 2 * k;
+  setSide(b, k, 0, c.a[i], -1);
+  b.armX[j] = c.lAx[i];
+  b.armY[j] = c.lAy[i];
+  setSide(b, k, 1, c.b[i], c.b2[i]);
+  if (c.b2[i] >= 0) b.alpha[j + 1] = c.alpha[i];
+  else {
+    b.armX[j + 1] = c.lBx[i];
+    b.armY[j + 1] = c.lBy[i];
+  }
+  b.nx[k] = c.nx[i];
+  b.ny[k] = c.ny[i];
+  b.target[k] = vel[o + 1];
 }
 
 /** Point i's sides get the normal velocity impulse pt[o+1] (per unit inverse mass; prepared levers). */
@@ -1037,7 +1057,8 @@ function kick(c: RigidContacts, r: BodyRows, i: number, o: number): void {
  * rotation they share, and a box dropped flat would bounce crooked. A point whose partner acted while it was itself
  * within two substeps' approach of touching (a box landing flat by a hair's tilt) joins it.
  */
-export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number): void {
+export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: number, frameBounces: FrameBounces | null = null): void {
+  bounces = frameBounces;
   const { vx, vy, omega, invMass, invInertia } = r;
   const { a: A, b: B, b2: B2, pair, nx: NX, ny: NY, lAx, lAy, lBx, lBy, rnA, rnB, wn, kn01, lambdaN, gap, restitution, impulseN, friction, depth } = c;
   for (let i = 0, n = c.count; i < n; i++) {

@@ -1,0 +1,285 @@
+// Bounces of particle frames: a box or polygon of model 'particles' is corner particles braced by sticks (seed 2.3).
+// The velocity passes bounce the corner that touched alone; the sticks then share its new speed with the corners
+// still falling, and a frame with e = 1 dropped from 2 rose to 0.03. After the passes, this phase solves the
+// substep's bounces again with each frame that took part as one rigid body (its particles' mass, centre, inertia,
+// momentum and angular momentum), so the impulse reaches the whole frame as it reaches a rigid box.
+import { ParticleFlag, type ParticleStore } from '../particles.js';
+import type { BodyRegistry } from '../body-registry.js';
+import { grown } from '../table.js';
+
+/** Gauss–Seidel passes over a substep's bounces (a box landing flat converges by 1/9 a pass). */
+const PASSES = 8;
+
+/** A frame's reals in FrameBounces.frame: mass, centre, inertia about it, velocity, angular velocity. */
+const FRAME_FIELDS = 7;
+const MASS = 0;
+const CX = 1;
+const CY = 2;
+const INERTIA = 3;
+const VX = 4;
+const VY = 5;
+const OMEGA = 6;
+
+/**
+ * The bounces the velocity passes applied in the current substep (particle contacts, the walls, rigid contacts):
+ * per bounce its two sides, the normal n from side 0 to side 1, and the target normal speed of side 1 relative to
+ * side 0 along n. Side s of bounce k is at 2k + s: up to two rows p0, p1 (p1 = −1: one; p0 = −1: the world) with p1's
+ * weight `alpha` on an edge, and the contact point's arm from a rigid row's centre (0 for a particle).
+ */
+export class FrameBounces {
+  count = 0;
+  p0 = new Int32Array(16);
+  p1 = new Int32Array(16);
+  alpha = new Float64Array(16);
+  armX = new Float64Array(16);
+  armY = new Float64Array(16);
+  nx = new Float64Array(8);
+  ny = new Float64Array(8);
+  target = new Float64Array(8);
+  /** The impulse this phase added (never below 0: it pushes only). */
+  impulse = new Float64Array(8);
+
+  /** Per particle row: its frame's index in `frame` while the phase runs (−1: none; −2: a body that is no frame). */
+  frameOf = new Int32Array(16).fill(-1);
+  /** Per frame: its body slot, and its reals (FRAME_FIELDS each). */
+  frameSlot = new Int32Array(4);
+  frame = new Float64Array(4 * FRAME_FIELDS);
+  frameCount = 0;
+  /** Bodies met that are no frames (their rows marked −2 until the phase ends). */
+  rejected = new Int32Array(4);
+  rejectedCount = 0;
+
+  /** A new bounce's index; the caller writes its columns (sides with setSide's layout). */
+  add(): number {
+    const k = this.count++;
+    if (k >= this.nx.length) {
+      for (const name of ['nx', 'ny', 'target', 'impulse'] as const) this[name] = grown(this[name], k + 1);
+      for (const name of ['p0', 'p1'] as const) this[name] = grown(this[name], 2 * this.nx.length);
+      for (const name of ['alpha', 'armX', 'armY'] as const) this[name] = grown(this[name], 2 * this.nx.length);
+    }
+    return k;
+  }
+}
+
+/** Side s of bounce k: one row (p1 = −1) or an edge (p1 with weight alpha), and an arm from a rigid row's centre. */
+export function setSide(b: FrameBounces, k: number, s: 0 | 1, p0: number, p1: number): void {
+  const j = 2 * k + s;
+  b.p0[j] = p0;
+  b.p1[j] = p1;
+  b.alpha[j] = 0;
+  b.armX[j] = 0;
+  b.armY[j] = 0;
+}
+
+/** Velocity of side j's point (written to `sv`), its inverse mass along n, and impulses along n. */
+const sv = new Float64Array(2);
+
+/**
+ * Solves the substep's bounces again with every particle frame in them as one rigid body, and clears the list. A
+ * frame is a body of kind 'rigid' built of particles (none a rigid row), all of them movable.
+ */
+export function solveFrameBounces(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry): void {
+  if (b.count === 0) return;
+  if (b.frameOf.length < p.count) {
+    const had = b.frameOf.length;
+    b.frameOf = grown(b.frameOf, p.count);
+    b.frameOf.fill(-1, had);
+  }
+  b.frameCount = 0;
+  b.rejectedCount = 0;
+  for (let j = 0, n = 2 * b.count; j < n; j++) {
+    if (b.p0[j] >= 0) loadFrame(b, p, bodies, b.p0[j]);
+  }
+  if (b.frameCount > 0) {
+    b.impulse.fill(0, 0, b.count);
+    for (let pass = 0; pass < PASSES; pass++) {
+      for (let k = 0; k < b.count; k++) {
+        const j0 = 2 * k;
+        const j1 = j0 + 1;
+        if (!inFrame(b, j0) && !inFrame(b, j1)) continue;
+        const nx = b.nx[k];
+        const ny = b.ny[k];
+        sideVelocity(b, p, j1);
+        let vn = sv[0] * nx + sv[1] * ny;
+        sideVelocity(b, p, j0);
+        vn -= sv[0] * nx + sv[1] * ny;
+        const w = inverseMass(b, p, j0, nx, ny) + inverseMass(b, p, j1, nx, ny);
+        if (w === 0) continue;
+        const was = b.impulse[k];
+        const now = Math.max(0, was + (b.target[k] - vn) / w);
+        b.impulse[k] = now;
+        push(b, p, j1, now - was, nx, ny);
+        push(b, p, j0, was - now, nx, ny);
+      }
+    }
+    for (let f = 0; f < b.frameCount; f++) writeBack(b, p, bodies.particles[b.frameSlot[f]], f * FRAME_FIELDS);
+  }
+  for (let f = 0; f < b.frameCount; f++) for (const i of bodies.particles[b.frameSlot[f]]) b.frameOf[i] = -1;
+  for (let r = 0; r < b.rejectedCount; r++) for (const i of bodies.particles[b.rejected[r]]) b.frameOf[i] = -1;
+  b.count = 0;
+}
+
+function inFrame(b: FrameBounces, j: number): boolean {
+  return b.p0[j] >= 0 && b.frameOf[b.p0[j]] >= 0;
+}
+
+/** Row i's body as a rigid frame: its mass, centre, inertia and rigid motion (momentum, angular momentum). */
+function loadFrame(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry, i: number): void {
+  if (b.frameOf[i] !== -1 || p.flags[i] & ParticleFlag.Rigid) return;
+  const slot = bodies.ownerOf(i);
+  if (slot < 0) return;
+  const rows = bodies.particles[slot];
+  const { x, y, vx, vy, invMass } = p;
+  let movable = bodies.kind[slot] === 'rigid' && rows.length >= 2;
+  for (const r of rows) if (invMass[r] === 0 || p.flags[r] & ParticleFlag.Rigid) movable = false;
+  if (!movable) {
+    if (b.rejectedCount === b.rejected.length) b.rejected = grown(b.rejected, b.rejectedCount + 1);
+    b.rejected[b.rejectedCount++] = slot;
+    for (const r of rows) b.frameOf[r] = -2;
+    return;
+  }
+  const f = b.frameCount++;
+  if (f === b.frameSlot.length) {
+    b.frameSlot = grown(b.frameSlot, f + 1);
+    b.frame = grown(b.frame, b.frameSlot.length * FRAME_FIELDS);
+  }
+  b.frameSlot[f] = slot;
+  let m = 0;
+  let mx = 0;
+  let my = 0;
+  let px = 0;
+  let py = 0;
+  for (const r of rows) {
+    const mr = 1 / invMass[r];
+    m += mr;
+    mx += mr * x[r];
+    my += mr * y[r];
+    px += mr * vx[r];
+    py += mr * vy[r];
+    b.frameOf[r] = f;
+  }
+  const cx = mx / m;
+  const cy = my / m;
+  const ux = px / m;
+  const uy = py / m;
+  let inertia = 0;
+  let spin = 0;
+  for (const r of rows) {
+    const mr = 1 / invMass[r];
+    const rx = x[r] - cx;
+    const ry = y[r] - cy;
+    inertia += mr * (rx * rx + ry * ry);
+    spin += mr * (rx * (vy[r] - uy) - ry * (vx[r] - ux));
+  }
+  const o = f * FRAME_FIELDS;
+  b.frame[o + MASS] = m;
+  b.frame[o + CX] = cx;
+  b.frame[o + CY] = cy;
+  b.frame[o + INERTIA] = inertia;
+  b.frame[o + VX] = ux;
+  b.frame[o + VY] = uy;
+  b.frame[o + OMEGA] = inertia > 0 ? spin / inertia : 0;
+}
+
+/** Side j's contact point: its edge point, or its row plus the arm. */
+function pointOf(b: FrameBounces, p: ParticleStore, j: number): void {
+  const q0 = b.p0[j];
+  const q1 = b.p1[j];
+  if (q1 >= 0) {
+    const a = b.alpha[j];
+    sv[0] = (1 - a) * p.x[q0] + a * p.x[q1];
+    sv[1] = (1 - a) * p.y[q0] + a * p.y[q1];
+  } else {
+    sv[0] = p.x[q0] + b.armX[j];
+    sv[1] = p.y[q0] + b.armY[j];
+  }
+}
+
+function sideVelocity(b: FrameBounces, p: ParticleStore, j: number): void {
+  const q0 = b.p0[j];
+  if (q0 < 0) {
+    sv[0] = 0;
+    sv[1] = 0;
+    return;
+  }
+  const f = b.frameOf[q0];
+  if (f >= 0) {
+    const o = f * FRAME_FIELDS;
+    pointOf(b, p, j);
+    const w = b.frame[o + OMEGA];
+    const rx = sv[0] - b.frame[o + CX];
+    const ry = sv[1] - b.frame[o + CY];
+    sv[0] = b.frame[o + VX] - w * ry;
+    sv[1] = b.frame[o + VY] + w * rx;
+    return;
+  }
+  const q1 = b.p1[j];
+  if (q1 >= 0) {
+    const a = b.alpha[j];
+    sv[0] = (1 - a) * p.vx[q0] + a * p.vx[q1];
+    sv[1] = (1 - a) * p.vy[q0] + a * p.vy[q1];
+  } else {
+    const w = p.omega[q0];
+    sv[0] = p.vx[q0] - w * b.armY[j];
+    sv[1] = p.vy[q0] + w * b.armX[j];
+  }
+}
+
+function inverseMass(b: FrameBounces, p: ParticleStore, j: number, nx: number, ny: number): number {
+  const q0 = b.p0[j];
+  if (q0 < 0) return 0;
+  const f = b.frameOf[q0];
+  if (f >= 0) {
+    const o = f * FRAME_FIELDS;
+    pointOf(b, p, j);
+    const rn = (sv[0] - b.frame[o + CX]) * ny - (sv[1] - b.frame[o + CY]) * nx;
+    return 1 / b.frame[o + MASS] + (rn * rn) / b.frame[o + INERTIA];
+  }
+  const q1 = b.p1[j];
+  if (q1 >= 0) {
+    const a = b.alpha[j];
+    return (1 - a) * (1 - a) * p.invMass[q0] + a * a * p.invMass[q1];
+  }
+  const rn = b.armX[j] * ny - b.armY[j] * nx;
+  return p.invMass[q0] + p.invInertia[q0] * rn * rn;
+}
+
+/** Impulse P along n on side j. */
+function push(b: FrameBounces, p: ParticleStore, j: number, P: number, nx: number, ny: number): void {
+  const q0 = b.p0[j];
+  if (q0 < 0 || P === 0) return;
+  const f = b.frameOf[q0];
+  if (f >= 0) {
+    const o = f * FRAME_FIELDS;
+    pointOf(b, p, j);
+    const rn = (sv[0] - b.frame[o + CX]) * ny - (sv[1] - b.frame[o + CY]) * nx;
+    const im = 1 / b.frame[o + MASS];
+    b.frame[o + VX] += im * P * nx;
+    b.frame[o + VY] += im * P * ny;
+    b.frame[o + OMEGA] += (rn * P) / b.frame[o + INERTIA];
+    return;
+  }
+  const q1 = b.p1[j];
+  if (q1 >= 0) {
+    const a = b.alpha[j];
+    p.vx[q0] += (1 - a) * p.invMass[q0] * P * nx;
+    p.vy[q0] += (1 - a) * p.invMass[q0] * P * ny;
+    p.vx[q1] += a * p.invMass[q1] * P * nx;
+    p.vy[q1] += a * p.invMass[q1] * P * ny;
+  } else {
+    p.vx[q0] += p.invMass[q0] * P * nx;
+    p.vy[q0] += p.invMass[q0] * P * ny;
+    p.omega[q0] += p.invInertia[q0] * (b.armX[j] * ny - b.armY[j] * nx) * P;
+  }
+}
+
+/** The frame's particles move with its rigid motion. */
+function writeBack(b: FrameBounces, p: ParticleStore, rows: Int32Array, o: number): void {
+  const cx = b.frame[o + CX];
+  const cy = b.frame[o + CY];
+  const w = b.frame[o + OMEGA];
+  for (const r of rows) {
+    p.vx[r] = b.frame[o + VX] - w * (p.y[r] - cy);
+    p.vy[r] = b.frame[o + VY] + w * (p.x[r] - cx);
+  }
+}
