@@ -284,8 +284,8 @@ export function contactOffset(particles: number, bodies: number): number {
   return HEADER + 2 * particles + POSE * bodies + AABB * bodies;
 }
 
-/** Collision events: [type (0 begin, 1 end), keyA, keyB, normalX, normalY, depth] per event. */
-export const EVENT = 6;
+/** Collision events: [type (0 begin, 1 end), keyA, keyB, normalX, normalY, depth, speed] per event. */
+export const EVENT = 7;
 
 /** Messages on the frame port (worker → page). */
 export type PortMessage =

@@ -1,4 +1,4 @@
-// physics-collision: detail names the two body elements, the normal and the depth; events cross the worker
+// physics-collision: detail names the two body elements, the normal, the depth and the speed; events cross the worker
 // boundary only while someone listens.
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsCircleElement, PhysicsCollisionDetail, PhysicsSceneElement } from '../../src/index.js';
@@ -8,7 +8,7 @@ describe('<physics-scene> collision events', () => {
   let scene: PhysicsSceneElement | null = null;
   afterEach(() => unmount(scene));
 
-  it('fires physics-collision with the two body elements, the normal and the depth, only while listened to', async () => {
+  it('fires physics-collision with the two body elements, the normal, the depth and the speed they met at, only while listened to', async () => {
     // Paused until the listener is in place: a running crate could land before the engine was asked for events.
     scene = await mount('width="10" height="10" gravity="0 20" paused', `
       <physics-box id="floor" x="5" y="9.5" width="10" height="1" static></physics-box>
@@ -29,6 +29,8 @@ describe('<physics-scene> collision events', () => {
     expect(hit.normal.y * (hit.a === floor ? -1 : 1)).to.be.closeTo(1, 1e-6);
     expect(hit.depth).to.be.at.least(0);
     expect(hit.depth).to.be.below(0.1);
+    // Dropped 2.5 (from 6.5 to the floor's top at 9) under g = 20: √(2·20·2.5) = 10.
+    expect(hit.speed).to.be.closeTo(10, 0.02);
     scene.removeEventListener('physics-collision', listener);
     const off = await scene.diagnostics();
     expect(off.events).to.equal(false);

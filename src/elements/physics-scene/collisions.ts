@@ -60,7 +60,7 @@ export class CollisionEventsController implements ReactiveController {
     if (this.options.engine.live) this.options.engine.send('setParams', { events: on });
   }
 
-  /** Events from the engine: [type (0 begin, 1 end), key a, key b, normal x, normal y, depth] each. */
+  /** Events from the engine: [type (0 begin, 1 end), key a, key b, normal x, normal y, depth, speed] each. */
   readonly dispatch = (data: Float64Array, count: number): void => {
     for (let k = 0; k < count; k++) {
       const o = k * EVENT;
@@ -84,7 +84,7 @@ export class CollisionEventsController implements ReactiveController {
         b = ka < kb ? told![1] : told![0];
         this.touching.delete(pair);
       }
-      firePhysicsEvent(this.host, begin ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5] });
+      firePhysicsEvent(this.host, begin ? 'physics-collision' : 'physics-collision-end', { a, b, normal: { x: data[o + 3], y: data[o + 4] }, depth: data[o + 5], speed: data[o + 6] });
     }
   };
 
@@ -95,7 +95,7 @@ export class CollisionEventsController implements ReactiveController {
   endAll(): void {
     const pairs = [...this.touching.values()];
     this.touching.clear();
-    for (const [a, b] of pairs) firePhysicsEvent(this.host, 'physics-collision-end', { a, b, normal: { x: 0, y: 0 }, depth: 0 });
+    for (const [a, b] of pairs) firePhysicsEvent(this.host, 'physics-collision-end', { a, b, normal: { x: 0, y: 0 }, depth: 0, speed: 0 });
   }
 
 }

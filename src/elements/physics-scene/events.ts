@@ -26,6 +26,11 @@ export interface PhysicsCollisionDetail {
    * touch (0 for end events).
    */
   depth: number;
+  /**
+   * How fast they met: the speed along the normal at which they approached where they touched (world units per
+   * second, gravity's pull over the last gap included; 0 for end events). For a sound's volume or a score.
+   */
+  speed: number;
 }
 
 /** Detail of `physics-ready`. */

@@ -59,7 +59,7 @@ let callTimeoutMs = 8000;
  * @summary A declarative 2D physics scene.
  *
  * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
- * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth}`, a and b are the body elements, b null for the view's floor and walls). Sent only while a listener is registered on the scene (or `collision-events` is set).
+ * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth, speed}`, a and b are the body elements, b null for the view's floor and walls). Sent only while a listener is registered on the scene (or `collision-events` is set).
  * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`).
  * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
  *

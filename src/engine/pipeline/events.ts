@@ -1,4 +1,8 @@
 import { grown } from '../table.js';
+import type { ParticleStore } from '../particles.js';
+import type { Contacts } from './contacts.js';
+import type { RigidContacts } from '../rigid/contacts.js';
+import { hit, impact } from '../impact.js';
 
 /** What events and sleeping read of a contact table (the particle contacts and the rigid ones both have it). */
 export interface ContactPairs {
@@ -33,8 +37,13 @@ export class CollisionEvents {
   normalX = new Float64Array(64);
   normalY = new Float64Array(64);
   depth = new Float64Array(64);
+  /**
+   * How fast the bodies approached along the normal where they met, at the start of the step they began touching
+   * (units/s, ≥ 0; begin events; 0 for end events): how hard they hit, for a sound's volume or a score.
+   */
+  speed = new Float64Array(64);
 
-  push(type: number, a: number, b: number, nx: number, ny: number, depth: number): void {
+  push(type: number, a: number, b: number, nx: number, ny: number, depth: number, speed: number): void {
     if (this.count === this.type.length) {
       const n = this.count * 2;
       this.type = grown(this.type, n);
@@ -43,6 +52,7 @@ export class CollisionEvents {
       this.normalX = grown(this.normalX, n);
       this.normalY = grown(this.normalY, n);
       this.depth = grown(this.depth, n);
+      this.speed = grown(this.speed, n);
     }
     const i = this.count++;
     this.type[i] = type;
@@ -51,6 +61,7 @@ export class CollisionEvents {
     this.normalX[i] = nx;
     this.normalY[i] = ny;
     this.depth[i] = depth;
+    this.speed[i] = speed;
   }
 }
 
@@ -71,6 +82,22 @@ export class EventTracker {
   active = false;
   /** End events of pairs whose body was removed since the last step: handle a, handle b, … (reported next step). */
   private ended: number[] = [];
+  /** Every row's velocity and angular velocity at the start of the step, for the begin events' speeds. */
+  private vx = new Float64Array(16);
+  private vy = new Float64Array(16);
+  private omega = new Float64Array(16);
+
+  /** Notes the velocities the step starts from (while events are collected). */
+  recordStartVelocities(p: ParticleStore): void {
+    if (this.vx.length < p.count) {
+      this.vx = grown(this.vx, p.count);
+      this.vy = grown(this.vy, p.count);
+      this.omega = grown(this.omega, p.count);
+    }
+    this.vx.set(p.vx.subarray(0, p.count));
+    this.vy.set(p.vy.subarray(0, p.count));
+    this.omega.set(p.omega.subarray(0, p.count));
+  }
 
   /** Starts collecting: the pairs touching now are taken as already touching (no begin for them next step). */
   activate(c: ContactPairs, r: ContactPairs): void {
@@ -106,9 +133,9 @@ export class EventTracker {
    * body slot to its handle. A contact with the world's bounds (body −1) pairs its body with WORLD_BOUNDS, the body
    * first. Pairs whose body was removed end first, under the handles they had (bodyRemoved).
    */
-  update(c: ContactPairs, r: ContactPairs, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
+  update(c: Contacts, r: RigidContacts, p: ParticleStore, motion: Float64Array, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
-    for (let k = 0; k < this.ended.length; k += 2) out.push(1, this.ended[k], this.ended[k + 1], 0, 0, 0);
+    for (let k = 0; k < this.ended.length; k += 2) out.push(1, this.ended[k], this.ended[k + 1], 0, 0, 0, 0);
     this.ended.length = 0;
     [this.current, this.previous] = [this.previous, this.current];
     const cur = this.current;
@@ -125,9 +152,17 @@ export class EventTracker {
       const a = t.bodyA[i];
       const b = t.bodyB[i];
       const depth = Math.max(0, t.depth[i]);
+      if (t === c) this.particleNormalSpeed(c, i, p.invMass);
+      else this.rigidNormalSpeed(r, i, p.invMass);
+      // Its speed at the hit: gravity over the gap at detection too (impact.ts).
+      hit[1] = hit[1] * (motion[0] * t.nx[i] + motion[1] * t.ny[i]);
+      hit[2] = -t.depth[i];
+      hit[3] = motion[3];
+      impact();
+      const speed = hit[0] < 0 ? -hit[0] : 0;
       // The normal runs from A to B: the world as A turns it.
-      if (a < 0) out.push(0, handleOf(b), WORLD_BOUNDS, -t.nx[i], -t.ny[i], depth);
-      else out.push(0, handleOf(a), b < 0 ? WORLD_BOUNDS : handleOf(b), t.nx[i], t.ny[i], depth);
+      if (a < 0) out.push(0, handleOf(b), WORLD_BOUNDS, -t.nx[i], -t.ny[i], depth, speed);
+      else out.push(0, handleOf(a), b < 0 ? WORLD_BOUNDS : handleOf(b), t.nx[i], t.ny[i], depth, speed);
     }
     const prev = this.previous;
     for (let h = 0; h < prev.keys.length; h++) {
@@ -136,8 +171,49 @@ export class EventTracker {
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
       if (!alive(lo) || (hi !== WORLD && !alive(hi))) continue;
-      out.push(1, handleOf(lo), hi === WORLD ? WORLD_BOUNDS : handleOf(hi), 0, 0, 0);
+      out.push(1, handleOf(lo), hi === WORLD ? WORLD_BOUNDS : handleOf(hi), 0, 0, 0, 0);
     }
+  }
+
+  /**
+   * Particle contact i's normal speed at the step's start, B's vertex relative to A's edge point (negative:
+   * approaching), into hit[0]; into hit[1] how much of gravity moves them apart (B's movable share less A's).
+   */
+  private particleNormalSpeed(c: Contacts, i: number, invMass: Float64Array): void {
+    const { vx, vy } = this;
+    const v = c.v[i];
+    const e0 = c.e0[i];
+    const e1 = c.e1[i];
+    const al = e1 >= 0 ? c.solvedAlpha[i] : 0;
+    const ux = vx[v] - (1 - al) * vx[e0] - (e1 >= 0 ? al * vx[e1] : 0);
+    const uy = vy[v] - (1 - al) * vy[e0] - (e1 >= 0 ? al * vy[e1] : 0);
+    hit[0] = ux * c.nx[i] + uy * c.ny[i];
+    hit[1] = (invMass[v] > 0 ? 1 : 0) - (1 - al) * (invMass[e0] > 0 ? 1 : 0) - (e1 >= 0 && invMass[e1] > 0 ? al : 0);
+  }
+
+  /** Rigid contact i's normal speed at the step's start, B's point relative to A's, and gravity's share, into hit. */
+  private rigidNormalSpeed(r: RigidContacts, i: number, invMass: Float64Array): void {
+    const { vx, vy, omega } = this;
+    const a = r.a[i];
+    let share = invMass[a] > 0 ? -1 : 0;
+    let ux = -(vx[a] - omega[a] * r.lAy[i]);
+    let uy = -(vy[a] + omega[a] * r.lAx[i]);
+    const b = r.b[i];
+    if (b >= 0) {
+      const b2 = r.b2[i];
+      if (b2 >= 0) {
+        const al = r.alpha[i];
+        ux += (1 - al) * vx[b] + al * vx[b2];
+        uy += (1 - al) * vy[b] + al * vy[b2];
+        share += (1 - al) * (invMass[b] > 0 ? 1 : 0) + (invMass[b2] > 0 ? al : 0);
+      } else {
+        ux += vx[b] - omega[b] * r.lBy[i];
+        uy += vy[b] + omega[b] * r.lBx[i];
+        share += invMass[b] > 0 ? 1 : 0;
+      }
+    }
+    hit[0] = ux * r.nx[i] + uy * r.ny[i];
+    hit[1] = share;
   }
 
   /**

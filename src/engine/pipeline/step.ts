@@ -64,6 +64,7 @@ export function step(ctx: StepContext, dt: number): void {
   motion[2] = h;
   motion[3] = verletHalfSubstep(ctx.settings.integrator, h);
   if (ctx.settings.bounds) ctx.wallHits.reserve(ctx.particles.count);
+  if (ctx.eventTracker.active) ctx.eventTracker.recordStartVelocities(ctx.particles);
   detectCollisions(ctx, dt);
   kernelAtWork(ctx)?.beginStep(ctx);
   // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
@@ -84,7 +85,7 @@ export function step(ctx: StepContext, dt: number): void {
   keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
-  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
+  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.particles, ctx.substepMotion, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
   updateSleep(ctx, dt);
   if (shifted) shiftVerletOffsets(ctx, h, -1);
   clearForces(ctx);

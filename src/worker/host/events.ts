@@ -29,6 +29,7 @@ export class EventQueue {
       this.#data[o++] = e.normalX[k];
       this.#data[o++] = e.normalY[k];
       this.#data[o++] = e.depth[k];
+      this.#data[o++] = e.speed[k];
     }
     this.#count += e.count;
   }

@@ -65,15 +65,15 @@ describe('CollisionEventsController', () => {
     document.addEventListener('physics-collision-end', record);
     try {
       // Begin (1, 2); end (2, 9), never begun; end (2, 1): the pair begun, named either way round; begin again.
-      r.collisions.dispatch(new Float64Array([0, 1, 2, 0, -1, 0.02, 1, 2, 9, 0, 0, 0, 1, 2, 1, 0, 0, 0, 0, 2, 1, 0, 1, 0.01]), 4);
+      r.collisions.dispatch(new Float64Array([0, 1, 2, 0, -1, 0.02, 3.5, 1, 2, 9, 0, 0, 0, 0, 1, 2, 1, 0, 0, 0, 0, 0, 2, 1, 0, 1, 0.01, 0.25]), 4);
     } finally {
       document.removeEventListener('physics-collision', record);
       document.removeEventListener('physics-collision-end', record);
     }
     expect(seen).to.deep.equal([
-      ['physics-collision', { a: r.a, b: r.b, normal: { x: 0, y: -1 }, depth: 0.02 }, true, true],
-      ['physics-collision-end', { a: r.b, b: r.a, normal: { x: 0, y: 0 }, depth: 0 }, true, true],
-      ['physics-collision', { a: r.b, b: r.a, normal: { x: 0, y: 1 }, depth: 0.01 }, true, true],
+      ['physics-collision', { a: r.a, b: r.b, normal: { x: 0, y: -1 }, depth: 0.02, speed: 3.5 }, true, true],
+      ['physics-collision-end', { a: r.b, b: r.a, normal: { x: 0, y: 0 }, depth: 0, speed: 0 }, true, true],
+      ['physics-collision', { a: r.b, b: r.a, normal: { x: 0, y: 1 }, depth: 0.01, speed: 0.25 }, true, true],
     ]);
   });
 });

@@ -94,6 +94,41 @@ describe('pipeline: events', () => {
     expect(seen.slice(landed).map((e) => e.slice(0, 3))).to.deep.equal([[1, box.body, WORLD_BOUNDS]]);
   });
 
+  it('a begin event carries the speed the bodies met at: √(2gh) for a drop from h onto the bounds (a rigid ball), a rigid or a particle floor, a thrown speed without gravity, 0 for end events (both kernels)', () => {
+    // depth is usually 0 (contacts are found before bodies touch): a page that plays a sound had nothing to scale it by.
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const floor of ['bounds', 'rigid', 'particles'] as const)
+        for (const model of ['rigid', 'particles'] as const)
+          for (const drop of [0.5, 2, 6]) {
+            // (Particles meet the bounds without contacts, so without events.)
+            if (floor === 'bounds' && model === 'particles') continue;
+            const world = new World({ kernel, gravity: { x: 0, y: 10 }, sleeping: false, bounds: floor === 'bounds' ? { minX: -10, maxX: 10, minY: -20, maxY: 0 } : null });
+            if (floor !== 'bounds') createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true, model: floor });
+            createCircle(world, { x: 0, y: -drop - 0.5, radius: 0.5, model });
+            let speed = NaN;
+            for (let k = 0; k < 120 && speed !== speed; k++) {
+              world.step();
+              const e = world.events;
+              for (let i = 0; i < e.count; i++) if (e.type[i] === 0) speed = e.speed[i];
+            }
+            expect(speed, `${kernel}, ${floor} floor, ${model} ball from ${drop}`).to.be.closeTo(Math.sqrt(20 * drop), 2e-3 * Math.sqrt(20 * drop));
+          }
+    const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
+    createCircle(world, { x: 0, y: 0, radius: 0.5, mass: 1 });
+    createBox(world, { x: -3, y: 0, width: 1, height: 1, vx: 7, angularVelocity: 0 });
+    const seen: number[][] = [];
+    for (let k = 0; k < 60; k++) {
+      world.step();
+      const e = world.events;
+      for (let i = 0; i < e.count; i++) seen.push([e.type[i], e.speed[i]]);
+    }
+    expect(seen[0][0]).to.equal(0);
+    expect(seen[0][1]).to.be.closeTo(7, 1e-9);
+    const ends = seen.filter(([type]) => type === 1);
+    expect(ends.length).to.be.greaterThan(0);
+    for (const [, speed] of ends) expect(speed).to.equal(0);
+  });
+
   it('cost nothing until read: no tracking before the first read; from it on, a landing begins and a throw ends', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     createBox(world, { x: 0, y: 0.5, width: 10, height: 1, static: true });
