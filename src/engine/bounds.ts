@@ -25,11 +25,30 @@ export class WallHits {
   sideY = new Float64Array(0);
   list = new Int32Array(0);
   count = 0;
+  /**
+   * The step's touches, for collision events: per particle the first wall it met this step (1 + the wall: 1 low x,
+   * 2 high x, 3 low y, 4 high y; 0 none), its normal speed toward it and how deep it was then; the particles listed.
+   */
+  stepWall = new Uint8Array(0);
+  stepApproach = new Float64Array(0);
+  stepOverlap = new Float64Array(0);
+  stepList = new Int32Array(0);
+  stepCount = 0;
+
+  /** Forgets the last step's touches. */
+  beginStep(): void {
+    for (let k = 0; k < this.stepCount; k++) this.stepWall[this.stepList[k]] = 0;
+    this.stepCount = 0;
+  }
 
   /** Room for n particles (grows, never in a step that does not add particles). */
   reserve(n: number): void {
     const had = this.approachX.length;
     if (had >= n) return;
+    this.stepWall = grown(this.stepWall, n);
+    this.stepApproach = grown(this.stepApproach, n);
+    this.stepOverlap = grown(this.stepOverlap, n);
+    this.stepList = grown(this.stepList, n);
     this.approachX = grown(this.approachX, n);
     this.approachY = grown(this.approachY, n);
     this.approachX.fill(NaN, had);
@@ -61,6 +80,14 @@ export function keepInBounds(p: ParticleStore, b: Bounds, friction: number, hits
     if (y[i] < b.minY + r) dy = b.minY + r - y[i];
     else if (y[i] > b.maxY - r) dy = b.maxY - r - y[i];
     if (dx === 0 && dy === 0) continue;
+    if (hits.stepWall[i] === 0) {
+      // The step's first touch, for the collision events (a floor before a side wall when both).
+      const s = (dy !== 0 ? dy : dx) > 0 ? 1 : -1;
+      hits.stepWall[i] = (dy !== 0 ? 3 : 1) + (s > 0 ? 0 : 1);
+      hits.stepApproach[i] = s * (dy !== 0 ? p.vy[i] : p.vx[i]);
+      hits.stepOverlap[i] = s * (dy !== 0 ? dy : dx);
+      hits.stepList[hits.stepCount++] = i;
+    }
     // The first push of the substep on each axis, for the bounce (written out: doubles passed to a call are boxed).
     const { approachX, approachY } = hits;
     if (approachX[i] !== approachX[i] && approachY[i] !== approachY[i]) hits.list[hits.count++] = i;

@@ -87,7 +87,7 @@ export class World {
   get areas(): AreaConstraints { return this.ctx.constraints.areas; }
   get grabs(): GrabConstraints { return this.ctx.constraints.grabs; }
   /** Begin/end collision events of the last step (collected from the first time they are read); WORLD_BOUNDS as a body: the bounds. */
-  get events(): CollisionEvents { this.ctx.eventTracker.activate(this.ctx.contacts, this.ctx.rigidContacts); return this.ctx.events; }
+  get events(): CollisionEvents { this.ctx.eventTracker.activate(this.ctx.contacts, this.ctx.rigidContacts, this.ctx.wallHits, this.ctx.bodies); return this.ctx.events; }
   /** Handles of the distance constraints that broke in the last step (see DistanceOptions.breakStrain). */
   get breaks(): { count: number; handles: Float64Array } { return this.ctx.breaks; }
   /** Collision state: per body slot colliders, the last step's candidate pairs and contacts. */

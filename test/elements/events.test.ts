@@ -37,8 +37,9 @@ describe('<physics-scene> collision events', () => {
     expect(off.eventsSent).to.be.at.least(1);
   });
 
-  it("a body landing on the view's floor fires physics-collision with b null, the normal from it into the floor; thrown off, physics-collision-end", async () => {
-    scene = await mount('width="10" height="10" gravity="0 20" paused', `<physics-circle id="ball" x="5" y="6" radius="0.5"></physics-circle>`);
+  for (const model of ['rigid', 'particles'])
+  it(`a body (${model}) landing on the view's floor fires physics-collision with b null, the normal from it into the floor; thrown off, physics-collision-end`, async () => {
+    scene = await mount('width="10" height="10" gravity="0 20" paused', `<physics-circle id="ball" x="5" y="6" radius="0.5" model="${model}"></physics-circle>`);
     const begins: PhysicsCollisionDetail[] = [];
     const ends: PhysicsCollisionDetail[] = [];
     scene.addEventListener('physics-collision', (e) => begins.push(e.detail));
@@ -47,6 +48,8 @@ describe('<physics-scene> collision events', () => {
     const ball = scene.querySelector('#ball');
     expect([begins[0].a, begins[0].b]).to.deep.equal([ball, null]);
     expect([begins[0].normal.x, begins[0].normal.y]).to.deep.equal([0, 1]);
+    // Dropped 3.5 (from 6.5 to the floor at 10) under g = 20.
+    expect(begins[0].speed).to.be.closeTo(Math.sqrt(2 * 20 * 3.5), 0.03);
     (ball as PhysicsCircleElement).velocity = '0 -12';
     await stepUntil(scene, () => ends.length > 0, 'the ball thrown off the floor');
     expect([ends[0].a, ends[0].b]).to.deep.equal([ball, null]);

@@ -17,7 +17,7 @@ export interface PhysicsErrorDetail {
 /** Detail of `physics-collision` and `physics-collision-end`. */
 export interface PhysicsCollisionDetail {
   a: Element | null;
-  /** The other body's element; null for the view's floor and walls (`bounds="view"`, met by rigid bodies). */
+  /** The other body's element; null for the view's floor and walls (`bounds="view"`). */
   b: Element | null;
   /** Contact normal from a to b (zero for end events). */
   normal: { x: number; y: number };

@@ -2,7 +2,8 @@ import { grown } from '../table.js';
 import type { ParticleStore } from '../particles.js';
 import type { Contacts } from './contacts.js';
 import type { RigidContacts } from '../rigid/contacts.js';
-import { hit, impact } from '../impact.js';
+import { hit, impact, impactInSubstep } from '../impact.js';
+import type { WallHits } from '../bounds.js';
 
 /** What events and sleeping read of a contact table (the particle contacts and the rigid ones both have it). */
 export interface ContactPairs {
@@ -22,7 +23,7 @@ export const WORLD_BOUNDS = -1;
 /**
  * Collision events of the last step: a 'begin' when two bodies start touching, an 'end' when they stop. Filled
  * after each step from the contacts that acted; read them before the next step. Body fields hold body handles, and
- * bodyB WORLD_BOUNDS for a rigid body and the world's bounds (particles meet the bounds without contacts: none).
+ * bodyB WORLD_BOUNDS for a body and the world's bounds.
  */
 export class CollisionEvents {
   count = 0;
@@ -100,12 +101,13 @@ export class EventTracker {
   }
 
   /** Starts collecting: the pairs touching now are taken as already touching (no begin for them next step). */
-  activate(c: ContactPairs, r: ContactPairs): void {
+  activate(c: ContactPairs, r: ContactPairs, walls: WallHits, owner: { ownerOf(i: number): number }): void {
     if (this.active) return;
     this.active = true;
-    this.current.reset(c.count + r.count);
+    this.current.reset(c.count + r.count + walls.stepCount);
     this.collect(c, 0);
     this.collect(r, 1);
+    this.collectWalls(walls, owner);
   }
 
   /**
@@ -133,22 +135,35 @@ export class EventTracker {
    * body slot to its handle. A contact with the world's bounds (body −1) pairs its body with WORLD_BOUNDS, the body
    * first. Pairs whose body was removed end first, under the handles they had (bodyRemoved).
    */
-  update(c: Contacts, r: RigidContacts, p: ParticleStore, motion: Float64Array, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
+  update(c: Contacts, r: RigidContacts, walls: WallHits, p: ParticleStore, motion: Float64Array, owner: { ownerOf(i: number): number }, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
     for (let k = 0; k < this.ended.length; k += 2) out.push(1, this.ended[k], this.ended[k + 1], 0, 0, 0, 0);
     this.ended.length = 0;
     [this.current, this.previous] = [this.previous, this.current];
     const cur = this.current;
-    cur.reset(c.count + r.count);
+    cur.reset(c.count + r.count + walls.stepCount);
     this.collect(c, 0);
     this.collect(r, 1);
+    this.collectWalls(walls, owner);
     for (let h = 0; h < cur.keys.length; h++) {
       const key = cur.keys[h];
       if (key < 0 || this.previous.find(key) >= 0) continue;
-      // Which table and row: value = row · 2 + table.
+      // Which table and row: value = row · 3 + table (2: the walls' touches, by particle).
       const v = cur.values[h];
-      const t = v % 2 === 0 ? c : r;
-      const i = (v - (v % 2)) / 2;
+      const table = v % 3;
+      const i = (v - table) / 3;
+      if (table === 2) {
+        const wall = walls.stepWall[i] - 1;
+        const nx = wall === 0 ? -1 : wall === 1 ? 1 : 0;
+        const ny = wall === 2 ? -1 : wall === 3 ? 1 : 0;
+        // Its speed at the hit, as its bounce takes it (bounds.ts): the speed toward the wall then, and gravity.
+        hit[0] = walls.stepApproach[i];
+        hit[1] = -(motion[0] * nx + motion[1] * ny);
+        impactInSubstep(walls.stepOverlap, i, motion);
+        out.push(0, handleOf(owner.ownerOf(i)), WORLD_BOUNDS, nx, ny, walls.stepOverlap[i], hit[0] < 0 ? -hit[0] : 0);
+        continue;
+      }
+      const t = table === 0 ? c : r;
       const a = t.bodyA[i];
       const b = t.bodyB[i];
       const depth = Math.max(0, t.depth[i]);
@@ -217,7 +232,7 @@ export class EventTracker {
   }
 
   /**
-   * Adds the touching pairs of one table to `current` with their deepest contact (value row · 2 + table). A pair's
+   * Adds the touching pairs of one table to `current` with their deepest contact (value row · 3 + table). A pair's
    * contacts are all in one table: the rigid narrow phase takes every pair with a rigid body.
    */
   private collect(t: ContactPairs, table: number): void {
@@ -229,9 +244,21 @@ export class EventTracker {
       if (a === b) continue;
       const lo = a < b ? a : b;
       const hi = a < b ? b : a;
-      const slot = cur.insert(lo * SLOTS + hi, i * 2 + table);
+      const slot = cur.insert(lo * SLOTS + hi, i * 3 + table);
       const v = cur.values[slot];
-      if (v % 2 === table && t.depth[i] > t.depth[(v - table) / 2]) cur.values[slot] = i * 2 + table;
+      if (v % 3 === table && t.depth[i] > t.depth[(v - table) / 3]) cur.values[slot] = i * 3 + table;
+    }
+  }
+
+  /**
+   * Adds the bodies whose particles the bounds' walls pushed this step, paired with the world (value particle · 3 + 2):
+   * the first of its particles to touch speaks for a body (a particle of no body makes no event).
+   */
+  private collectWalls(walls: WallHits, owner: { ownerOf(i: number): number }): void {
+    for (let k = 0; k < walls.stepCount; k++) {
+      const i = walls.stepList[k];
+      const body = owner.ownerOf(i);
+      if (body >= 0) this.current.insert(body * SLOTS + WORLD, i * 3 + 2);
     }
   }
 

@@ -64,6 +64,7 @@ export function step(ctx: StepContext, dt: number): void {
   motion[2] = h;
   motion[3] = verletHalfSubstep(ctx.settings.integrator, h);
   if (ctx.settings.bounds) ctx.wallHits.reserve(ctx.particles.count);
+  ctx.wallHits.beginStep();
   if (ctx.eventTracker.active) ctx.eventTracker.recordStartVelocities(ctx.particles);
   detectCollisions(ctx, dt);
   kernelAtWork(ctx)?.beginStep(ctx);
@@ -85,7 +86,7 @@ export function step(ctx: StepContext, dt: number): void {
   keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
-  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.particles, ctx.substepMotion, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
+  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.wallHits, ctx.particles, ctx.substepMotion, ctx.bodies, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
   updateSleep(ctx, dt);
   if (shifted) shiftVerletOffsets(ctx, h, -1);
   clearForces(ctx);
