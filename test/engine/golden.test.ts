@@ -19,8 +19,8 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
   chain: '3a2adb5b0e7fd6ab',
   cloth: '4a17b850c2e2c7fc',
   thrown: 'fed4f89683c07317',
-  ragdolls: 'd7f856f055f41a13',
-  soft: 'fdc625409ad8b7a9',
+  ragdolls: '9907b724c4b27ca7',
+  soft: 'e17efac79d7fc870',
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */

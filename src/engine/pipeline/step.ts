@@ -137,8 +137,8 @@ export function substep(ctx: StepContext, h: number): void {
   else updateVelocities(particles, h, settings.integrator);
   if (ctx.rigidCount > 0) updateAngularVelocity(particles, ctx.rigidRows, ctx.rigidCount, sub);
   const bounces = ctx.frameBounces;
-  if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles, bounces);
-  if (ctx.wallHits.count > 0) bounceOffBounds(ctx.wallHits, particles, ctx.bodies, ctx.colliders.restitution, ctx.substepMotion, bounces);
+  if (ctx.contacts.count > 0) solveContactVelocities(ctx.contacts, particles, h, bounces);
+  if (ctx.wallHits.count > 0) bounceOffBounds(ctx.wallHits, particles, ctx.bodies, ctx.colliders.restitution, settings.boundsFriction, ctx.substepMotion, bounces);
   if (rigid.count > 0) {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidVelocities();
     else solveRigidContactVelocities(rigid, particles, h, bounces);

@@ -258,7 +258,7 @@ describe('solver kernel: determinism (golden hashes of the WebAssembly kernel)',
     cloth: '3bb7be7c5318fcc5',
     thrown: 'fed4f89683c07317',
     ragdolls: 'ecc386d86f8aa46f',
-    soft: '0af3b5e7cf1914b8',
+    soft: 'd35c648be4f5e5e0',
   };
 
   for (const name of SCENE_NAMES) {

@@ -141,6 +141,24 @@ describe('pipeline: motion', () => {
         }
   });
 
+  it("a particle ball thrown at 45° onto the bounds, a rigid and a particle floor leaves with Coulomb's sideways speed, max(0, 1 − μ(1 + e))·v, wherever in a step it lands", () => {
+    // Friction acted on the push out of the overlap only: with a bounce on the bounds the ball kept 7.3–12.6 of its
+    // 14.1 sideways (μ 0.5, e 1: 0), and on a particle floor all of it, bounce or not.
+    for (const floor of ['bounds', 'rigid', 'particles'] as const)
+      for (const [e, mu] of [[1, 0.5], [1, 0.2], [0.5, 0.5], [0, 0.5]] as const)
+        for (const late of [0, 0.02, 0.05, 0.08]) {
+          const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false, boundsFriction: mu, bounds: floor === 'bounds' ? { minX: -50, maxX: 50, minY: -50, maxY: 0 } : null });
+          if (floor !== 'bounds') createBox(world, { x: 0, y: 0.5, width: 100, height: 1, static: true, model: floor, friction: mu, restitution: 0 });
+          const v = 10 / Math.SQRT2;
+          const ball = createCircle(world, { x: 0, y: -2 - late, radius: 0.5, vx: v, vy: v, restitution: e, friction: mu, model: 'particles' });
+          for (let n = 0; n < 30; n++) world.step();
+          const i = world.bodyParticleIndices(ball.body)[0];
+          const at = `${floor}, e ${e}, μ ${mu}, ${late} later`;
+          expect(world.particles.vx[i], at).to.be.closeTo(Math.max(0, 1 - mu * (1 + e)) * v, 0.01 * v);
+          expect(world.particles.vy[i], at).to.be.closeTo(-e * v, 0.01 * v);
+        }
+  });
+
   it('an elastic particle frame that hits a body at rest without gravity keeps momentum and energy: head-on it stops and the other leaves at its speed', () => {
     // The sticks spread the touching corners' bounce over the frame after the fact: 44% of the energy was lost.
     for (const other of ['rigid disc', 'particle ball', 'particle frame', 'rigid box'] as const)
