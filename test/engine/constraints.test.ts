@@ -107,6 +107,43 @@ describe('constraints', () => {
     expect(distance(world, a, c)).to.be.at.least(2 - 1e-9); // minimum distance pushed it out
   });
 
+  it('a taut slack link whose length rounds to its limit is left alone, not pulled to its lower limit (both kernels)', () => {
+    // d² one ulp past hi² while √(d²) rounds to hi: the link was active, and d > hi false took d − lo as its error,
+    // pulling the particle onto its pin (a cloth rebuilt at run time crumpled under the kernel).
+    const dy = 7.5e-9;
+    expect(0.25 + dy * dy, 'the case: d² past hi²').to.be.greaterThan(0.25);
+    expect(Math.sqrt(0.25 + dy * dy), 'the case: d rounds to hi').to.equal(0.5);
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: 0 } });
+      const a = world.addParticle({ x: 0, y: 0, mass: Infinity });
+      const b = world.addParticle({ x: 0.5, y: dy });
+      world.addDistance(a, b, { minLength: 0, maxLength: 0.5 });
+      world.step();
+      // (The old code flung it through the pin to (−0.5, 0): the same distance, the wrong side.)
+      expect(world.getPosition(b).x, kernel).to.be.closeTo(0.5, 1e-12);
+      expect(distance(world, a, b), kernel).to.be.closeTo(0.5, 1e-12);
+    }
+  });
+
+  it('a cloth hung from two corners in reused slots (built after others were removed) moves as a fresh one (both kernels)', () => {
+    // Slots come back last-freed first, so a rebuilt cloth's particles run backwards through storage: the kernel's
+    // sweep order differs, and its tethers met the rounding case above (largest strain 16%, a 100% with two pins).
+    for (const kernel of ['js', 'wasm'] as const) {
+      const strains = [false, true].map((reused) => {
+        const world = new World({ kernel, gravity: { x: 0, y: 9.81 }, sleeping: false });
+        if (reused) for (const h of Array.from({ length: 140 }, () => world.addParticle({ x: 0, y: 0 }))) world.removeParticle(h);
+        createCloth(world, { origin: { x: 2, y: 1 }, columns: 14, rows: 10, spacing: 0.5, pins: 'corners' });
+        let worst = 0;
+        for (let k = 0; k < 60; k++) {
+          world.step();
+          worst = Math.max(worst, world.maxStrain());
+        }
+        return worst;
+      });
+      expect(strains[1], `${kernel}: reused ${strains[1]} against fresh ${strains[0]}`).to.be.below(strains[0] * 1.1);
+    }
+  });
+
   it('compliance means the same stiffness whatever the substep and iteration counts (XPBD)', () => {
     // A mass hanging from a compliant link stretches by m·g·compliance at rest.
     const stretch = (substeps: number, iterations: number) => {

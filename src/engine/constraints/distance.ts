@@ -49,7 +49,9 @@ export function solveDistances(c: DistanceConstraints, p: ParticleStore, h2: num
       // Slack rope links and tethers are mostly inactive: skip them before paying for the square root.
       if (d2 >= lo * lo && d2 <= hi * hi) continue;
       d = Math.sqrt(d2);
-      err = d > hi ? d - hi : d - lo;
+      // Past the upper limit by the same test as above: d itself may round to hi when d² is just past hi², and
+      // d − lo then pulled a taut tether's particle onto its pin.
+      err = d2 > hi * hi ? d - hi : d - lo;
     }
     if (d < 1e-12) {
       // Coincident particles have no direction; pick a fixed one so the result stays finite and deterministic.

@@ -45,7 +45,7 @@ export function solveDistances32(x: usize, y: usize, invMass: usize, packets: us
     const slack = v128.and(f32x4.ne(lo, hi), v128.and(f32x4.ge(d2, f32x4.mul(lo, lo)), f32x4.le(d2, f32x4.mul(hi, hi))));
     const active = v128.andnot(f32x4.ne(w, zero), slack);
     let d = f32x4.sqrt(d2);
-    const err = v128.bitselect(f32x4.sub(d, hi), f32x4.sub(d, lo), f32x4.gt(d, hi));
+    const err = v128.bitselect(f32x4.sub(d, hi), f32x4.sub(d, lo), f32x4.gt(d2, f32x4.mul(hi, hi)));
     const coincident = f32x4.lt(d, tiny);
     dx = v128.bitselect(one, dx, coincident);
     dy = v128.bitselect(zero, dy, coincident);
