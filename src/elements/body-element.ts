@@ -118,13 +118,22 @@ export abstract class PhysicsBodyElement extends LitElement {
    * values, unless they too were set since the last update (`b.x += 1` put the body back at its markup y and angle).
    */
   private keepLivePose(part: 'x' | 'y' | 'angle'): void {
-    const pose = this._scene?.poseOf(this);
+    const pose = this.poseIsPlacement ? this._scene?.poseOf(this) : null;
     if (pose && this.poseSet.size === 0) {
       if (part !== 'x') this._x = pose[0];
       if (part !== 'y') this._y = pose[1];
       if (part !== 'angle') this._angle = toDegrees(pose[2]);
     }
     this.poseSet.add(part);
+  }
+
+  /**
+   * Whether the live pose is where x, y and angle place the body (a shape's centre, a soft body's), so that setting one
+   * part keeps the others live. A cloth's x, y are its top-left corner and a ragdoll's its pelvis, while their pose is
+   * their particles' mean: `cloth.y = 0.5` took the mean for x and rebuilt the cloth 2.75 to the right, into the wall.
+   */
+  protected get poseIsPlacement(): boolean {
+    return true;
   }
 
   /** The declared (markup) position and angle, not the live pose. */

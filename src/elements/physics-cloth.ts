@@ -29,6 +29,11 @@ export class PhysicsClothElement extends PhysicsBodyElement {
   /** Collides with other bodies (its particles as small circles). */
   @property({ type: Boolean }) collide = false;
 
+  /** Placed by its top-left corner, not by its particles' mean (PhysicsBodyElement.poseIsPlacement). */
+  protected override get poseIsPlacement(): boolean {
+    return false;
+  }
+
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
     const { x, y } = this.declared;

@@ -16,6 +16,11 @@ export class PhysicsRagdollElement extends PhysicsBodyElement {
   /** Compliance of the joint limits (0 to 1e9; 0 = hard stops, default). */
   @property({ type: Number, converter: numberAttribute, attribute: 'joint-compliance' }) jointCompliance?: number;
 
+  /** Placed by its pelvis, not by its particles' mean (PhysicsBodyElement.poseIsPlacement). */
+  protected override get poseIsPlacement(): boolean {
+    return false;
+  }
+
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
     const { x, y } = this.declared;

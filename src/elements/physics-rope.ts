@@ -32,6 +32,11 @@ export class PhysicsRopeElement extends PhysicsBodyElement {
   /** Collides with other bodies (as circles of `radius`). */
   @property({ type: Boolean }) collide = false;
 
+  /** Placed by its ends (x1, y1, x2, y2), not by its particles' mean (PhysicsBodyElement.poseIsPlacement). */
+  protected override get poseIsPlacement(): boolean {
+    return false;
+  }
+
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
     const from = { x: check.number('x1', this.x1, { fallback: 0 })!, y: check.number('y1', this.y1, { fallback: 0 })! };

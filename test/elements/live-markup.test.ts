@@ -98,6 +98,26 @@ describe('<physics-scene> live markup', () => {
     await scene.step(1);
     expect([box.x, box.y, box.angle].map((v) => Number(v.toFixed(6)))).to.deep.equal([3, 2, 30]);
   });
+  it("setting a cloth's y rebuilds it at its markup x (its corner, not its particles' mean); its pins and columns changed live hang it as markup would", async () => {
+    // cloth.y = 0.5 took the cloth's centroid (4.75) for its top-left x: rebuilt 2.75 to the right, into the wall,
+    // it crumpled. Changing pins rebuilt it into reused slots, where the kernel's tethers flung particles.
+    scene = await mount('width="10" height="8" paused', `<physics-cloth x="2" y="1" columns="12" rows="10" spacing="0.5"></physics-cloth>`);
+    const cloth = scene.querySelector('physics-cloth')!;
+    await scene.step(30);
+    cloth.y = 0.5;
+    await scene.step(30);
+    // Hanging from its top row at rest: its mean is the grid's centre.
+    expect(cloth.x).to.be.closeTo(2 + 5.5 / 2, 0.01);
+    expect(cloth.y).to.be.closeTo(0.5 + 4.5 / 2, 0.01);
+    cloth.setAttribute('pins', 'corners');
+    cloth.setAttribute('columns', '8');
+    await scene.step(240);
+    // Hung from its two top corners 3.5 apart: it sags but stays between them and below them, whole.
+    expect(cloth.x).to.be.closeTo(2 + 3.5 / 2, 0.05);
+    expect(cloth.y).to.be.within(0.5 + 4.5 / 2, 0.5 + 4.5);
+    expect((await scene.diagnostics()).particleCount).to.equal(80);
+  });
+
   it('the view walls follow width and height changed live; bounds="none" takes them away', async () => {
     // Gravity to the right: the ball rests against the right wall, at x = width − radius.
     scene = await mount('width="8" height="8" gravity="10 0"', `<physics-circle id="ball" x="4" y="4" radius="0.5"></physics-circle>`);
