@@ -41,8 +41,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   /** Coulomb friction coefficient (>= 0). Default 0.6. */
   @property({ type: Number, converter: numberAttribute }) friction?: number;
   /**
-   * Bounciness in [0, 1]: a hit leaves at this fraction of its speed (off bodies and the view's walls). Default 0. A
-   * frame of particles (`model="particles"` on a box or polygon) bounces particle by particle and keeps little of it.
+   * Bounciness in [0, 1]: a hit leaves at this fraction of its speed (off bodies and the view's walls). Default 0.
    */
   @property({ type: Number, converter: numberAttribute }) restitution?: number;
   /** Fill colour (any CSS colour, or "none"). */
