@@ -58,6 +58,7 @@ export const FIELDS = {
       recordBreak: CALLBACK,
       bodyHandleOf: CALLBACK,
       bodyAlive: CALLBACK,
+      bodyResting: CALLBACK,
       bodyParticlesOf: CALLBACK,
       rigidContacts: `${PER_STEP} (cleared by restore())`,
       wallHits: 'per substep: cleared by the velocity pass of the substep that noted them',

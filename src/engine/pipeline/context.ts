@@ -109,6 +109,8 @@ export class StepContext {
   };
   readonly bodyHandleOf = (slot: number): number => this.bodies.ids.handleOf(slot);
   readonly bodyAlive = (slot: number): boolean => this.bodies.ids.alive[slot] === 1;
+  /** Asleep, or static: a body that makes no contacts while it rests (collision events keep its pairs). */
+  readonly bodyResting = (slot: number): boolean => this.sleep.asleep[slot] === 1 || this.colliders.isStatic[slot] === 1;
   readonly bodyParticlesOf = (slot: number): Int32Array => this.bodies.particles[slot];
 
   /** The WebAssembly SIMD kernel when it runs (null: the JS loops), and what World.diagnostics() says about it. */

@@ -135,7 +135,7 @@ export class EventTracker {
    * body slot to its handle. A contact with the world's bounds (body −1) pairs its body with WORLD_BOUNDS, the body
    * first. Pairs whose body was removed end first, under the handles they had (bodyRemoved).
    */
-  update(c: Contacts, r: RigidContacts, walls: WallHits, p: ParticleStore, motion: Float64Array, owner: { ownerOf(i: number): number }, handleOf: (slot: number) => number, alive: (slot: number) => boolean, out: CollisionEvents): void {
+  update(c: Contacts, r: RigidContacts, walls: WallHits, p: ParticleStore, motion: Float64Array, owner: { ownerOf(i: number): number }, handleOf: (slot: number) => number, alive: (slot: number) => boolean, resting: (slot: number) => boolean, out: CollisionEvents): void {
     out.count = 0;
     for (let k = 0; k < this.ended.length; k += 2) out.push(1, this.ended[k], this.ended[k + 1], 0, 0, 0, 0);
     this.ended.length = 0;
@@ -186,6 +186,12 @@ export class EventTracker {
       const lo = Math.floor(key / SLOTS);
       const hi = key - lo * SLOTS;
       if (!alive(lo) || (hi !== WORLD && !alive(hi))) continue;
+      // A pair at rest (asleep, or asleep on something static) has no contacts while it sleeps: it goes on touching.
+      // A ball asleep on the floor ended its pair when another body woke, and began it again when nudged.
+      if (resting(lo) && (hi === WORLD || resting(hi))) {
+        cur.insert(key, -1);
+        continue;
+      }
       out.push(1, handleOf(lo), hi === WORLD ? WORLD_BOUNDS : handleOf(hi), 0, 0, 0, 0);
     }
   }

@@ -86,7 +86,7 @@ export function step(ctx: StepContext, dt: number): void {
   keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);
-  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.wallHits, ctx.particles, ctx.substepMotion, ctx.bodies, ctx.bodyHandleOf, ctx.bodyAlive, ctx.events);
+  if (ctx.eventTracker.active) ctx.eventTracker.update(ctx.contacts, ctx.rigidContacts, ctx.wallHits, ctx.particles, ctx.substepMotion, ctx.bodies, ctx.bodyHandleOf, ctx.bodyAlive, ctx.bodyResting, ctx.events);
   updateSleep(ctx, dt);
   if (shifted) shiftVerletOffsets(ctx, h, -1);
   clearForces(ctx);

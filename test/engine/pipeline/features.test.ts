@@ -130,6 +130,31 @@ describe('pipeline: events', () => {
     for (const [, speed] of ends) expect(speed).to.equal(0);
   });
 
+  it('a body asleep on the floor goes on touching it: another body thrown off ends only its own pair, and the sleeper nudged begins nothing anew', () => {
+    for (const model of ['rigid', 'particles'] as const) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const ground = createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true, model });
+      const ball = createCircle(world, { x: -2, y: -1.5, radius: 0.5, model });
+      const crate = createBox(world, { x: 2, y: -1.5, width: 1, height: 1, model });
+      const log: string[] = [];
+      const name = (h: number) => (h === ground.body ? 'ground' : h === ball.body ? 'ball' : 'crate');
+      world.events;
+      for (let k = 0; k < 400; k++) {
+        if (k === 200) {
+          expect([world.isAwake(ball.body), world.isAwake(crate.body)], `${model}: both asleep first`).to.deep.equal([false, false]);
+          world.applyBodyImpulse(crate.body, 0, -3);
+        }
+        if (k === 300) world.applyBodyImpulse(ball.body, 0.01, 0);
+        world.step();
+        const e = world.events;
+        for (let i = 0; i < e.count; i++) log.push(`${e.type[i] === 0 ? 'begin' : 'end'} ${[name(e.bodyA[i]), name(e.bodyB[i])].sort().join('-')}`);
+      }
+      // (The ball's pair ended at the throw, and began again at the nudge.)
+      expect(log.filter((l) => l.includes('ball')), model).to.deep.equal(['begin ball-ground']);
+      expect(log.filter((l) => l.includes('crate')).slice(0, 3), model).to.deep.equal(['begin crate-ground', 'end crate-ground', 'begin crate-ground']);
+    }
+  });
+
   it('cost nothing until read: no tracking before the first read; from it on, a landing begins and a throw ends', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false });
     createBox(world, { x: 0, y: 0.5, width: 10, height: 1, static: true });
