@@ -74,6 +74,26 @@ describe('<physics-scene> bad markup', () => {
     expect([d.bodyCount, d.linkCount]).to.deep.equal([2, 1]);
   });
 
+  it('a misspelt attribute set from script on a running scene or body is reported at once, not at the next real change', async () => {
+    const warnings: string[] = [];
+    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const errors: PhysicsErrorDetail[] = [];
+    scene = await mount('width="10" height="10"', `<physics-box id="crate" x="3" y="2" width="1" height="1"></physics-box>`, {
+      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+    });
+    expect(errors).to.deep.equal([]);
+    scene.querySelector('#crate')!.setAttribute('wdth', '3');
+    scene.setAttribute('gravty', '0 1');
+    await waitFor(() => errors.length === 2, 'both reported');
+    expect(errors.map((e) => [e.element.localName, e.attribute, e.value, e.message])).to.have.deep.members([
+      ['physics-box', 'wdth', '3', 'unknown attribute, ignored: did you mean width?'],
+      ['physics-scene', 'gravty', '0 1', 'unknown attribute, ignored: did you mean gravity?'],
+    ]);
+    expect(warnings.length).to.equal(2);
+    // Ignored: the box is simulated as it was.
+    expect((await scene.diagnostics()).bodyCount).to.equal(1);
+  });
+
   it('a whole-number attribute names its whole range: columns="1.5" is not told "must be >= 2"', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];

@@ -124,13 +124,32 @@ export class MarkupSync implements SceneHost {
   /** Body elements whose id an earlier one has (reported; links name the first), and where their problem is kept. */
   private duplicates = new Set<Element>();
   private readonly idSources = new WeakMap<Element, object>();
-  private readonly observer = new MutationObserver(() => this.sync());
+  private readonly observer = new MutationObserver((records) => this.mutated(records));
 
   constructor(private readonly options: MarkupOptions) {}
 
-  /** Starts following the container's children (added, removed, ids changed). */
+  /** Starts following the container's children (added, removed, ids changed) and attributes none of them reads. */
   observe(): void {
-    this.observer.observe(this.options.container(), { childList: true, subtree: true, attributes: true, attributeFilter: ['id'] });
+    this.observer.observe(this.options.container(), { childList: true, subtree: true, attributes: true });
+  }
+
+  /**
+   * Children added or removed, or an id changed: the children again. An attribute the element does not read (a
+   * misspelt `wdth`, set from script) changes nothing Lit sees: the element is checked again, so it is reported then,
+   * not at the next change of a real attribute.
+   */
+  private mutated(records: MutationRecord[]): void {
+    let children = false;
+    const unread = new Set<Element>();
+    for (const r of records) {
+      if (r.type !== 'attributes' || r.attributeName === 'id') children = true;
+      else if (!readsAttribute(r.target as Element, r.attributeName!)) unread.add(r.target as Element);
+    }
+    if (children) this.sync();
+    for (const el of unread) {
+      if (this.keys.has(el)) this.childChanged(el);
+      else if (el === this.options.container() && 'requestUpdate' in el) (el as unknown as { requestUpdate(): void }).requestUpdate();
+    }
   }
 
   /** The scene stopped: no observing, no keys; the children are no longer this scene's. */
@@ -414,4 +433,10 @@ export class MarkupSync implements SceneHost {
       else engine.send('removeLink', key);
     }
   }
+}
+
+/** Whether a custom element reads this attribute (one of its observed attributes); false for any other element. */
+function readsAttribute(el: Element, name: string): boolean {
+  const observed = (el.constructor as { observedAttributes?: readonly string[] }).observedAttributes;
+  return observed !== undefined && observed.includes(name);
 }
