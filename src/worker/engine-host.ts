@@ -138,19 +138,26 @@ export class EngineHost implements EngineApi {
     if (isGrab(this.#world, grab)) this.#world.release(grab);
   }
 
-  applyImpulse(key: number, ix: number, iy: number): void {
+  /** Refused (a speed past the engine's limit): the error names the body's key, for its element. */
+  applyImpulse(key: number, ix: number, iy: number): HostError | null {
     const r = this.#bindings.bodies.get(key);
-    if (!r || r.handle === null) return;
-    this.#world.wake(r.handle);
-    this.#world.applyBodyImpulse(r.handle, ix, iy);
+    if (!r || r.handle === null) return null;
+    const handle = r.handle;
+    return refusedCall(key, 'applyImpulse', () => {
+      this.#world.wake(handle);
+      this.#world.applyBodyImpulse(handle, ix, iy);
+    });
   }
 
-  setVelocity(key: number, vx: number, vy: number): void {
+  setVelocity(key: number, vx: number, vy: number): HostError | null {
     const r = this.#bindings.bodies.get(key);
-    if (!r || r.handle === null) return;
+    if (!r || r.handle === null) return null;
     const w = this.#world;
-    if (r.rigid) w.setBodyVelocity(r.handle, vx, vy);
-    else for (const h of w.bodyParticleHandles(r.handle)) w.setVelocity(h, vx, vy);
+    const handle = r.handle;
+    return refusedCall(key, 'setVelocity', () => {
+      if (r.rigid) w.setBodyVelocity(handle, vx, vy);
+      else for (const h of w.bodyParticleHandles(handle)) w.setVelocity(h, vx, vy);
+    });
   }
 
   bodiesAt(x: number, y: number): number[] {
@@ -247,5 +254,16 @@ export class EngineHost implements EngineApi {
     warnIfRowsRepaired(this.#world);
     this.#events.flush(this.#settings.params.events, this.#output);
     this.#frames.publish(this.#loop.running, this.#settings.params.debug, this.#events.sent);
+  }
+}
+
+/** Runs a call on body `key`; the engine's refusal (a RangeError or TypeError) as a HostError naming it, else null. */
+function refusedCall(key: number, call: string, run: () => void): HostError | null {
+  try {
+    run();
+    return null;
+  } catch (error) {
+    if (!(error instanceof RangeError || error instanceof TypeError)) throw error;
+    return { key, field: '', message: error.message, call };
   }
 }

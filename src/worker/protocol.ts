@@ -176,6 +176,8 @@ export interface HostError {
   /** Best guess at the description field the engine complained about (e.g. "radius"), or "". */
   field: string;
   message: string;
+  /** A call refused (applyImpulse, setVelocity), not a description: nothing of the element's markup to correct. */
+  call?: string;
 }
 
 export interface HostSnapshot {
@@ -225,8 +227,8 @@ export interface EngineApi {
   grab(x: number, y: number, stiffness?: number): number | null;
   moveGrab(grab: number, x: number, y: number): void;
   release(grab: number): void;
-  applyImpulse(key: number, ix: number, iy: number): void;
-  setVelocity(key: number, vx: number, vy: number): void;
+  applyImpulse(key: number, ix: number, iy: number): HostError | null;
+  setVelocity(key: number, vx: number, vy: number): HostError | null;
   snapshot(): HostSnapshot;
   /** Puts a snapshot back; with `frame` (a restart), the newest published positions and velocities on top. Returns the step count. */
   restore(snapshot: HostSnapshot, frame?: FramePatch | null): number;

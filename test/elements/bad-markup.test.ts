@@ -292,7 +292,7 @@ describe('<physics-scene> bad markup', () => {
     expect((await scene.diagnostics()).bodyCount).to.equal(1);
   });
 
-  it('setVelocity and applyImpulse refuse bad numbers where they are called; an impulse past the speed limit is a physics-error, the engine keeps running', async () => {
+  it('setVelocity and applyImpulse refuse bad numbers where they are called; an impulse past the speed limit is a physics-error naming the body, the engine keeps running', async () => {
     console.warn = () => {};
     const errors: PhysicsErrorDetail[] = [];
     scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>`, {
@@ -305,6 +305,8 @@ describe('<physics-scene> bad markup', () => {
     expect(() => box.applyImpulse(Infinity, 0)).to.throw(RangeError, 'ix');
     box.applyImpulse(1e308, 1e308);
     await waitFor(() => errors.some((e) => e.message.includes('ix / mass')), 'the refused impulse reported');
+    // On the body it was asked of (it was the scene's, with nothing to tell which body).
+    expect(errors.find((e) => e.message.includes('ix / mass'))!.element).to.equal(box);
     const before = scene.stepCount;
     expect(await scene.step(10)).to.equal(before + 10);
     expect(Number.isFinite(box.x) && Number.isFinite(box.y)).to.equal(true);

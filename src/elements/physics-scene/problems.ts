@@ -92,7 +92,8 @@ export class ProblemsController implements ReactiveController {
     const el = this.options.elementOf(e.key) ?? this.host;
     const attribute = ENGINE_FIELDS[e.field] ?? e.field;
     const value = attribute ? shownValue(el, attribute) : '';
-    if (el === this.host) {
+    // A refused call (an impulse past the speed limit) is reported on its body, and shown as the scene's failures are.
+    if (el === this.host || e.call) {
       this.report(el, attribute, value, e.message);
       return;
     }
