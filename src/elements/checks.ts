@@ -56,6 +56,11 @@ export const numberAttribute = {
 /** Lit's declared properties of an element's class, by property name. */
 type Declared = Map<PropertyKey, { attribute?: string | boolean; type?: unknown; converter?: unknown }>;
 
+/** The property behind `attribute` on this element (Lit's declaration), or undefined. */
+export function propertyOfAttribute(element: Element, attribute: string): PropertyKey | undefined {
+  return declaredProperty(element, attribute)?.name;
+}
+
 /** The property name behind `attribute` on this element (Lit's declaration), or undefined. */
 function declaredProperty(element: Element, attribute: string): { name: PropertyKey; type?: unknown; converter?: unknown } | undefined {
   const declared = (element.constructor as { elementProperties?: Declared }).elementProperties;

@@ -118,6 +118,24 @@ describe('<physics-scene> live markup', () => {
     expect((await scene.diagnostics()).particleCount).to.equal(80);
   });
 
+  it("a scene's or a preset's attribute removed: its property reads the default again, as the simulation uses it", async () => {
+    // Lit read a removed attribute as null: scene.width was null while the view went back to 16 wide.
+    scene = await mount('width="12" height="7" gravity="0 3" substeps="4" max-restarts="1" draw-mode="replace" kernel="js"', '');
+    for (const name of ['width', 'height', 'gravity', 'substeps', 'max-restarts', 'draw-mode', 'kernel']) scene.removeAttribute(name);
+    expect([scene.width, scene.height, scene.gravity, scene.substeps, scene.maxRestarts, scene.drawMode, scene.kernel]).to.deep.equal([16, 9, '0 9.81', 'auto', 3, 'over', 'auto']);
+    const cloth = document.createElement('cloth-sim') as HTMLElement & { columns: number; wind: number; height: number };
+    cloth.setAttribute('columns', '10');
+    cloth.setAttribute('wind', '4');
+    cloth.setAttribute('height', '6');
+    document.body.append(cloth);
+    try {
+      for (const name of ['columns', 'wind', 'height']) cloth.removeAttribute(name);
+      expect([cloth.columns, cloth.wind, cloth.height]).to.deep.equal([24, 1.5, 10]);
+    } finally {
+      cloth.remove();
+    }
+  });
+
   it('the view walls follow width and height changed live; bounds="none" takes them away', async () => {
     // Gravity to the right: the ball rests against the right wall, at x = width − radius.
     scene = await mount('width="8" height="8" gravity="10 0"', `<physics-circle id="ball" x="4" y="4" radius="0.5"></physics-circle>`);

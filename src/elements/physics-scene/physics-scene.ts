@@ -6,7 +6,7 @@ import { property, state } from 'lit/decorators.js';
 import { loadP5, type DrawHook } from '../../render/renderer.js';
 import { EngineStoppedError, maxWorkers, setMaxWorkers } from '../../worker/client.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
-import type { Problem } from '../checks.js';
+import { propertyOfAttribute, type Problem } from '../checks.js';
 import type { SceneHost } from '../scene-host.js';
 import { CollisionEventsController } from './collisions.js';
 import { changedParams, ConfigController, substepsAttribute } from './config.js';
@@ -554,8 +554,17 @@ export class PhysicsSceneElement extends LitElement {
     });
   }
 
+  /** Each property's value before an attribute first set it (its default): what it reads once the attribute is removed. */
+  private readonly unsetValues = new Map<PropertyKey, unknown>();
+
   override attributeChangedCallback(name: string, old: string | null, value: string | null): void {
+    const property = propertyOfAttribute(this, name);
+    const self = this as unknown as Record<PropertyKey, unknown>;
+    if (property !== undefined && !this.unsetValues.has(property)) this.unsetValues.set(property, self[property]);
     super.attributeChangedCallback(name, old, value);
+    // Lit reads a removed attribute as null: the property takes its default again, as the scene does (a removed
+    // width read null while the view went back to 16 wide).
+    if (value === null && property !== undefined) self[property] = this.unsetValues.get(property);
     // A new value its property reads the same (NaN for "abc" and "xyz") is still checked and reported anew.
     if (old !== value && !this.isUpdatePending) this.requestUpdate();
   }
