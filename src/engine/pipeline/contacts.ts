@@ -21,7 +21,7 @@ import { setSide, type FrameBounces } from './frame-bounces.js';
  * to μ times the normal correction of this substep (static friction when it all fits, kinetic otherwise).
  */
 export class Contacts extends Table {
-  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'lift', 'anchor', 'touched', 'allowance', 'solvedNx', 'solvedNy', 'solvedAlpha', 'frictionSpent'] as const;
+  readonly columns = ['v', 'e0', 'e1', 'radius', 'friction', 'restitution', 'bodyA', 'bodyB', 'lambda', 'nx', 'ny', 'depth', 'normalSpeed', 'lift', 'anchor', 'touched', 'allowance', 'solvedNx', 'solvedNy', 'solvedAlpha', 'frictionSpent', 'touchSlide'] as const;
   v = new Int32Array(16);
   e0 = new Int32Array(16);
   e1 = new Int32Array(16);
@@ -65,6 +65,8 @@ export class Contacts extends Table {
   solvedAlpha = new Float64Array(16);
   /** The friction multipliers' sizes the position pass applied in this substep (an impact's friction budget). */
   frictionSpent = new Float64Array(16);
+  /** A bouncing pair of particles' sliding speed along the tangent (−ny, nx) of where they touch (touchNormal). */
+  touchSlide = new Float64Array(16);
 
   /**
    * The next contact's real-valued fields, filled by the caller before add(): radius, friction, restitution, normal
@@ -289,8 +291,45 @@ export function recordApproachSpeeds(c: Contacts, p: ParticleStore, motion: Floa
       ny = c.ny[i];
     }
     normalSpeed[i] = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
-    if (c.restitution[i] > 0) hitSpeed(c, p, i, 0, nx, ny, motion);
+    if (c.restitution[i] > 0) {
+      // A bounce acts along the line of centres where they will touch (touchNormal), which turns from the one now
+      // as a glancing pair closes: its speed along this one bounced them too hard (a glancing elastic hit gained up
+      // to 26% of its energy).
+      touchNormal(c, p, i);
+      hitSpeed(c, p, i, 0, c.nx[i], c.ny[i], motion);
+    }
   }
+}
+
+/**
+ * Particles v and e0 of contact i, apart now, meet where |d + u·t| = R (d their offset, u their relative velocity,
+ * R the contact's radius): that line of centres (where they pass closest, if they miss) into the contact's normal
+ * (nx, ny), and their speed along it into normalSpeed. Already overlapping or parting: the line of centres now.
+ */
+function touchNormal(c: Contacts, p: ParticleStore, i: number): void {
+  const iv = c.v[i];
+  const i0 = c.e0[i];
+  const dx = p.x[iv] - p.x[i0];
+  const dy = p.y[iv] - p.y[i0];
+  const ux = p.vx[iv] - p.vx[i0];
+  const uy = p.vy[iv] - p.vy[i0];
+  const uu = ux * ux + uy * uy;
+  const du = dx * ux + dy * uy;
+  const R = c.radius[i];
+  const gap = dx * dx + dy * dy - R * R;
+  let t = 0;
+  if (gap > 0 && du < 0 && uu > 0) {
+    const disc = du * du - uu * gap;
+    t = disc > 0 ? (-du - Math.sqrt(disc)) / uu : -du / uu;
+  }
+  const nx = dx + ux * t;
+  const ny = dy + uy * t;
+  const n = Math.sqrt(nx * nx + ny * ny);
+  if (!(n > 1e-12)) return;
+  c.nx[i] = nx / n;
+  c.ny[i] = ny / n;
+  c.normalSpeed[i] = (ux * nx + uy * ny) / n;
+  c.touchSlide[i] = (uy * nx - ux * ny) / n;
 }
 
 /**
@@ -323,9 +362,11 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number,
   const { v, e0, e1, lambda, restitution, friction, normalSpeed, solvedNx, solvedNy, solvedAlpha } = c;
   for (let i = 0, n = c.count; i < n; i++) {
     if (lambda[i] <= 0) continue;
-    // The direction and edge fraction of this substep's correction: the positions barely moved since.
-    const nx = solvedNx[i];
-    const ny = solvedNy[i];
+    // The direction and edge fraction of this substep's correction: the positions barely moved since. A bouncing
+    // pair of particles bounces along the line of centres where they touched (touchNormal), once.
+    const touchBounce = e1[i] < 0 && restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD;
+    const nx = touchBounce ? c.nx[i] : solvedNx[i];
+    const ny = touchBounce ? c.ny[i] : solvedNy[i];
     const alpha = solvedAlpha[i];
     const beta = 1 - alpha;
     const iv = v[i];
@@ -365,12 +406,21 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number,
     // contact is found overlapping, so there it barely acts: a particle ball thrown at 45° onto a particle floor
     // kept 6.1 of its 7.1 sideways (3.5 with μ = 0.5), and one that bounced all of it.
     let dt = 0;
+    let slide = 0;
+    if (touchBounce || (impact && friction[i] > 0)) {
+      slide = (i1 >= 0 ? vx[iv] - beta * vx[i0] - alpha * vx[i1] : vx[iv] - vx[i0]) * -ny + (i1 >= 0 ? vy[iv] - beta * vy[i0] - alpha * vy[i1] : vy[iv] - vy[i0]) * nx;
+      if (touchBounce) {
+        // The position pass pushed the pair apart along their line of centres now, which also slid them along the
+        // touch's tangent (an elastic glancing hit off by 1–3% in speed): back to the slide they met with.
+        dt = (c.touchSlide[i] - slide) / w;
+        slide = c.touchSlide[i];
+      }
+    }
     if (impact && friction[i] > 0) {
-      const budget = (friction[i] * (target - normalSpeed[i])) / w - c.frictionSpent[i] / h;
+      const budget = (friction[i] * (target - normalSpeed[i])) / w - (touchBounce ? 0 : c.frictionSpent[i] / h);
       if (budget > 0) {
-        const vt = (i1 >= 0 ? vx[iv] - beta * vx[i0] - alpha * vx[i1] : vx[iv] - vx[i0]) * -ny + (i1 >= 0 ? vy[iv] - beta * vy[i0] - alpha * vy[i1] : vy[iv] - vy[i0]) * nx;
-        dt = -vt / w;
-        dt = dt > budget ? budget : dt < -budget ? -budget : dt;
+        const stop = -slide / w;
+        dt += stop > budget ? budget : stop < -budget ? -budget : stop;
       }
     }
     if (impact) normalSpeed[i] = 0; // once per impact
