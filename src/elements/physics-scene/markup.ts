@@ -143,7 +143,7 @@ export class MarkupSync implements SceneHost {
     const unread = new Set<Element>();
     for (const r of records) {
       if (r.type !== 'attributes' || r.attributeName === 'id') children = true;
-      else if (!readsAttribute(r.target as Element, r.attributeName!)) unread.add(r.target as Element);
+      else if (misspelt(r.target as Element, r.attributeName!)) unread.add(r.target as Element);
     }
     if (children) this.sync();
     for (const el of unread) {
@@ -435,8 +435,12 @@ export class MarkupSync implements SceneHost {
   }
 }
 
-/** Whether a custom element reads this attribute (one of its observed attributes); false for any other element. */
-function readsAttribute(el: Element, name: string): boolean {
+/**
+ * Whether a custom element has attribute `name` now and reports it as misspelt. Only those are checked again: the
+ * scene's own class, style and aria attributes, or a page's, change nothing and must not make it update.
+ */
+function misspelt(el: Element, name: string): boolean {
   const observed = (el.constructor as { observedAttributes?: readonly string[] }).observedAttributes;
-  return observed !== undefined && observed.includes(name);
+  if (observed === undefined || observed.includes(name)) return false;
+  return !el.hasAttribute(name) || misspeltAttributes(el).some((p) => p.attribute === name);
 }
