@@ -563,8 +563,9 @@ export class PhysicsSceneElement extends LitElement {
     if (property !== undefined && !this.unsetValues.has(property)) this.unsetValues.set(property, self[property]);
     super.attributeChangedCallback(name, old, value);
     // Lit reads a removed attribute as null: the property takes its default again, as the scene does (a removed
-    // width read null while the view went back to 16 wide).
-    if (value === null && property !== undefined) self[property] = this.unsetValues.get(property);
+    // width read null while the view went back to 16 wide). Booleans read false (paused, whose reflection calls
+    // this with the property already set, must not take that back).
+    if (value === null && property !== undefined && self[property] === null) self[property] = this.unsetValues.get(property);
     // A new value its property reads the same (NaN for "abc" and "xyz") is still checked and reported anew.
     if (old !== value && !this.isUpdatePending) this.requestUpdate();
   }
