@@ -57,8 +57,10 @@ export abstract class PhysicsBodyElement extends LitElement {
   private _angle?: number;
 
   /**
-   * Horizontal position in world units. Reads the live position while simulated; setting it moves the body (a rope
-   * is placed by x1, y1, x2, y2 instead: its x and y only read its centroid).
+   * Horizontal position in world units. Reads the live position while simulated; setting it moves the body, from
+   * where it is for a shape or soft body, from its markup's other coordinates for a cloth (its top-left corner) or a
+   * ragdoll (its pelvis), whose live x and y are their particles' mean (a rope is placed by x1, y1, x2, y2 instead:
+   * its x and y only read its centroid).
    * @attr x
    */
   @property({ type: Number, converter: numberAttribute, noAccessor: true })
