@@ -325,7 +325,11 @@ function touchNormal(c: Contacts, p: ParticleStore, i: number): void {
   const nx = dx + ux * t;
   const ny = dy + uy * t;
   const n = Math.sqrt(nx * nx + ny * ny);
-  if (!(n > 1e-12)) return;
+  if (!(n > 1e-12)) {
+    // Coincident and at rest relative to each other: the normal the contact has, and its slide along that.
+    c.touchSlide[i] = uy * c.nx[i] - ux * c.ny[i];
+    return;
+  }
   c.nx[i] = nx / n;
   c.ny[i] = ny / n;
   c.normalSpeed[i] = (ux * nx + uy * ny) / n;
