@@ -7,20 +7,26 @@
 //   node scripts/perf-steps.mjs --scenes S1 --steps 50 --warm 0 --quiet    for callgrind (instruction counts: run
 //                                                       N + W steps and W steps, subtract)
 //
+//   node scripts/perf-steps.mjs --ab HEAD --scenes circles10k --kernel wasm --steps 30 --warm 120
+//                                                       bench/kernel.mjs's large scenes, on one kernel
+//
 // Scenes: S1 pyramid, S2 1000 boxes, S3 2000 circles, S4 chain, S5 cloth (the catalogue's, sleeping off, as in
-// bench/peers), and `five`: a 5-body world (ground, three boxes, a disc) that measures the fixed cost of a step.
+// bench/peers), `five`: a 5-body world (ground, three boxes, a disc) that measures the fixed cost of a step, and
+// bench/scenes.mjs's circles10k and cloth200. `--kernel js|wasm` picks the solver kernel (default: the World's).
 // Timed steps: `--steps` after `--warm` (default 300 after 100, as bench/peers times steps 100..600).
 import { build } from 'esbuild';
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { benchWorld } from '../bench/scenes.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const CATALOGUE = { S1: 'pyramid', S2: 'boxes', S3: 'circles', S4: 'chain', S5: 'cloth' };
+const LARGE = ['circles10k', 'cloth200'];
 
 function parseArgs(argv) {
-  const o = { scenes: ['S1', 'S2', 'S3', 'five'], steps: 300, warm: 100, ab: null, rounds: 5, bundle: null, quiet: false };
+  const o = { scenes: ['S1', 'S2', 'S3', 'five'], steps: 300, warm: 100, ab: null, rounds: 5, bundle: null, quiet: false, kernel: undefined };
   for (let k = 0; k < argv.length; k++) {
     const [flag, value] = [argv[k], argv[k + 1]];
     if (flag === '--scenes') (o.scenes = value.split(',')), k++;
@@ -29,10 +35,11 @@ function parseArgs(argv) {
     else if (flag === '--ab') (o.ab = value), k++;
     else if (flag === '--rounds') (o.rounds = Number(value)), k++;
     else if (flag === '--bundle') (o.bundle = value), k++;
+    else if (flag === '--kernel') (o.kernel = value), k++;
     else if (flag === '--quiet') o.quiet = true;
     else throw new Error(`unknown flag ${flag}`);
   }
-  for (const s of o.scenes) if (s !== 'five' && !CATALOGUE[s]) throw new Error(`unknown scene ${s}: S1..S5 or five`);
+  for (const s of o.scenes) if (s !== 'five' && !CATALOGUE[s] && !LARGE.includes(s)) throw new Error(`unknown scene ${s}: S1..S5, five, ${LARGE}`);
   return o;
 }
 
@@ -45,9 +52,10 @@ async function bundle(dir, name) {
   return outfile;
 }
 
-function makeWorld(engine, scene) {
+function makeWorld(engine, scene, kernel) {
+  if (LARGE.includes(scene)) return benchWorld(engine, scene, kernel);
   if (scene === 'five') {
-    const world = new engine.World({ gravity: { x: 0, y: 10 }, sleeping: false });
+    const world = new engine.World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel });
     const { buildBody } = engine;
     buildBody(world, { type: 'box', x: 0, y: 0.5, width: 20, height: 1, static: true });
     buildBody(world, { type: 'box', x: -2, y: -0.5, width: 1, height: 1 });
@@ -57,7 +65,7 @@ function makeWorld(engine, scene) {
     return world;
   }
   const description = engine.catalogue[CATALOGUE[scene]].make();
-  description.world = { ...description.world, sleeping: false };
+  description.world = { ...description.world, sleeping: false, kernel };
   return engine.buildScene(description).world;
 }
 
@@ -66,7 +74,7 @@ async function measure(file, o) {
   const engine = await import(pathToFileURL(file).href);
   const out = {};
   for (const scene of o.scenes) {
-    const world = makeWorld(engine, scene);
+    const world = makeWorld(engine, scene, o.kernel);
     for (let k = 0; k < o.warm; k++) world.step();
     const times = new Float64Array(o.steps);
     for (let k = 0; k < o.steps; k++) {
@@ -97,7 +105,7 @@ if (o.bundle) {
   execFileSync('sh', ['-c', `git -C "${root}" archive ${o.ab} src/engine | tar -x -C "${dir}"`]);
   const files = { A: await bundle(dir, 'A'), B: await bundle(root, 'B') };
   const runs = { A: [], B: [] };
-  const args = (f) => [fileURLToPath(import.meta.url), '--bundle', f, '--scenes', o.scenes.join(','), '--steps', String(o.steps), '--warm', String(o.warm)];
+  const args = (f) => [fileURLToPath(import.meta.url), '--bundle', f, '--scenes', o.scenes.join(','), '--steps', String(o.steps), '--warm', String(o.warm), ...(o.kernel ? ['--kernel', o.kernel] : [])];
   const loads = [];
   for (let r = 0; r < o.rounds; r++) {
     for (const side of r % 2 === 0 ? ['A', 'B'] : ['B', 'A']) {
