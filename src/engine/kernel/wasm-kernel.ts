@@ -18,7 +18,7 @@
 import type { ParticleStore } from '../particles.js';
 import type { DistanceConstraints } from '../constraints/distance.js';
 import type { StepContext } from '../pipeline/context.js';
-import type { RigidContacts } from '../rigid/contacts.js';
+import { rim, type RigidContacts } from '../rigid/contacts.js';
 import { colourRows } from './colour.js';
 import { findRuns, kindOf, RunKind, type RunLayout } from './runs.js';
 
@@ -630,10 +630,12 @@ export class WasmKernel {
 /**
  * Whether the lanes take the step's rigid contacts: 0 no, 1 as single points (all lone), 2 by manifold (some pairs).
  * Each point between two rows or with the world (no particle-built edge point), restitution 0, no shock sweep; a
- * pair's partner follows it (the same bodies); by manifold only when no side is round.
+ * pair's partner follows it (the same bodies); by manifold only when no side is round;
+ * not while the step measures its rims' arcs exactly
+ * (contacts.ts FAST_TURN: the lanes' series falls short there).
  */
 function lanesFit(c: RigidContacts): 0 | 1 | 2 {
-  if (c.shockCount > 0 || c.edgePoints > 0) return 0;
+  if (c.shockCount > 0 || c.edgePoints > 0 || rim[3] !== 0) return 0;
   const { pair, b2, restitution, a, b, radA, radB } = c;
   let fit: 0 | 1 | 2 = 1;
   let round = false;

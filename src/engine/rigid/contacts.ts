@@ -213,33 +213,49 @@ function chainOf(key: number): number {
  * floor). Measured along the rim, a disc that rolls keeps its point where it was.
  */
 export function arcBeyond(mt: number, radius: number): number {
-  rim[0] = mt;
-  rim[1] = radius;
-  rimArc();
-  return rim[2];
+  if (!(radius > 0)) return 0;
+  const s = mt / radius;
+  const s2 = s * s;
+  // asin(s) − s = s³/6 + 3s⁵/40 + 5s⁷/112 + …; times r: m·t·(s²/6 + …). Two more terms (to s¹¹) kept a disc turning
+  // 1.3 rad a step within 0.7% of its speed instead of 5.7%, but the WebAssembly kernel's disc pile (S3) paid 19% of
+  // its step for the arcs with them, 10% without. In a step where a round side with friction turns faster than
+  // FAST_TURN (rim[3] = 1, set by RigidAnchorCache.restore; the kernel's lanes leave such a step to the JS solver),
+  // past s = ½ (30° round the rim) the series falls short and Math.asin measures it: a ball of radius 0.1 rolling at
+  // 15 units/s (2.5 rad a step) lost 30% of its speed in 10 s, now 0.5%. A lever shifted past the rim's tangent
+  // (|s| > 1) goes on from asin(±1) at the rate of m·t.
+  if (s2 <= 0.25 || rim[3] === 0) return mt * (s2 * (1 / 6 + s2 * (3 / 40 + s2 * (5 / 112))));
+  if (s2 < 1) return radius * Math.asin(s) - mt;
+  return (s > 0 ? radius : -radius) * (Math.PI / 2 - 1);
 }
 
 /**
  * arcBeyond's arguments and result, for the solver's loops: [0] m·t, [1] the radius in; [2] the arc beyond out. (An
  * array rather than arguments: doubles passed to or returned from a call that is not inlined are boxed, and the
- * sweeps make this call for every round point every substep.)
+ * sweeps make this call for every round point every substep.) [3]: 1 in a step whose arcs are measured exactly.
  */
-export const rim = new Float64Array(3);
+export const rim = new Float64Array(4);
 
-/** arcBeyond on `rim`. */
-export function rimArc(): void {
-  const mt = rim[0];
-  const radius = rim[1];
-  if (!(radius > 0)) {
-    rim[2] = 0;
-    return;
+/**
+ * A round side turning more than this a step (rad) makes its step's arcs exact (arcBeyond): its friction anchor goes
+ * more than 0.4 rad round the rim either side of the contact, where the series falls short.
+ */
+export const FAST_TURN = 0.8;
+
+/** Whether a point with friction has a round side turning faster than FAST_TURN this step (of dt seconds). */
+function fastRoundSide(c: RigidContacts, omega: Float64Array, dt: number): boolean {
+  const fast = FAST_TURN / dt;
+  const { a, b, radA, radB, friction } = c;
+  for (let i = 0, n = c.count; i < n; i++) {
+    if (friction[i] === 0) continue;
+    if (radA[i] > 0 && Math.abs(omega[a[i]]) > fast) return true;
+    if (radB[i] > 0 && b[i] >= 0 && Math.abs(omega[b[i]]) > fast) return true;
   }
-  const s = mt / radius;
-  const s2 = s * s;
-  // asin(s) − s = s³/6 + 3s⁵/40 + 5s⁷/112 + …; times r: m·t·(s²/6 + …). Two more terms (to s¹¹) kept a disc turning
-  // 1.3 rad a step within 0.7% of its speed instead of 5.7%, but the WebAssembly kernel's disc pile (S3) paid 19% of
-  // its step for the arcs with them, 10% without.
-  rim[2] = mt * (s2 * (1 / 6 + s2 * (3 / 40 + s2 * (5 / 112))));
+  return false;
+}
+
+/** arcBeyond on `rim` (arcBeyond, small, is taken inline here). */
+export function rimArc(): void {
+  rim[2] = arcBeyond(rim[0], rim[1]);
 }
 
 /**
@@ -380,6 +396,7 @@ export class RigidAnchorCache {
     // The columns in locals: read through `c` they are loaded again for every point.
     const { b2, feature, allowance, rAx, rAy, rBx, rBy, radA, radB, a: A, b: B } = c;
     const omega = r.omega;
+    rim[3] = fastRoundSide(c, omega, dt) ? 1 : 0;
     let cursor = 0;
     for (let i = 0, n = c.count; i < n; i++) {
       if (b2[i] >= 0) continue;
@@ -496,13 +513,13 @@ function turnRoundAnchors(c: RigidContacts, r: BodyRows, i: number, dt: number):
     const mAx = rc[a] * ax - rs[a] * ay;
     const mAy = rs[a] * ax + rc[a] * ay;
     const tA = -mAx * ny + mAy * nx;
-    let offset = tA + arcOf(tA, radA);
+    let offset = tA + arcBeyond(tA, radA);
     if (b < 0) offset -= -bx * ny + by * nx;
     else {
       const mBx = rc[b] * bx - rs[b] * by;
       const mBy = rs[b] * bx + rc[b] * by;
       const tB = -mBx * ny + mBy * nx;
-      offset -= tB + arcOf(tB, radB);
+      offset -= tB + arcBeyond(tB, radB);
     }
     if (pass === 1) {
       moved = offset - found;
@@ -539,12 +556,4 @@ function turnRoundAnchors(c: RigidContacts, r: BodyRows, i: number, dt: number):
     c.rBx[i] = bx + (cs * tx + sn * ty);
     c.rBy[i] = by + (-sn * tx + cs * ty);
   }
-}
-
-/** arcBeyond with its arguments and result as doubles, for a caller small enough to take it inline. */
-function arcOf(mt: number, radius: number): number {
-  if (!(radius > 0)) return 0;
-  const s = mt / radius;
-  const s2 = s * s;
-  return mt * (s2 * (1 / 6 + s2 * (3 / 40 + s2 * (5 / 112))));
 }

@@ -119,6 +119,38 @@ describe('solver kernel: rigid contacts in lanes', () => {
     expect(hJs.escaped).to.equal(0);
   });
 
+  it('a step where a disc with friction turns faster than FAST_TURN is the JS solver\'s (exact arcs), the same doubles; slower, the lanes take it again', () => {
+    const make = (kernel: 'js' | 'wasm') => {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel } as WorldOptions & KernelOptions);
+      world.addRigidBody({ x: 0, y: 1, points: [{ x: -60, y: -0.5 }, { x: 60, y: -0.5 }, { x: 60, y: 0.5 }, { x: -60, y: 0.5 }], type: 'static' });
+      // A marble of radius 0.1 rolling at 15 units/s: 2.5 rad a step.
+      const marble = world.addRigidBody({ x: -50, y: 0.4, radius: 0.1, vx: 15, angularVelocity: 150, friction: 0.6 });
+      world.addRigidBody({ x: 40, y: 0, radius: 0.5, friction: 0.6 });
+      return { world, marble };
+    };
+    const js = make('js');
+    const lanes = make('wasm');
+    kernelOf(lanes.world).rigidSerial = true;
+    for (let k = 0; k < 60; k++) {
+      js.world.step();
+      lanes.world.step();
+    }
+    expect(kernelOf(lanes.world).rigidJsSteps).to.equal(60);
+    expect(kernelOf(lanes.world).rigidLaneSteps).to.equal(0);
+    expect(lanes.world.stateHash()).to.equal(js.world.stateHash());
+    // 0.7 rad a step: the lanes' series holds.
+    for (const { world, marble } of [js, lanes]) {
+      world.setBodyVelocity(marble, 4.2, 0);
+      world.setBodyAngularVelocity(marble, 42);
+    }
+    for (let k = 0; k < 60; k++) {
+      js.world.step();
+      lanes.world.step();
+    }
+    expect(kernelOf(lanes.world).rigidLaneSteps).to.be.greaterThan(50);
+    expect(lanes.world.stateHash()).to.equal(js.world.stateHash());
+  });
+
   it('contacts that grow mid-run (discs added) lay out again, still the JS doubles one contact a packet', () => {
     const make = (kernel: 'js' | 'wasm') => {
       const world = new World({ gravity: { x: 0, y: 10 }, sleeping: false, kernel } as WorldOptions);

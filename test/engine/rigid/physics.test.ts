@@ -69,27 +69,30 @@ describe('rigid bodies: motion on a slope', () => {
         }
   });
 
-  it('a disc rolling on a rough floor keeps its speed, turning up to 1.3 rad a step, in both kernels', () => {
+  it('a disc rolling on a rough floor keeps its speed, turning up to 2.5 rad a step, in both kernels', () => {
     // Friction holds a material point of the rim through the step; measured straight along the tangent it moves
     // r·(φ − sin φ) more than the disc rolls as it passes the contact, which friction could not undo: the disc slid,
     // braking, 2.2% of its speed lost in 10 s at r 0.25 and 5 units/s, 14% at 10, 32% at 20 (9.1% at r 0.5 and 20).
-    // Measured along the rim (contacts.ts arcBeyond) it rolls on: within 0.01% up to 0.67 rad a step, 5.7% at 1.3 rad
-    // (the series' error there).
+    // Measured along the rim (contacts.ts arcBeyond) it rolls on: within 0.01% up to 0.67 rad a step. Past it the
+    // series for the arc fell short (5.7% lost at 1.3 rad, 30% at 2.5: a marble of radius 0.1 at 15 units/s), where
+    // Math.asin now measures it, in the JS solver (the kernel's lanes leave such steps to it).
     let worst = 0;
+    let worstFast = 0;
     for (const kernel of ['js', 'wasm'] as const)
-      for (const [r, v0, mu] of [[0.25, 5, 0.6], [0.25, 10, 0.6], [0.25, 10, 1], [0.5, 20, 0.6], [1, 10, 0.2], [0.25, 20, 0.6]]) {
+      for (const [r, v0, mu] of [[0.25, 5, 0.6], [0.25, 10, 0.6], [0.25, 10, 1], [0.5, 20, 0.6], [1, 10, 0.2], [0.25, 20, 0.6], [0.1, 10, 0.6], [0.15, 20, 1], [0.1, 15, 0.2]]) {
         const world = new World({ kernel, sleeping: false });
-        world.addRigidBody({ points: box(150, 0.5), x: 120, y: 0.5, type: 'static', friction: mu });
+        world.addRigidBody({ points: box(200, 0.5), x: 150, y: 0.5, type: 'static', friction: mu });
         const disc = world.addRigidBody({ radius: r, x: 0, y: -r, vx: v0, angularVelocity: v0 / r, friction: mu });
         steps(world, 600);
         const at = `${kernel}, r ${r}, v0 ${v0}, μ ${mu}`;
         const v = world.bodyVelocity(disc).x;
         const turn = (v0 / r) / 60;
-        expect(v, at).to.be.closeTo(v0, (turn < 1 ? 0.001 : 0.1) * v0);
-        expect(world.bodyAngularVelocity(disc) * r, at).to.be.closeTo(v, 0.005 * v);
+        expect(v, at).to.be.closeTo(v0, (turn < 1 ? 0.001 : 0.006) * v0);
+        expect(world.bodyAngularVelocity(disc) * r, at).to.be.closeTo(v, 0.001 * v);
         if (turn < 1) worst = Math.max(worst, Math.abs(v / v0 - 1));
+        else worstFast = Math.max(worstFast, Math.abs(v / v0 - 1));
       }
-    console.log(`      rolling discs: speed kept within ${(100 * worst).toFixed(3)}% over 10 s up to 0.67 rad a step`);
+    console.log(`      rolling discs: speed kept within ${(100 * worst).toFixed(3)}% over 10 s up to 0.67 rad a step, ${(100 * worstFast).toFixed(2)}% up to 2.5`);
   });
 
   it('a box holds with μ above tanθ and slides ½·g·(sinθ − μ·cosθ)·t² below it, within 2%', () => {
