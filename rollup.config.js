@@ -78,7 +78,7 @@ function esbuildTs() {
  * p5 in pieces: the bare specifier 'p5' is src/render/p5/modules.js (p5's core and the addons the renderer ships, see
  * docs/drawing.md) made into one ES module by esbuild (src/render/p5/bundle.mjs: p5's modules import CommonJS packages;
  * there p5 never looks for a global p5, which an element with id="p5" would be; scripts/build/p5-trim.mjs leaves out
- * the WebGL and image code p5's core carries). About 50 KB gzip against 304 KB for p5's lib/p5.esm.min.js. Left
+ * the WebGL and image code p5's core carries). About 46 KB gzip against 304 KB for p5's lib/p5.esm.min.js. Left
  * external (external = true) for the library and the no-p5 size build.
  */
 function p5Pieces({ external = false } = {}) {

@@ -20,9 +20,12 @@
 // 4. colorjs.io's gamut mapping gets the delta-E methods its default (CSS) mapping uses, not the ones only named
 //    presets use (they bring the CAM16, HCT, Jzazbz and ICtCp spaces); p5 never names a preset.
 // 5. p5.MediaElement and p5.File (the dom addon's, not registered) are stand-ins (see DOM_STAND_INS).
+// 6. p5.Matrix (WebGL's camera and projection; in 2D only createMatrix() and worldToScreen()/screenToWorld() reach
+//    it) is a stand-in that throws (MATRIX_STAND_IN).
 //
 // Measured (esbuild-minified bundle of modules.js, gzip -9): 116.3 KB untrimmed; 1 + 2 give 73.9, 1 + 2 + 3 give 57.5
-// (none of them does much alone: p5's own chunks reference each other), 4 takes 4.0 more off (53.5), 5 2.1 (51.4).
+// (none of them does much alone: p5's own chunks reference each other), 4 takes 4.0 more off (53.5), 5 2.1 (51.4),
+// 6 3.7 (47.6).
 //
 // Every change is checked (text edits match as often as expected, stand-ins are used): if p5's or colorjs.io's files
 // change shape (a new version), the build fails and says which change no longer applies, instead of shipping an
@@ -73,12 +76,21 @@ const DOM_STAND_INS = {
 export default function file() {}`,
 };
 
+/**
+ * p5.Matrix: the 4×4 and 3×3 matrices of WebGL's camera, which p5's core imports for the 2D renderer's
+ * getWorldToScreenMatrix() (worldToScreen(), screenToWorld()) and the math addon's createMatrix(); no drawing call
+ * of a 2D sketch (transforms use the canvas' own) constructs one.
+ */
+const MATRIX_STAND_IN = `export class Matrix {
+  constructor() { throw new Error("p5.Matrix (createMatrix, worldToScreen) needs p5's WebGL code, which this build of p5 leaves out (docs/drawing.md)"); }
+}`;
+
 export function p5Trim() {
   return {
     name: 'p5-trim',
     setup(build) {
       const applied = new Map(EDITS.map((e) => [e, 0]));
-      const standIns = { filterRenderer2D: 0, deltaE: 0, MediaElement: 0, File: 0 };
+      const standIns = { filterRenderer2D: 0, deltaE: 0, MediaElement: 0, File: 0, Matrix: 0 };
       build.onStart(() => {
         applied.forEach((_, e) => applied.set(e, 0));
         for (const k in standIns) standIns[k] = 0;
@@ -96,6 +108,11 @@ export function p5Trim() {
         return { path: name, namespace: 'p5-trim' };
       });
       build.onLoad({ filter: /^(?:MediaElement|File)$/, namespace: 'p5-trim' }, (args) => ({ contents: DOM_STAND_INS[args.path], loader: 'js' }));
+
+      build.onResolve({ filter: /(?:^|\/)Matrices\/Matrix\.js$/ }, (args) =>
+        /[\\/]p5[\\/]dist[\\/]/.test(args.importer) ? (standIns.Matrix++, { path: 'Matrix', namespace: 'p5-trim' }) : null,
+      );
+      build.onLoad({ filter: /^Matrix$/, namespace: 'p5-trim' }, () => ({ contents: MATRIX_STAND_IN, loader: 'js' }));
 
       build.onResolve({ filter: /^\.\/deltaE\/index\.js$/ }, (args) =>
         /[\\/]colorjs\.io[\\/]src[\\/]toGamut\.js$/.test(args.importer)
