@@ -18,7 +18,7 @@ export interface WorldOptions {
   /** The fixed step in seconds. Default 1/60. */
   timestep?: number;
   /**
-   * Substeps per step: a count, or 'auto' (default): 4 when every body that moves is a rigid body, 10 when particles,
+   * Substeps per step: a count, or 'auto' (default): 6 when every body that moves is a rigid body, 10 when particles,
    * ropes, cloth, soft bodies, ragdolls or particle-built frames move (substeps buy more stiffness per cost than
    * iterations; rigid contacts need fewer). World.substepCount reads the count the next step takes.
    */

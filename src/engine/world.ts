@@ -117,10 +117,11 @@ export class World {
   private get settings(): StepSettings {
     return this.ctx.settings;
   }
-  /** Acceleration of gravity, a copy (set it, or call setGravity(), which also wakes every body; both check it). */
+  /** Acceleration of gravity, a copy. Set it (or call setGravity()): checked, and every body wakes to feel it. */
   get gravity(): Vec2 { return { ...this.settings.gravity }; }
   set gravity(v: Vec2) {
     const gravity = CHECK.gravity(v);
+    wakeAll(this.ctx);
     this.keepingVelocities(() => (this.settings.gravity = gravity));
   }
   /** A box the particles cannot leave, or null (checked when set, as by setBounds()). */
@@ -163,9 +164,7 @@ export class World {
   set contactSlop(v: number) { this.settings.contactSlop = CHECK.contactSlop(v); }
 
   setGravity(x: number, y: number): void {
-    const gravity = CHECK.gravity({ x, y });
-    wakeAll(this.ctx);
-    this.keepingVelocities(() => (this.settings.gravity = gravity));
+    this.gravity = { x, y };
   }
   setBounds(bounds: Bounds | null): void {
     this.settings.bounds = CHECK.bounds(bounds);

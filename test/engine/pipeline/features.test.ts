@@ -301,6 +301,21 @@ describe('pipeline: pointer drag', () => {
 });
 
 describe('pipeline: sleeping', () => {
+  it('a gravity change wakes sleeping bodies, set as a property or through setGravity(), and they fall the new way', () => {
+    for (const change of ['property', 'setGravity'] as const) {
+      const world = new World({ gravity: { x: 0, y: 9.81 }, bounds: null });
+      createBox(world, { x: 0, y: 5, width: 20, height: 1, static: true });
+      const ball = createCircle(world, { x: 0, y: 4, radius: 0.5 });
+      for (let k = 0; k < 300 && world.isAwake(ball.body); k++) world.step();
+      expect(world.isAwake(ball.body), `${change}: asleep first`).to.equal(false);
+      if (change === 'property') world.gravity = { x: 0, y: -9.81 };
+      else world.setGravity(0, -9.81);
+      for (let k = 0; k < 60; k++) world.step();
+      // Up ½·g·t² = 4.9 in a second.
+      expect(world.bodyPose(ball.body).y, change).to.be.closeTo(4 - 4.905, 0.05);
+    }
+  });
+
   it('a settled pyramid falls asleep within 5 s, and an impulse wakes it', () => {
     const { world, bodies } = scene('pyramid');
     let asleepAt = -1;
