@@ -32,9 +32,12 @@ export abstract class PhysicsBodyElement extends LitElement {
     }
   `;
 
-  /** Total mass (> 0); default from `density` × area. */
+  /** Total mass (> 0); default from `density` × area (a rope 1, a cloth 0.01 a particle, a ragdoll 70). */
   @property({ type: Number, converter: numberAttribute }) mass?: number;
-  /** Mass per unit area (> 0, default 1) when `mass` is not given. */
+  /**
+   * Mass per unit area (> 0, default 1) when `mass` is not given: of a box, circle, polygon or soft body (a rope, cloth
+   * or ragdoll reports it: give it `mass`).
+   */
   @property({ type: Number, converter: numberAttribute }) density?: number;
   /** Immovable (floors, walls, obstacles). */
   @property({ type: Boolean, attribute: 'static' }) isStatic = false;
@@ -58,9 +61,9 @@ export abstract class PhysicsBodyElement extends LitElement {
 
   /**
    * Horizontal position in world units. Reads the live position while simulated; setting it moves the body, from
-   * where it is for a shape or soft body, from its markup's other coordinates for a cloth (its top-left corner) or a
-   * ragdoll (its pelvis), whose live x and y are their particles' mean (a rope is placed by x1, y1, x2, y2 instead:
-   * its x and y only read its centroid).
+   * where it is for a shape or soft body, from its markup's other coordinates for a cloth (placed by its top-left
+   * corner; its live x and y are its particles' mean) or a ragdoll (placed by its pelvis, which its live x and y read)
+   * (a rope is placed by x1, y1, x2, y2 instead: its x and y only read its centroid).
    * @attr x
    */
   @property({ type: Number, converter: numberAttribute, noAccessor: true })
@@ -130,8 +133,8 @@ export abstract class PhysicsBodyElement extends LitElement {
 
   /**
    * Whether the live pose is where x, y and angle place the body (a shape's centre, a soft body's), so that setting one
-   * part keeps the others live. A cloth's x, y are its top-left corner and a ragdoll's its pelvis, while their pose is
-   * their particles' mean: `cloth.y = 0.5` took the mean for x and rebuilt the cloth 2.75 to the right, into the wall.
+   * part keeps the others live. A cloth's x, y are its top-left corner, while its pose is its particles' mean (a
+   * ragdoll's are its pelvis, which a fall moves with the rest): `cloth.y = 0.5` took the mean for x and rebuilt the cloth 2.75 to the right, into the wall.
    */
   protected get poseIsPlacement(): boolean {
     return true;
@@ -203,6 +206,7 @@ export abstract class PhysicsBodyElement extends LitElement {
   protected material(check: Checker, out: Record<string, unknown>, area: number | null, size = '', particles = 1): boolean {
     const mass = check.number('mass', this.mass, { positive: true, min: MIN_MASS });
     const density = check.number('density', this.density, { positive: true });
+    if (area === null && density !== undefined) check.fail('density', this.density, `does not apply to <${this.localName}>: set mass (the whole body's)`);
     // The mass the engine makes from density (default 1) × area, when no mass is written.
     const total = area === null ? NaN : (density ?? 1) * area;
     if (mass !== undefined) out.mass = mass;

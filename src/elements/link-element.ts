@@ -19,7 +19,7 @@ export abstract class PhysicsLinkElement extends LitElement {
   /**
    * Anchor point in world units (with `y`; one without the other is no anchor): a rigid body is held at this point, a
    * body of particles at its particle nearest to it. Without one, a rigid body at its centre, a body of particles at
-   * its particle nearest to the other.
+   * its particle nearest to the other (a `<physics-pin>` needs both: they are the world point it pins to).
    */
   @property({ type: Number, converter: numberAttribute }) x?: number;
   /** Anchor point's y (with `x`). */

@@ -53,7 +53,6 @@ export class PhysicsClothElement extends PhysicsBodyElement {
     if (tear !== undefined) out.tear = tear;
     this.unused(check, 'angle');
     this.material(check, out, null);
-    delete out.static;
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 

@@ -50,7 +50,6 @@ export class PhysicsRopeElement extends PhysicsBodyElement {
     out.pinEnd = pin === 'end' || pin === 'both';
     this.unused(check, 'x', 'y', 'angle');
     this.material(check, out, null);
-    delete out.static;
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 

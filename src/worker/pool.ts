@@ -135,7 +135,7 @@ export class WorkerPool {
       worker: w.serial,
       transport,
       port,
-      invoke: (method, args) => w.remote.invoke(id, method, args),
+      invoke: (method, args) => w.remote.invoke(id, method, args).catch(retyped),
       fail: (reason) => this.#die(w, reason, reason),
       close: () => {
         if (closed) return;
@@ -220,4 +220,13 @@ export class WorkerPool {
 
 function load(w: PoolWorker): number {
   return w.members.size + w.opening.size;
+}
+
+/**
+ * A TypeError or RangeError thrown in the worker arrives as a plain Error with its name (comlink keeps the name and the
+ * message, not the class): it is given its class back, so that `instanceof` tells it as the API documents it.
+ */
+function retyped(error: unknown): never {
+  const Class = error instanceof Error && (error.name === 'TypeError' ? TypeError : error.name === 'RangeError' ? RangeError : null);
+  throw Class ? new Class((error as Error).message) : error;
 }

@@ -49,6 +49,36 @@ describe('<physics-scene> bad markup', () => {
     expect(errors.length).to.equal(4);
   });
 
+  it('a static rope and a static cloth hold still; density on a rope, cloth or ragdoll is reported (they take mass), and they run', async () => {
+    const errors: PhysicsErrorDetail[] = [];
+    console.warn = () => {};
+    scene = await mount(
+      'width="10" height="10" paused',
+      `<physics-rope id="rope" x1="1" y1="2" x2="5" y2="2" static pin="none"></physics-rope>
+       <physics-cloth id="cloth" x="5" y="1" columns="4" rows="3" static pins="none"></physics-cloth>
+       <physics-rope id="heavy" x1="1" y1="5" x2="4" y2="5" density="3"></physics-rope>
+       <physics-cloth id="sheet" x="5" y="5" columns="3" rows="3" density="2"></physics-cloth>
+       <physics-ragdoll id="doll" x="8" y="4" density="1e-20"></physics-ragdoll>`,
+      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+    );
+    expect(errors.map((e) => [e.element.id, e.attribute, e.value])).to.have.deep.members([
+      ['heavy', 'density', '3'],
+      ['sheet', 'density', '2'],
+      ['doll', 'density', '1e-20'],
+    ]);
+    expect(errors[0].message).to.include('set mass');
+    const [rope, cloth, heavy] = ['#rope', '#cloth', '#heavy'].map((q) => scene!.querySelector<HTMLElement & { y: number }>(q)!);
+    await scene.step(1);
+    const before = [rope.y, cloth.y, heavy.y];
+    expect(before[0]).to.be.closeTo(2, 1e-9);
+    await scene.step(60);
+    // A second under gravity: the static ones where they were, the reported rope (pinned at its start) swung down.
+    expect(rope.y).to.equal(before[0]);
+    expect(cloth.y).to.equal(before[1]);
+    expect(heavy.y).to.be.above(before[2] + 0.3);
+    expect((await scene.diagnostics()).bodyCount).to.equal(5);
+  });
+
   it('reports misspelt attribute names with the one meant; the page\'s own attributes and globals are left alone', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
