@@ -336,7 +336,10 @@ export class World {
     const i = this.particleIndex(handle);
     const [gx, gy] = [finite('fx', fx), finite('fy', fy)];
     // A sleeping body's inverse mass is parked at 0: the speed is checked against the one it wakes with.
-    pushSpeed(FORCE_SPEED, this.particles.fx[i] + gx, this.particles.fy[i] + gy, this.ctx.sleep.awakeInvMass(i, this.particles), this.settings.timestep);
+    const invMass = this.ctx.sleep.awakeInvMass(i, this.particles);
+    pushSpeed(FORCE_SPEED, this.particles.fx[i] + gx, this.particles.fy[i] + gy, invMass, this.settings.timestep);
+    // Dropped on a particle that cannot move (static or pinned): it would act in full once freed before the step.
+    if (invMass === 0) return;
     wakeParticle(this.ctx, i);
     this.particles.fx[i] += gx;
     this.particles.fy[i] += gy;

@@ -184,6 +184,28 @@ describe('bad input', () => {
     expect(allFinite(w)).to.equal(true);
   });
 
+  it('a force or torque on a body that cannot move is dropped, not kept to act in full once the body is freed before the step', () => {
+    const w = new World({ gravity: { x: 0, y: 0 } });
+    const b = w.addRigidBody({ x: 0, y: 0, radius: 1, type: 'static' });
+    w.applyBodyForce(b, 1e13, 0);
+    w.applyBodyTorque(b, 1e13);
+    w.setBodyType(b, 'dynamic');
+    const p = w.addParticle({ x: 5, y: 0 });
+    const pin = w.addPin(p);
+    w.applyForce(p, 1e300, 0);
+    w.removeConstraint(pin);
+    w.step();
+    w.step();
+    expect(w.bodyVelocity(b).x).to.equal(0);
+    expect(w.bodyAngularVelocity(b)).to.equal(0);
+    expect(w.getVelocity(p).x).to.equal(0);
+    expect(w.diagnostics().rowsRepaired).to.equal(0);
+    // Once movable, a force acts: F/m · dt over a step.
+    w.applyBodyForce(b, Math.PI * 60, 0);
+    w.step();
+    expect(w.bodyVelocity(b).x).to.be.closeTo(1, 1e-9);
+  });
+
   it('pushes add up under the speed limit: a second force or impulse that takes the sum past ±1e9 is refused', () => {
     const w = new World({ gravity: { x: 0, y: 0 } });
     const box = createBox(w, { x: 0, y: 0, width: 1, height: 1, mass: 1 });

@@ -152,6 +152,9 @@ export function pushBody(ctx: StepContext, body: Handle, fx: number, fy: number,
     pushSpeed(FORCE_SPEED, p.fx[r.i] + jx, p.fy[r.i] + jy, sleep.awakeInvMass(r.i, p), seconds);
     speed('the turn the force adds (with the step\'s earlier torques) · timestep / inertia', (p.torque[r.i] + turn) * sleep.awakeInvInertia(r.i, p) * seconds);
   }
+  // A force on a body that cannot move (static, kinematic) is dropped: kept, it was checked against no mass and acted
+  // in full if the body was made dynamic before the step (1e13 gave 5e10 units/s).
+  if (!impulse && sleep.awakeInvMass(r.i, p) === 0 && sleep.awakeInvInertia(r.i, p) === 0) return;
   wake(ctx, r.slot);
   if (impulse) applyImpulseAt(p, r.i, jx, jy, px, py);
   else applyForceAt(p, r.i, jx, jy, px, py);
@@ -161,7 +164,10 @@ export function applyBodyTorque(ctx: StepContext, body: Handle, torque: number):
   const r = rigidOf(ctx, body);
   const t = finite('torque', torque);
   // With the step's earlier torques: they add up.
-  speed('torque · timestep / inertia (with the torques given since the last step)', (ctx.particles.torque[r.i] + t) * ctx.sleep.awakeInvInertia(r.i, ctx.particles) * ctx.settings.timestep);
+  const invInertia = ctx.sleep.awakeInvInertia(r.i, ctx.particles);
+  speed('torque · timestep / inertia (with the torques given since the last step)', (ctx.particles.torque[r.i] + t) * invInertia * ctx.settings.timestep);
+  // Dropped on a body that cannot turn (as pushBody drops a force).
+  if (invInertia === 0) return;
   ctx.particles.torque[r.i] += t;
   wake(ctx, r.slot);
 }
