@@ -1,6 +1,7 @@
 // Integer handles: a slot index plus a generation counter, packed into one safe integer. A handle stays valid while
 // its object lives; once the object is removed its slot may be reused, but with a new generation, so the old handle
 // is recognised as stale instead of silently pointing at a newcomer (the scheme of Box2D v3's ids).
+import { describeValue } from './validate.js';
 
 export type Handle = number;
 
@@ -78,7 +79,7 @@ export class HandleRegistry {
   /** The slot of a live handle; throws a TypeError/RangeError naming `argName` otherwise. */
   slotOf(handle: unknown, argName = `${this.what} handle`): number {
     if (typeof handle !== 'number' || !Number.isSafeInteger(handle) || handle < 0) {
-      throw new TypeError(`${argName} must be a ${this.what} handle (a whole number), got ${String(handle)}`);
+      throw new TypeError(`${argName} must be a ${this.what} handle (a whole number), got ${describeValue(handle)}`);
     }
     if (!this.isValid(handle)) throw new RangeError(`${argName} ${handle} is not a live ${this.what} (removed or never created)`);
     return handleSlot(handle);

@@ -3,12 +3,11 @@
 // A test enumerates a fresh world's fields and fails on any field that is in neither list, so a new field cannot be
 // forgotten silently; the lists drive the code below, so a renamed field fails that test instead of restoring nothing.
 import type { Bounds } from './bounds.js';
-import type { ParticleStore } from './particles.js';
 import type { RegistrySnapshot } from './handles.js';
 import type { Column } from './table.js';
 import type { BodiesSnapshot } from './body-registry.js';
 import type { ConstraintsSnapshot } from './constraint-registry.js';
-import type { Limits, WorldOptions } from './options.js';
+import { CONSTRAINT_KINDS, type Limits, type WorldOptions } from './options.js';
 import { BROAD_PHASES, checkedSettings, NARROW_PHASES } from './settings.js';
 import { describeValue, integer, nonNegative, oneOf } from './validate.js';
 import { MAX_SLOTS } from './handles.js';
@@ -179,12 +178,18 @@ export interface WorldSnapshot extends Record<Snapshotted, unknown> {
   rigidAnchors: ReturnType<RigidAnchorCache['snapshot']>;
 }
 
-/** Refuses a table holding NaN or ±Infinity in any row (a snapshot edited or damaged on its way). */
-function finiteColumns(what: string, table: ParticleStore): void {
+/**
+ * Refuses a table holding NaN or ±Infinity in any row (a snapshot edited or damaged on its way); `open` names the
+ * columns that may be ±Infinity (a joint's or link's limit left open). A NaN in a constraint's target or compliance
+ * froze its particle for good, an ∞ rest length or compliance made NaN accelerations.
+ */
+function finiteColumns(what: string, table: { columns: readonly string[]; count: number }, open: readonly string[] = []): void {
   for (const name of table.columns) {
-    const column = table[name];
+    const column = (table as unknown as Record<string, ArrayLike<number>>)[name];
+    const limit = open.includes(name);
     for (let i = 0; i < table.count; i++) {
-      if (!Number.isFinite(column[i])) throw new RangeError(`${what}.${name}[${i}] must be a finite number, got ${describeValue(column[i])}`);
+      const v = column[i];
+      if (limit ? v !== v : !Number.isFinite(v)) throw new RangeError(`${what}.${name}[${i}] must be a ${limit ? '' : 'finite '}number, got ${describeValue(v)}`);
     }
   }
 }
@@ -240,9 +245,12 @@ export function restoreContext(ctx: StepContext, s: WorldSnapshot): void {
   finiteColumns('snapshot particles', ctx.particles);
   ctx.particleIds.restore(s.particleIds);
   ctx.constraints.restore(s.constraints);
+  ctx.constraints.tables.forEach((t, k) => finiteColumns(`snapshot ${CONSTRAINT_KINDS[k]} constraints`, t, ['lower', 'upper', 'minLength', 'maxLength', 'min', 'max', 'breakStrain']));
   ctx.bodies.restore(s.bodies);
   ctx.colliders.ensureBodies(ctx.bodies.ids.high);
   loadFields(ctx.colliders, FIELDS.colliders.snapshotted, s.colliders);
+  const { friction, restitution } = ctx.colliders;
+  finiteColumns('snapshot colliders', { columns: ['friction', 'restitution'], count: ctx.bodies.ids.high, friction, restitution } as never);
   ctx.anchors.restoreSnapshot(s.anchors);
   ctx.rigidShapes.restore(s.rigidShapes);
   ctx.rigidAnchors.restoreSnapshot(s.rigidAnchors);

@@ -4,6 +4,7 @@
 function show(value: unknown): string {
   if (typeof value === 'string') return JSON.stringify(value);
   if (typeof value === 'number' || typeof value === 'boolean' || value == null) return String(value);
+  if (typeof value === 'bigint') return `${value}n`;
   try {
     return JSON.stringify(value) ?? String(value);
   } catch {
@@ -16,6 +17,13 @@ export function finite(name: string, value: unknown): number {
   if (typeof value !== 'number') throw new TypeError(`${name} must be a number, got ${show(value)}`);
   if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${show(value)}`);
   return value;
+}
+
+/** An angle in radians, within ±1e9: beyond, rounding eats a substep's turn (at 1e16 a spinning body stood still). */
+export function angleOf(name: string, value: unknown): number {
+  const v = finite(name, value);
+  if (v > MAX_WORLD_COORDINATE || v < -MAX_WORLD_COORDINATE) throw new RangeError(`${name} must be within ±1e9 radians (beyond, rounding eats a body's turn), got ${show(value)}`);
+  return v;
 }
 
 /**

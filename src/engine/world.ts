@@ -97,7 +97,7 @@ export class World {
   get narrowPhase(): NarrowPhase { return this.ctx.narrowPhase; }
   /** When true, each step records how long collision detection and the substeps took (ms) in `timings`. */
   get measureTimings(): boolean { return this.ctx.measureTimings; }
-  set measureTimings(v: boolean) { this.ctx.measureTimings = v; }
+  set measureTimings(v: boolean) { this.ctx.measureTimings = flag('measureTimings', v); }
   get timings(): { detect: number; solve: number } { return this.ctx.timings; }
   /** Which solver kernel runs (WorldOptions kernel: 'js' | 'wasm' | 'auto'), and why not WebAssembly if it does not. */
   diagnostics(): WorldDiagnostics { return { ...this.ctx.kernelDiagnostics, rowsRepaired: this.ctx.rowsRepaired }; }

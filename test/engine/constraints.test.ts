@@ -3,6 +3,72 @@ import { World, createRope, createCloth, createRagdoll, createBox, createSoftBod
 import { allFinite, distance, totalEnergy } from './helpers.js';
 
 describe('constraints', () => {
+  it('angle limits that cannot all hold at once, or a doll 3e-5 tall landing, leave the doll finite and near, in both kernels', () => {
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel });
+      const doll = createRagdoll(world, { x: 0, y: 0 });
+      const P = doll.particles;
+      world.addAngleLimit(P[2], P[0], P[1], { min: 2, max: 2.5 });
+      world.addAngleLimit(P[2], P[3], P[9], { min: 23, max: 23.5 });
+      let farthest = 0;
+      for (let k = 0; k < 60; k++) {
+        world.step();
+        for (const p of P) farthest = Math.max(farthest, Math.hypot(world.getPosition(p).x, world.getPosition(p).y));
+      }
+      // It falls ½·g·t² = 4.9 in the second (no bounds); before, the JS kernel flung it to 9e8.
+      expect(farthest, kernel).to.be.below(8);
+      expect(world.diagnostics().rowsRepaired, kernel).to.equal(0);
+      // A doll 3e-5 tall landing on its side: the kernel's sweep left its limits radians off, and it flew to 3e5.
+      const tiny = new World({ kernel });
+      const small = createRagdoll(tiny, { x: 0, y: 0, height: 3e-5 });
+      createBox(tiny, { x: 0, y: 6, width: 40, height: 1, static: true });
+      tiny.setVelocity(small.particles[1], -4.16, 0);
+      for (let k = 0; k < 120; k++) tiny.step();
+      const at = tiny.bodyCentroid(small.body);
+      expect(Math.abs(at.x), `${kernel}: tiny doll`).to.be.below(1);
+      expect(at.y, `${kernel}: tiny doll`).to.be.closeTo(5.5, 0.01);
+    }
+  });
+
+  it('springs share the stable stiffness at a particle held by many: a 400-spoke springs wheel and 80 stiff springs on one particle stay put', () => {
+    for (const segments of [60, 100, 400]) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const wheel = createSoftBody(world, { center: { x: 0, y: 0 }, radius: 1, segments, model: 'springs' });
+      createBox(world, { x: 0, y: 5, width: 40, height: 1, static: true });
+      let lowest = -Infinity;
+      for (let k = 0; k < 180; k++) {
+        world.step();
+        for (const p of wheel.particles) lowest = Math.max(lowest, world.getPosition(p).y);
+      }
+      // It lands on the floor's top (4.5) and stays above it; before, past ~50 spokes its hub blew up.
+      expect(lowest, `${segments} spokes`).to.be.within(4, 4.6);
+      expect(world.diagnostics().rowsRepaired, `${segments} spokes`).to.equal(0);
+    }
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const hub = world.addParticle({ x: 0, y: 0, mass: 1 });
+    for (let k = 0; k < 80; k++) {
+      const a = (2 * Math.PI * k) / 80;
+      const rim = world.addParticle({ x: Math.cos(a), y: Math.sin(a) });
+      world.addPin(rim);
+      world.addSpring(hub, rim, { length: 0.9, stiffness: 1e6 });
+    }
+    world.setPosition(hub, 0.3, 0);
+    // Undamped, it swings for ever, but within bounds that do not grow (before: 7e8 units away).
+    const swing = () => {
+      let most = 0;
+      for (let k = 0; k < 120; k++) {
+        world.step();
+        most = Math.max(most, Math.abs(world.getPosition(hub).x));
+      }
+      return most;
+    };
+    const first = swing();
+    for (let s = 0; s < 3; s++) swing();
+    expect(first).to.be.below(0.5);
+    expect(swing()).to.be.at.most(first * 1.001);
+    expect(world.diagnostics().rowsRepaired).to.equal(0);
+  });
+
   it('a small-amplitude pendulum has period 2π√(L/g) within 1%', () => {
     const L = 2;
     const g = 9.81;

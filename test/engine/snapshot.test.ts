@@ -106,6 +106,32 @@ describe('snapshot and restore', () => {
     expect(() => world.restore({ ...world.snapshot(), settings })).to.throw(RangeError, /timestep/);
   });
 
+  it('restore() refuses NaN or ±Infinity in a constraint or a collider, naming the column and row; open limits may be ±Infinity', () => {
+    const world = new World();
+    const p = world.addParticle({ x: 0, y: 0 });
+    const q = world.addParticle({ x: 1, y: 0 });
+    world.addPin(p, { compliance: 0.001 });
+    world.addSpring(p, q, { length: 1, stiffness: 10 });
+    const a = world.addRigidBody({ x: 3, y: 0, radius: 0.5 });
+    world.addJoint({ type: 'revolute', a });
+    for (let k = 0; k < 5; k++) world.step();
+    const before = world.stateHash();
+    const damaged = (edit: (s: WorldSnapshot) => void) => {
+      const s = structuredClone(world.snapshot());
+      edit(s);
+      return s;
+    };
+    const column = (s: WorldSnapshot, kind: number, k: number) => s.constraints.tables[kind].columns[k] as Float64Array;
+    // Pins (table 2): tx is column 1; springs (table 3): restLength is column 2; colliders' friction.
+    expect(() => world.restore(damaged((s) => (column(s, 2, 1)[0] = NaN)))).to.throw(RangeError, /pin constraints\.tx\[0\].*NaN/);
+    expect(() => world.restore(damaged((s) => (column(s, 3, 2)[0] = Infinity)))).to.throw(RangeError, /spring constraints\.restLength\[0\] must be a finite number/);
+    expect(() => world.restore(damaged((s) => ((s.colliders.friction as Float64Array)[0] = NaN)))).to.throw(RangeError, /colliders\.friction\[0\]/);
+    expect(world.stateHash()).to.equal(before);
+    // The revolute joint's open limits are ±Infinity: restored as they were.
+    world.restore(structuredClone(world.snapshot()));
+    expect(world.stateHash()).to.equal(before);
+  });
+
   it('a refused restore() keeps the collision events going: the resting pairs do not begin again', () => {
     const { world } = buildScene({ ...catalogue.stack.make(), world: { ...catalogue.stack.make().world, sleeping: false } });
     for (let k = 0; k < 60; k++) world.step();

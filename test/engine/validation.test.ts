@@ -184,6 +184,13 @@ describe('bad input', () => {
     expect(allFinite(w)).to.equal(true);
   });
 
+  it('a value of any kind is shown as it was given: a BigInt with its n, an empty array as []', () => {
+    const w = new World();
+    throwsNaming(() => w.getPosition(5n as never), TypeError, 'handle', '5n');
+    throwsNaming(() => w.getPosition([] as never), TypeError, 'handle', 'got []');
+    throwsNaming(() => w.addParticle({ x: 1n as never, y: 0 }), TypeError, 'x', '1n');
+  });
+
   it('a force or torque on a body that cannot move is dropped, not kept to act in full once the body is freed before the step', () => {
     const w = new World({ gravity: { x: 0, y: 0 } });
     const b = w.addRigidBody({ x: 0, y: 0, radius: 1, type: 'static' });

@@ -1,5 +1,5 @@
 import type { Vec2, World } from '../world.js';
-import { coordinate, finite, oneOf, positive, speed } from '../validate.js';
+import { angleOf, coordinate, finite, oneOf, positive, speed } from '../validate.js';
 import { BODY_MODELS, BODY_OPTIONS, builderOptions, collisionOptions, colliderOf, complianceOf, massEach, point, transactional, type BodyModel, type BodyOptions, type Built } from './common.js';
 import { checkSimple, decompose } from '../collision/decompose.js';
 
@@ -94,7 +94,7 @@ function createFrame(world: World, o: PolygonOptions, extraBraces: [number, numb
   checkSimple(local.map((p) => p.x), local.map((p) => p.y), 'points');
   const ox = coordinate('x', o.x ?? 0);
   const oy = coordinate('y', o.y ?? 0);
-  const angle = finite('angle', o.angle ?? 0);
+  const angle = angleOf('angle', o.angle ?? 0);
   const each = o.static ? Infinity : massEach('mass', o.mass, local.length, area, 'the area');
   const compliance = complianceOf('compliance', o.compliance);
   const cos = Math.cos(angle);

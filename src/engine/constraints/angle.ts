@@ -29,6 +29,9 @@ export function wrapAngle(a: number): number {
   return a === -Math.PI ? Math.PI : a;
 }
 
+/** The largest angle error (rad) one solve corrects; the rest waits for the next substep. */
+const MAX_ANGLE_STEP = 0.5;
+
 export function solveAngles(c: AngleConstraints, p: ParticleStore, h2: number): void {
   const { a, b, c: cc, min, max, compliance, lambda } = c;
   const { x, y, invMass } = p;
@@ -51,6 +54,11 @@ export function solveAngles(c: AngleConstraints, p: ParticleStore, h2: number): 
     if (rel > half) err = rel - half;
     else if (rel < -half) err = rel + half;
     else continue;
+    // At most MAX_ANGLE_STEP a solve: the correction moves the particles along the angle's tangents, which for a large
+    // error flings them outward (a turn of π moved by π·|u| lengthens u 3.3 times), and limits that cannot all hold
+    // at once (a ragdoll's own and one added across them) fed that from solve to solve until the doll was at 1e9.
+    if (err > MAX_ANGLE_STEP) err = MAX_ANGLE_STEP;
+    else if (err < -MAX_ANGLE_STEP) err = -MAX_ANGLE_STEP;
     // ∂θ/∂c = perp(v)/|v|², ∂θ/∂a = −perp(u)/|u|², ∂θ/∂b = −(∂θ/∂a + ∂θ/∂c), with perp(x, y) = (−y, x).
     const gax = uy / uu;
     const gay = -ux / uu;

@@ -9,7 +9,7 @@ import { ParticleFlag } from '../particles.js';
 import { substepCount, verletReferenceHalf } from '../settings.js';
 import { verletHalfSubstep } from '../integrate.js';
 import { topologyChanged } from '../pipeline/topology.js';
-import { coordinate, finite, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushedSpeed, pushSpeed, speed } from '../validate.js';
+import { angleOf, coordinate, finite, flag, FORCE_SPEED, IMPULSE_SPEED, oneOf, pushedSpeed, pushSpeed, speed } from '../validate.js';
 import { applyForceAt, applyImpulseAt, poseOf, setPose, setType } from './bodies.js';
 import type { JointSide } from './joint-setup.js';
 import { BODY_TYPES, type BodyType, type BodyTypeName, type RigidShapeSource } from './shapes.js';
@@ -32,10 +32,10 @@ export function rigidBodyPlan(o: RigidBodyOptions): {
   return {
     source,
     type,
-    collider: resolveCollider({ ...o, shape: o.collide === false ? 'none' : 'polygon', parts: undefined }, 3),
+    collider: resolveCollider({ ...o, shape: flag('collide', o.collide ?? true) ? 'polygon' : 'none', parts: undefined }, 3),
     x: coordinate('x', o.x),
     y: coordinate('y', o.y),
-    angle: finite('angle', o.angle ?? 0),
+    angle: angleOf('angle', o.angle ?? 0),
     vx: speed('vx', o.vx ?? 0),
     vy: speed('vy', o.vy ?? 0),
     w: speed('angularVelocity', o.angularVelocity ?? 0),
@@ -61,7 +61,7 @@ export function bodyPose(ctx: StepContext, body: Handle): Pose {
 
 export function setBodyPose(ctx: StepContext, body: Handle, x: number, y: number, angle: number): void {
   const r = rigidOf(ctx, body);
-  setPose(ctx.particles, r.i, r.source, coordinate('x', x), coordinate('y', y), finite('angle', angle));
+  setPose(ctx.particles, r.i, r.source, coordinate('x', x), coordinate('y', y), angleOf('angle', angle));
   wake(ctx, r.slot);
   wakeNear(ctx, r.slot);
 }

@@ -2,7 +2,7 @@
 // Setup-time code: it checks every option and names the one at fault.
 import type { ParticleStore } from '../particles.js';
 import type { JointOptions, Vec2 } from '../options.js';
-import { compliance, coordinate, finite, nonNegative, oneOf, speed, stiffness } from '../validate.js';
+import { compliance, coordinate, finite, flag, nonNegative, oneOf, speed, stiffness } from '../validate.js';
 import { JOINT_TYPES } from '../options.js';
 import { JointKind } from './joint-table.js';
 
@@ -46,7 +46,7 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   const row: JointRow = {
     kind: 0, a: A.row, b: B.row, rAx: 0, rAy: 0, rBx: 0, rBy: 0, compliance: compliance('compliance', o.compliance ?? 0), damping: 0,
     refAngle: angleA - angleB, lower: 0, upper: 0, limit: 0, motor: 0, motorSpeed: 0, maxMotorTorque: 0, axisX: 1, axisY: 0, bodyA: -1, bodyB: -1,
-    collide: o.collideConnected ? 1 : 0,
+    collide: flag('collideConnected', o.collideConnected ?? false) ? 1 : 0,
   };
   const aCentre = centre(p, A, { x: 0, y: 0 });
   // A particle side is held at the particle itself: that is the natural default anchor.
@@ -78,6 +78,13 @@ export function jointRow(o: JointOptions, A: JointSide, B: JointSide, p: Particl
   if (type === 'prismatic') {
     row.kind = JointKind.Prismatic;
     const axis = o.axis === undefined ? { x: 1, y: 0 } : vec('axis', o.axis, finite);
+    // A direction of huge or tiny components is scaled first: its square overflowed to ∞ (the axis became (0, 0) and
+    // held nothing) or underflowed to 0 (refused as no direction).
+    const big = Math.max(Math.abs(axis.x), Math.abs(axis.y));
+    if (big > 1e150 || (big > 0 && big < 1e-150)) {
+      axis.x /= big;
+      axis.y /= big;
+    }
     const len = Math.sqrt(axis.x * axis.x + axis.y * axis.y);
     if (!(len > 0)) throw new RangeError(`axis must be a non-zero direction, got ${JSON.stringify(o.axis)}`);
     // The axis in A's frame (it turns with A).

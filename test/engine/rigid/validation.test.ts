@@ -1,7 +1,7 @@
 // Bad input to the rigid-body and joint API: a TypeError/RangeError naming the argument and its value, and the world
 // untouched (no half-made body, no NaN in the state).
 import { expect } from 'chai';
-import { createCloth, World, type Vec2 } from '../../../src/engine/index.js';
+import { createBox, createCloth, World, type Vec2 } from '../../../src/engine/index.js';
 import { throwsNaming } from '../collision/helpers.js';
 
 const square: Vec2[] = [
@@ -84,6 +84,10 @@ describe('rigid bodies: bad input', () => {
     // A motor's speed is a speed: within ±1e9, as angularVelocity is (1e300 spun the body to 1e300 rad/s).
     throwsNaming(() => world.addJoint({ type: 'revolute', a, motorSpeed: 1e300 }), RangeError, 'motorSpeed', '1e+300');
     throwsNaming(() => world.addJoint({ type: 'prismatic', a, b, axis: { x: 0, y: 0 } }), RangeError, 'axis');
+    // A switch is true or false: the string 'false' is not a truthy yes.
+    throwsNaming(() => world.addJoint({ type: 'revolute', a, b, collideConnected: 'false' as never }), TypeError, 'collideConnected', 'false');
+    throwsNaming(() => world.addRigidBody({ x: 0, y: 0, radius: 1, collide: 'false' as never }), TypeError, 'collide', 'false');
+    throwsNaming(() => (world.measureTimings = 'no' as never), TypeError, 'measureTimings', 'no');
     throwsNaming(() => world.addJoint({ type: 'distance', a, b, lower: 3, upper: 1 }), RangeError, 'lower', 'upper');
     throwsNaming(() => world.addJoint({ type: 'spring', a, b, stiffness: 0 }), RangeError, 'stiffness', '0');
     throwsNaming(() => world.addJoint({ type: 'spring', a, b, stiffness: 10, damping: -1 }), RangeError, 'damping', '-1');
@@ -102,6 +106,35 @@ describe('rigid bodies: bad input', () => {
     world.addJoint({ type: 'prismatic', a, b, axis: { x: 1e12, y: 0 }, lower: -1e12, upper: Infinity });
     world.addJoint({ type: 'distance', a, b, lower: 0, upper: 1e12 });
     expect(world.constraintCount).to.equal(count + 2);
+  });
+
+  it('an angle beyond ±1e9 rad is refused where it is given (rounding ate the turn: a disc at angle 1e16 could not spin)', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    throwsNaming(() => world.addRigidBody({ x: 0, y: 0, radius: 1, angle: 1e16 }), RangeError, 'angle', '10000000000000000');
+    throwsNaming(() => createBox(world, { x: 0, y: 0, width: 1, height: 1, angle: -1e12 }), RangeError, 'angle', '-1000000000000');
+    const b = world.addRigidBody({ x: 0, y: 0, radius: 1, angle: 1e9, angularVelocity: 2 });
+    throwsNaming(() => world.setBodyPose(b, 0, 0, 2e9), RangeError, 'angle', '2000000000');
+    for (let k = 0; k < 60; k++) world.step();
+    // At 1e9 a double's spacing is 1.2e-7 rad: the spin keeps to 1e-4.
+    expect(world.bodyAngularVelocity(b)).to.be.closeTo(2, 2e-4);
+    expect(world.bodyPose(b).angle - 1e9).to.be.closeTo(2, 1e-3);
+  });
+
+  it('a prismatic axis is a direction at any scale: (1e200, 1e200) and (1e-200, 1e-200) slide as (1, 1) does', () => {
+    const slid = (axis: Vec2) => {
+      const world = new World({ bounds: null });
+      const b = world.addRigidBody({ x: 0, y: 0, radius: 1 });
+      world.addJoint({ type: 'prismatic', a: b, axis });
+      for (let k = 0; k < 60; k++) world.step();
+      return world.bodyPose(b);
+    };
+    const unit = slid({ x: 1, y: 1 });
+    expect(unit.x).to.be.closeTo(2.45, 0.01);
+    for (const axis of [{ x: 1e200, y: 1e200 }, { x: 1e-200, y: 1e-200 }, { x: -3e300, y: -3e300 }]) {
+      const at = slid(axis);
+      expect(at.x, JSON.stringify(axis)).to.be.closeTo(unit.x, 1e-9);
+      expect(at.y, JSON.stringify(axis)).to.be.closeTo(unit.y, 1e-9);
+    }
   });
 
   it('within ±1e9 the same jointed pendulum swings alike: moved next to (1e9, 1e9) it ends 2 s later within 1e-3 of where it ends at the origin', () => {
