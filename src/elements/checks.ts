@@ -207,9 +207,10 @@ export function describeElement(el: Element): string {
 }
 
 /** Degrees (markup) → radians (engine). */
-// (deg · π) / 180 as it always was (the golden hashes hold its doubles), but not past the largest double: 1e308 degrees
-// is a finite angle.
-export const toRadians = (deg: number): number => (Number.isFinite(deg * Math.PI) ? (deg * Math.PI) / 180 : deg * (Math.PI / 180));
+// (deg · π) / 180 as it always was (the golden hashes hold its doubles). Any finite angle is a pose: past 1e9 degrees
+// it is taken modulo 360 (exact), which the engine's ±1e9 rad takes and a product past the largest double does not
+// overflow (1e308 degrees).
+export const toRadians = (deg: number): number => ((Math.abs(deg) > 1e9 ? deg % 360 : deg) * Math.PI) / 180;
 export const toDegrees = (rad: number): number => (rad * 180) / Math.PI;
 
 /** Attributes any element may carry (HTML's global attributes that a page puts on an embed). */

@@ -162,6 +162,9 @@ function listOfNumbers(value: string): number[] | null {
 function verdict(attr: Attr, value: string): Verdict {
   if (attr.kind === 'boolean') return 'valid';
   const d = attr.description;
+  // An attribute a body type reports whatever its value ("(a rope, cloth or ragdoll reports it", on density).
+  const reporters = d.match(/\(an? ([a-z,\s]+) reports it/)?.[1].split(/,\s*|\s+or\s+/) ?? [];
+  if (reporters.some((r) => attr.tag === `physics-${r}`)) return 'invalid';
   if (attr.kind === 'number') {
     if (value.trim() === '') return 'invalid';
     // A number that also takes a word its description quotes (substeps: "auto").
@@ -579,6 +582,8 @@ describe('markup fuzz', function () {
     expect(verdict(find('physics-box', 'x'), '-1')).to.equal('valid');
     expect(verdict(find('physics-box', 'fill'), 'none')).to.equal('valid');
     expect(verdict(find('physics-box', 'fill'), '<img>')).to.equal('invalid');
+    expect(verdict(find('physics-box', 'density'), '2')).to.equal('valid');
+    expect(verdict(find('physics-cloth', 'density'), '2')).to.equal('invalid');
     for (const list of attrs.values()) for (const a of list) expect(a.kind, `<${a.tag}> ${a.name} has a type`).to.not.equal('unknown');
   });
 
