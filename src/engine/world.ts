@@ -818,7 +818,8 @@ export class World {
       restoreContext(this.ctx, s);
     } catch (error) {
       restoreContext(this.ctx, before);
-      throw error;
+      // A part of it that is not what snapshot() makes fails inside (reading a field of undefined): said as such.
+      throw error instanceof TypeError && !/snapshot/.test(error.message) ? new TypeError(`snapshot is not one World.snapshot() made: ${error.message}`) : error;
     }
     // Only a restore that happened forgets which pairs touch (they begin again): a refused one keeps the events going.
     this.ctx.eventTracker.clear();

@@ -127,6 +127,11 @@ describe('snapshot and restore', () => {
     expect(() => world.restore(damaged((s) => (column(s, 3, 2)[0] = Infinity)))).to.throw(RangeError, /spring constraints\.restLength\[0\] must be a finite number/);
     expect(() => world.restore(damaged((s) => ((s.colliders.friction as Float64Array)[0] = NaN)))).to.throw(RangeError, /colliders\.friction\[0\]/);
     expect(world.stateHash()).to.equal(before);
+    // A part that is not what snapshot() makes is named as such, not as the field read inside that failed.
+    for (const edit of [(s: WorldSnapshot) => ((s as unknown as { constraints: unknown }).constraints = 5), (s: WorldSnapshot) => ((s as unknown as { anchors: unknown }).anchors = [])]) {
+      expect(() => world.restore(damaged(edit))).to.throw(TypeError, /^snapshot is not one World\.snapshot\(\) made/);
+    }
+    expect(world.stateHash()).to.equal(before);
     // The revolute joint's open limits are ±Infinity: restored as they were.
     world.restore(structuredClone(world.snapshot()));
     expect(world.stateHash()).to.equal(before);

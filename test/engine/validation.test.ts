@@ -1,5 +1,5 @@
 import { expect } from 'chai';
-import { World, buildBody, buildScene, createBox, createCircle, createCloth, createPolygon, createRagdoll, createRope, createSoftBody } from '../../src/engine/index.js';
+import { World, buildBody, buildScene, createBox, createCircle, createCloth, createPolygon, createRagdoll, createRope, createSoftBody, ragdollJoints } from '../../src/engine/index.js';
 import { allFinite } from './helpers.js';
 
 function throwsNaming(fn: () => unknown, type: typeof RangeError | typeof TypeError, ...words: string[]) {
@@ -189,6 +189,8 @@ describe('bad input', () => {
     throwsNaming(() => w.getPosition(5n as never), TypeError, 'handle', '5n');
     throwsNaming(() => w.getPosition([] as never), TypeError, 'handle', 'got []');
     throwsNaming(() => w.addParticle({ x: 1n as never, y: 0 }), TypeError, 'x', '1n');
+    throwsNaming(() => ragdollJoints(null as never), TypeError, 'ragdollJoints', 'createRagdoll');
+    throwsNaming(() => ragdollJoints({} as never), TypeError, 'ragdollJoints', '{}');
   });
 
   it('a force or torque on a body that cannot move is dropped, not kept to act in full once the body is freed before the step', () => {

@@ -1,5 +1,5 @@
 import type { Handle, World } from '../world.js';
-import { coordinate, positive } from '../validate.js';
+import { coordinate, describeValue, positive } from '../validate.js';
 import { BODY_OPTIONS, builderOptions, colliderOf, complianceOf, massEach, transactional, type BodyOptions, type Built } from './common.js';
 
 export interface RagdollOptions extends BodyOptions {
@@ -81,5 +81,6 @@ export type RagdollParticles = Record<(typeof RAGDOLL_JOINTS)[number], Handle>;
 
 /** The ragdoll's particles by joint name. */
 export function ragdollJoints(built: Built): RagdollParticles {
+  if (built?.particles?.length !== RAGDOLL_JOINTS.length) throw new TypeError(`ragdollJoints takes what createRagdoll() returned, got ${describeValue(built)}`);
   return Object.fromEntries(RAGDOLL_JOINTS.map((name, k) => [name, built.particles[k]])) as RagdollParticles;
 }
