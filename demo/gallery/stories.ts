@@ -213,16 +213,16 @@ const rigidStories: Story[] = [
     id: 'newtons-cradle',
     group: 'Rigid bodies',
     title: "Newton's cradle",
-    description: 'Five balls (restitution 1, no friction) each hung from the world by a distance joint; the first is let go from the side.',
+    description: 'Five balls (restitution 1, no friction) each hung from the world by a distance joint, 1% of a diameter apart; the first is let go from the side, and the last swings up to 98% of its height.',
     root: scene({}, [
       n('physics-box', { x: 8, y: 1, width: 7, height: 0.3, static: true, fill: '#596273' }),
       ...[0, 1, 2, 3, 4].map((k) => {
-        const pivotX = 6 + k * 1.001;
+        const pivotX = 6 + k * 1.01;
         const [x, y] = k === 0 ? [pivotX - 4 * Math.sin(Math.PI / 4), 1 + 4 * Math.cos(Math.PI / 4)] : [pivotX, 5];
         return n('physics-circle', { id: `ball${k}`, x, y, radius: 0.5, restitution: 1, friction: 0, fill: '#b8c0cc', stroke: '#596273' });
       }),
       ...[0, 1, 2, 3, 4].map((k) => {
-        const pivotX = 6 + k * 1.001;
+        const pivotX = 6 + k * 1.01;
         return n('physics-joint', { a: `ball${k}`, x1: k === 0 ? pivotX - 4 * Math.sin(Math.PI / 4) : pivotX, y1: k === 0 ? 1 + 4 * Math.cos(Math.PI / 4) : 5, x2: pivotX, y2: 1 });
       }),
     ]),
