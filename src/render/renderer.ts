@@ -156,6 +156,8 @@ export class SceneRenderer {
   private releasedState: Record<string, unknown> = {};
   /** The size the ResizeObserver last reported (CSS pixels), or null before its first report. */
   private observedSize: { width: number; height: number } | null = null;
+  /** Device pixels per CSS pixel of the element as the ResizeObserver last measured them (null: not reported). */
+  private observedRatio: number | null = null;
   private view: DrawView | null = null;
   private ownHooks: unknown[] = [];
   private scale = 1;
@@ -211,7 +213,7 @@ export class SceneRenderer {
         const { width, height } = this.observedSize ?? this.boxSize();
         const renderer = s.createCanvas(width, height);
         // p5 makes the canvas at the display's density rounded up; only a density it did not choose costs a resize.
-        const density = Math.max(1, Math.min(3, window.devicePixelRatio || 1));
+        const density = this.density();
         if (s.pixelDensity() !== density) s.pixelDensity(density);
         const canvas = (renderer as unknown as { elt: HTMLCanvasElement }).elt;
         canvas.setAttribute('part', 'canvas');
@@ -229,8 +231,11 @@ export class SceneRenderer {
     this.ownHooks = hooks ? hooks.slice(before) : [];
     track('sketches', 1);
     this.observer = new ResizeObserver((entries) => {
-      const box = entries[entries.length - 1]?.contentRect;
+      const entry = entries[entries.length - 1];
+      const box = entry?.contentRect;
       if (box) this.observedSize = { width: Math.max(1, Math.round(box.width)), height: Math.max(1, Math.round(box.height)) };
+      const devicePixels = entry?.devicePixelContentBoxSize?.[0]?.inlineSize;
+      if (box && devicePixels && box.width > 0) this.observedRatio = devicePixels / box.width;
       this.resize();
     });
     this.observer.observe(container);
@@ -396,8 +401,23 @@ export class SceneRenderer {
     return { width: Math.max(1, Math.round(r.width)), height: Math.max(1, Math.round(r.height)) };
   }
 
+  /**
+   * Device pixels per CSS pixel for the canvas, 1 to 3: the display's, or what the ResizeObserver measured where that
+   * differs (a CSS `zoom` on an ancestor: under zoom 2 the canvas was drawn at half the pixels it shows, blurred).
+   */
+  private density(): number {
+    const display = window.devicePixelRatio || 1;
+    const measured = this.observedRatio ?? display;
+    return Math.max(1, Math.min(3, Math.abs(measured / display - 1) > 0.02 ? measured : display));
+  }
+
   private resize(): void {
     if (!this.ready || this.removed) return;
+    const density = this.density();
+    if (density !== this.instance.pixelDensity() && !this.released) {
+      this.dirty = true;
+      this.instance.pixelDensity(density);
+    }
     const { width, height } = this.observedSize ?? this.boxSize();
     if (width === this.cssWidth && height === this.cssHeight) return;
     this.cssWidth = width;

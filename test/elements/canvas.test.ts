@@ -59,6 +59,20 @@ describe('<physics-scene> canvas', () => {
     expect(floorTop - 1 - lowest, `gap between the soft body and the floor (canvas px, ${ratio} per CSS px)`).to.be.at.most(2 * ratio);
   });
 
+  it('under a CSS zoom on an ancestor the canvas has the pixels it shows: zoom 2, twice the CSS width (it was drawn at half and blurred)', async () => {
+    scene = await mount('width="10" height="10" paused background="#ffffff"', `<physics-box x="5" y="5" width="2" height="2" fill="#ff0000" stroke="none"></physics-box>`, {
+      width: 200,
+      height: 200,
+      before: (s) => ((s.parentElement as HTMLElement).style.zoom = '2'),
+    });
+    await drawn(scene, 3);
+    const canvas = scene.canvas!;
+    const shown = canvas.getBoundingClientRect().width;
+    expect(shown).to.be.closeTo(400, 1);
+    expect(canvas.width / window.devicePixelRatio).to.be.closeTo(400, 2);
+    expect(colourDistance(pixelAt(scene, 5, 5), rgb('#ff0000'))).to.be.below(8);
+  });
+
   it('fits the viewBox into the element keeping its aspect ratio (centred, letterboxed)', async () => {
     // A 400×200 element showing a 10×10 world: 20 px per unit, the world spans x = 100..300 px.
     scene = await mount(

@@ -245,13 +245,18 @@ describe('<physics-scene> lifecycle', () => {
     const removed = await mount('width="10" height="10" paused', CHILDREN);
     unmount(removed);
     for (const s of [never, removed]) {
-      for (const call of [() => s.step(1), () => s.reset(), () => s.stateHash(), () => s.diagnostics(), () => s.snapshot()]) {
+      for (const [name, call] of [['step', () => s.step(1)], ['reset', () => s.reset()], ['stateHash', () => s.stateHash()], ['diagnostics', () => s.diagnostics()], ['snapshot', () => s.snapshot()]] as const) {
         const error = await call().then(() => null, (e: Error) => e);
-        expect(error?.name, String(call)).to.equal('EngineStoppedError');
-        // The class the package exports, for `instanceof`.
-        expect(error, String(call)).to.be.instanceOf(EngineStoppedError);
+        expect(error?.name, name).to.equal('EngineStoppedError');
+        // The class the package exports, for `instanceof`; the sentence names the element and the call.
+        expect(error, name).to.be.instanceOf(EngineStoppedError);
+        expect(error?.message, name).to.equal(`<physics-scene> is not in the page: add it, then call ${name}()`);
       }
     }
+    // A preset says its own tag.
+    const cloth = document.createElement('cloth-sim');
+    const error = await cloth.step(1).then(() => null, (e: Error) => e);
+    expect(error?.message).to.equal('<cloth-sim> is not in the page: add it, then call step()');
     await waitFor(() => liveResources().workers === 0, 'the pool\'s worker to end');
   });
 });

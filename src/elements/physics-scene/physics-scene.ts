@@ -405,7 +405,7 @@ export class PhysicsSceneElement extends LitElement {
    */
   async step(n = 1): Promise<number> {
     checkSteps(n);
-    const engine = await this.session.running();
+    const engine = await this.session.running('step()');
     const count = await engine.api.step(n);
     // The frame with the topology it was drawn with: a rebuild's topology travels apart from the frame, and without it
     // the rebuilt bodies have no pose yet.
@@ -416,7 +416,7 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Rebuilds the scene from its markup, at time 0. */
   async reset(): Promise<void> {
-    const engine = await this.session.running();
+    const engine = await this.session.running('reset()');
     // Before the call: begins of the new world may arrive before its reply does.
     this.collisions.endAll();
     await engine.api.reset();
@@ -426,13 +426,13 @@ export class PhysicsSceneElement extends LitElement {
 
   /** Where and how the engine runs, and what it holds (`substepCount`: the substeps a step takes now). */
   async diagnostics(): Promise<Diagnostics & { mode: 'worker' | 'main' }> {
-    const engine = await this.session.running();
+    const engine = await this.session.running('diagnostics()');
     return { ...(await engine.api.diagnostics()), mode: engine.mode };
   }
 
   /** A hash of the full simulation state: equal markup and equal steps give equal hashes in every mode. */
   async stateHash(): Promise<string> {
-    return (await this.session.running()).api.stateHash();
+    return (await this.session.running('stateHash()')).api.stateHash();
   }
 
   /**
@@ -440,7 +440,7 @@ export class PhysicsSceneElement extends LitElement {
    * keep, and JSON does not. restore() takes it back while the markup is as it was.
    */
   async snapshot(): Promise<HostSnapshot> {
-    return (await this.session.running()).api.snapshot();
+    return (await this.session.running('snapshot()')).api.snapshot();
   }
 
   /**
@@ -450,7 +450,7 @@ export class PhysicsSceneElement extends LitElement {
    * the markup changed; the simulation is then left as it was.
    */
   async restore(snapshot: HostSnapshot): Promise<void> {
-    const engine = await this.session.running();
+    const engine = await this.session.running('restore()');
     const s = snapshot as Partial<HostSnapshot> | null;
     if (s === null || typeof s !== 'object' || !Array.isArray(s.bodies) || !Array.isArray(s.links) || typeof s.world !== 'object' || s.world === null || typeof s.params !== 'object' || s.params === null) {
       const got = s === null || typeof s !== 'object' ? String(s) : `an object without its ${['world', 'bodies', 'links', 'params'].filter((k) => typeof (s as Record<string, unknown>)[k] !== 'object' || (s as Record<string, unknown>)[k] === null).join(', ') || 'bodies and links as arrays'}`;

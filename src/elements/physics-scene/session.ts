@@ -171,8 +171,8 @@ export class EngineSession implements ReactiveController, EngineCommands {
    * The engine once ready, or null when there is none (never started, given up). A start waiting to be near goes on.
    * A scene not in the page has none coming: an EngineStoppedError (a call waiting for it would never settle).
    */
-  async whenReady(): Promise<Engine | null> {
-    if (!this.host.isConnected) throw new EngineStoppedError('<physics-scene> is not in the page: add it, then call');
+  async whenReady(method = 'this method'): Promise<Engine | null> {
+    if (!this.host.isConnected) throw new EngineStoppedError(`<${this.host.localName}> is not in the page: add it, then call ${method}`);
     this.options.demand?.();
     await this.ready;
     return this.current;
@@ -182,9 +182,9 @@ export class EngineSession implements ReactiveController, EngineCommands {
    * The engine once ready. An EngineStoppedError when there is none: the scene stopped for good after its engine
    * failed (past max-restarts), where resolving with a made-up result would hide it.
    */
-  async running(): Promise<Engine> {
-    const engine = await this.whenReady();
-    if (!engine) throw new EngineStoppedError('<physics-scene> is stopped: its engine failed (see its physics-error); add it to the page again to restart it');
+  async running(method?: string): Promise<Engine> {
+    const engine = await this.whenReady(method);
+    if (!engine) throw new EngineStoppedError(`<${this.host.localName}> is stopped: its engine failed (see its physics-error); add it to the page again to restart it`);
     return engine;
   }
 

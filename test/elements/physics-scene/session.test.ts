@@ -195,8 +195,8 @@ describe('EngineSession', () => {
     expect(r.log).to.deep.equal(['settled']);
     expect(r.session.engine).to.equal(null);
     // Out of the page, a call has no engine coming: it fails at once (it waited for ever before).
-    const error = await r.session.running().then(() => null, (e: Error) => e);
-    expect([error?.name, error?.message]).to.deep.equal(['EngineStoppedError', '<physics-scene> is not in the page: add it, then call']);
+    const error = await r.session.running('step()').then(() => null, (e: Error) => e);
+    expect([error?.name, error?.message]).to.deep.equal(['EngineStoppedError', '<x-fake-host> is not in the page: add it, then call step()']);
   });
 
   it('routes what commands answer: a refusal to refused(), an engine error to failed(), a dead or stopped engine nowhere', async () => {
