@@ -26,6 +26,23 @@ function slope(world: World, theta: number, friction: number): { t: Vec2; n: Vec
   return { t, n };
 }
 
+/**
+ * Newton's cradle: five balls r 0.5 (e = 1, no friction) on distance joints 4 long from pivots `gap` apart at y = 1,
+ * the first released from `release` rad; `drop` is its height above the others.
+ */
+function cradle(release: number, gap: number): { world: World; balls: Handle[]; drop: number } {
+  const world = new World({ gravity: { x: 0, y: g }, sleeping: false });
+  const balls: Handle[] = [];
+  for (let k = 0; k < 5; k++) {
+    const pivotX = 6 + k * (1 + gap);
+    const [x, y] = k === 0 ? [pivotX - 4 * Math.sin(release), 1 + 4 * Math.cos(release)] : [pivotX, 5];
+    const ball = world.addRigidBody({ radius: 0.5, x, y, restitution: 1, friction: 0 });
+    world.addJoint({ type: 'distance', a: ball, anchorA: { x, y }, anchorB: { x: pivotX, y: 1 } });
+    balls.push(ball);
+  }
+  return { world, balls, drop: 4 - 4 * Math.cos(release) };
+}
+
 describe('rigid bodies: motion on a slope', () => {
   const theta = (20 * Math.PI) / 180;
 
@@ -384,17 +401,8 @@ describe('rigid bodies: impacts', () => {
     // 57.5°, the hit falling anywhere in a step.
     const middles: number[] = [];
     for (let i = 0; i < 12; i++) {
-      const world = new World({ gravity: { x: 0, y: g }, sleeping: false });
       const release = ((30 + 2.5 * i) * Math.PI) / 180;
-      const balls: Handle[] = [];
-      for (let k = 0; k < 5; k++) {
-        const pivotX = 6 + k * 1.001;
-        const [x, y] = k === 0 ? [pivotX - 4 * Math.sin(release), 1 + 4 * Math.cos(release)] : [pivotX, 5];
-        const ball = world.addRigidBody({ radius: 0.5, x, y, restitution: 1, friction: 0 });
-        world.addJoint({ type: 'distance', a: ball, anchorA: { x, y }, anchorB: { x: pivotX, y: 1 } });
-        balls.push(ball);
-      }
-      const drop = 4 - 4 * Math.cos(release);
+      const { world, balls, drop } = cradle(release, 0.001);
       const before = Math.sqrt(2 * g * drop); // the first ball's speed at the bottom: 4.79 from 45°
       let hit = -1;
       let first = 0;
@@ -428,17 +436,7 @@ describe('rigid bodies: impacts', () => {
     // 0.001 apart, a ball struck at 4.8 units/s is pushed into the next within the substep of the hit (it moves 0.008
     // a substep), and the position pass shares the hit among the three; 0.01 apart, each hit is its own.
     for (const degrees of [35, 45, 55]) {
-      const world = new World({ gravity: { x: 0, y: g }, sleeping: false });
-      const release = (degrees * Math.PI) / 180;
-      const balls: Handle[] = [];
-      for (let k = 0; k < 5; k++) {
-        const pivotX = 6 + k * 1.01;
-        const [x, y] = k === 0 ? [pivotX - 4 * Math.sin(release), 1 + 4 * Math.cos(release)] : [pivotX, 5];
-        const ball = world.addRigidBody({ radius: 0.5, x, y, restitution: 1, friction: 0 });
-        world.addJoint({ type: 'distance', a: ball, anchorA: { x, y }, anchorB: { x: pivotX, y: 1 } });
-        balls.push(ball);
-      }
-      const drop = 4 - 4 * Math.cos(release);
+      const { world, balls, drop } = cradle((degrees * Math.PI) / 180, 0.01);
       let rise = 0;
       let others = 0;
       // Until the last ball's swing tops out (before it swings back for the next hit).
