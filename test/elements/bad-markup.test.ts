@@ -4,6 +4,17 @@ import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
 import { mount, unmount, waitFor } from './helpers.js';
 
+/**
+ * From here on, console.warn's lines (kept, not printed) and the physics-error details; `before` listens for the errors
+ * on the scene mount() makes. The describe's afterEach puts console.warn back.
+ */
+function reports(): { warnings: string[]; errors: PhysicsErrorDetail[]; before: (scene: PhysicsSceneElement) => void } {
+  const warnings: string[] = [];
+  const errors: PhysicsErrorDetail[] = [];
+  console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+  return { warnings, errors, before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) };
+}
+
 describe('<physics-scene> bad markup', () => {
   let scene: PhysicsSceneElement | null = null;
   const warn = console.warn;
@@ -14,16 +25,14 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('reports width="abc", a two-point polygon, a joint naming a missing id and a negative radius; the rest runs', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     scene = await mount(
       'width="abc" height="10" gravity="0 10"',
       `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>
        <physics-polygon id="tri" x="3" y="3" points="0,0 1,1"></physics-polygon>
        <physics-joint a="box" b="missing"></physics-joint>
        <physics-circle id="ball" x="7" y="3" radius="-1"></physics-circle>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     const seen = errors.map((e) => [e.element.localName, e.attribute, e.value]);
     expect(seen).to.have.deep.members([
@@ -50,8 +59,7 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a static rope and a static cloth hold still; density on a rope, cloth or ragdoll is reported (they take mass), and they run', async () => {
-    const errors: PhysicsErrorDetail[] = [];
-    console.warn = () => {};
+    const { errors, before } = reports();
     scene = await mount(
       'width="10" height="10" paused',
       `<physics-rope id="rope" x1="1" y1="2" x2="5" y2="2" static pin="none"></physics-rope>
@@ -59,7 +67,7 @@ describe('<physics-scene> bad markup', () => {
        <physics-rope id="heavy" x1="1" y1="5" x2="4" y2="5" density="3"></physics-rope>
        <physics-cloth id="sheet" x="5" y="5" columns="3" rows="3" density="2"></physics-cloth>
        <physics-ragdoll id="doll" x="8" y="4" density="1e-20"></physics-ragdoll>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     expect(errors.map((e) => [e.element.id, e.attribute, e.value])).to.have.deep.members([
       ['heavy', 'density', '3'],
@@ -69,26 +77,24 @@ describe('<physics-scene> bad markup', () => {
     expect(errors[0].message).to.include('set mass');
     const [rope, cloth, heavy] = ['#rope', '#cloth', '#heavy'].map((q) => scene!.querySelector<HTMLElement & { y: number }>(q)!);
     await scene.step(1);
-    const before = [rope.y, cloth.y, heavy.y];
-    expect(before[0]).to.be.closeTo(2, 1e-9);
+    const startY = [rope.y, cloth.y, heavy.y];
+    expect(startY[0]).to.be.closeTo(2, 1e-9);
     await scene.step(60);
     // A second under gravity: the static ones where they were, the reported rope (pinned at its start) swung down.
-    expect(rope.y).to.equal(before[0]);
-    expect(cloth.y).to.equal(before[1]);
-    expect(heavy.y).to.be.above(before[2] + 0.3);
+    expect(rope.y).to.equal(startY[0]);
+    expect(cloth.y).to.equal(startY[1]);
+    expect(heavy.y).to.be.above(startY[2] + 0.3);
     expect((await scene.diagnostics()).bodyCount).to.equal(5);
   });
 
   it('reports misspelt attribute names with the one meant; the page\'s own attributes and globals are left alone', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     scene = await mount(
       'width="10" height="10" gravty="0 1" data-post="7" aria-label="Two crates" class="wide" title="t" my-widget="1"',
       `<physics-circle id="ball" x="5" y="2" radus="1.5"></physics-circle>
        <physics-box id="crate" x="3" y="2" width="1" heigth="2" frction="0.2" data-kind="crate" sound="thud"></physics-box>
        <physics-joint a="ball" b="crate" typ="weld"></physics-joint>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     expect(errors.map((e) => [e.element.localName, e.attribute, e.value, e.message])).to.have.deep.members([
       ['physics-scene', 'gravty', '0 1', 'unknown attribute, ignored: did you mean gravity?'],
@@ -105,12 +111,8 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a misspelt attribute set from script on a running scene or body is reported at once, not at the next real change', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
-    scene = await mount('width="10" height="10"', `<physics-box id="crate" x="3" y="2" width="1" height="1"></physics-box>`, {
-      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
-    });
+    const { warnings, errors, before } = reports();
+    scene = await mount('width="10" height="10"', `<physics-box id="crate" x="3" y="2" width="1" height="1"></physics-box>`, { before });
     expect(errors).to.deep.equal([]);
     scene.querySelector('#crate')!.setAttribute('wdth', '3');
     scene.setAttribute('gravty', '0 1');
@@ -125,14 +127,13 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a whole-number attribute names its whole range: columns="1.5" is not told "must be >= 2"', async () => {
-    console.warn = () => {};
-    const errors: PhysicsErrorDetail[] = [];
+    const { errors, before } = reports();
     scene = await mount(
       'width="10" height="10"',
       `<physics-cloth id="sheet" x="2" y="1" columns="1.5" rows="5000" spacing="0.3"></physics-cloth>
        <physics-rope id="line" x1="6" y1="1" x2="8" y2="1" segments="2.5"></physics-rope>
        <physics-pin body="line" x="8" y="1" particle="-1"></physics-pin>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     const seen = errors.map((e) => [e.element.localName, e.attribute, e.value, e.message]);
     expect(seen, JSON.stringify(seen)).to.have.deep.members([
@@ -160,9 +161,7 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('reports coordinates beyond ±1e9 (x="1e12" on a box, a pin and a spring\'s length, a polygon point); the rest runs', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     scene = await mount(
       'width="10" height="10" gravity="0 10"',
       `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>
@@ -170,7 +169,7 @@ describe('<physics-scene> bad markup', () => {
        <physics-pin body="box" x="-1e12" y="2"></physics-pin>
        <physics-spring a="box" b="far" length="1e12"></physics-spring>
        <physics-polygon x="3" y="3" points="0,0 1e12,0 0,1"></physics-polygon>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     const seen = errors.map((e) => [e.element.localName, e.attribute, e.value]);
     expect(seen).to.have.deep.members([
@@ -194,9 +193,7 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a pin\'s particle past the body\'s count, or one pinned already, is reported by the pin\'s attribute and the body\'s index', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     // An 11-particle rope (particles 0…10), unpinned; a 4-particle box of particles.
     scene = await mount(
       'width="10" height="10" paused',
@@ -209,7 +206,7 @@ describe('<physics-scene> bad markup', () => {
        <physics-pin id="near" body="r" x="6.1" y="2"></physics-pin>
        <physics-box id="plate" x="8" y="8" width="1" height="1"></physics-box>
        <physics-pin id="centre" body="plate" particle="2" x="8" y="8"></physics-pin>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     await waitFor(() => errors.length >= 4, 'the four refused pins reported');
     const seen = errors.map((e) => [e.element.id, e.attribute, e.value]);
@@ -236,9 +233,7 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('errors name the attribute that is at fault and the value that was refused: a script\'s value, a size too small for a mass, a share of mass per particle', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     scene = await mount(
       'width="10" height="10" paused',
       `<physics-box id="painted" x="2" y="2" width="1" height="1" fill="#3d7dd8"></physics-box>
@@ -248,7 +243,7 @@ describe('<physics-scene> bad markup', () => {
        <physics-circle id="speck" x="2" y="5" radius="1e-7" density="1e-2"></physics-circle>
        <physics-softbody id="small" x="5" y="5" radius="1e-6" segments="4096"></physics-softbody>
        <physics-softbody id="light" x="8" y="6" radius="1" segments="4096" mass="1e-10"></physics-softbody>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     await waitFor(() => errors.length >= 5, 'the five bodies reported');
     const painted = scene.querySelector<PhysicsBoxElement>('#painted')!;
@@ -277,16 +272,14 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a body id used twice is reported on the later element (links name the first), and leaves the box once renamed', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
+    const { warnings, errors, before } = reports();
     scene = await mount(
       'width="10" height="10" paused',
       `<physics-box id="a" x="2" y="2" width="1" height="1"></physics-box>
        <physics-box id="a" class="second" x="5" y="2" width="1" height="1"></physics-box>
        <physics-circle id="c" x="8" y="2" radius="0.5"></physics-circle>
        <physics-spring a="a" b="c"></physics-spring>`,
-      { before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)) },
+      { before },
     );
     await waitFor(() => errors.length > 0, 'the shared id reported');
     const second = scene.querySelector('.second')!;
@@ -307,11 +300,8 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('a body the engine refuses is reported, and leaves the error box once its markup is fixed', async () => {
-    console.warn = () => {};
-    const errors: PhysicsErrorDetail[] = [];
-    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1" density="1e-20"></physics-box>`, {
-      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
-    });
+    const { errors, before } = reports();
+    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1" density="1e-20"></physics-box>`, { before });
     const box = scene.shadowRoot!.querySelector<HTMLElement>('[part="error"]')!;
     await waitFor(() => errors.some((e) => e.message.includes('1e-12')), 'the refused body reported');
     expect(errors[0].element.id).to.equal('box');
@@ -323,11 +313,8 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('setVelocity and applyImpulse refuse bad numbers where they are called; an impulse past the speed limit is a physics-error naming the body, the engine keeps running', async () => {
-    console.warn = () => {};
-    const errors: PhysicsErrorDetail[] = [];
-    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>`, {
-      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
-    });
+    const { errors, before } = reports();
+    scene = await mount('width="10" height="10" paused', `<physics-box id="box" x="5" y="2" width="1" height="1"></physics-box>`, { before });
     const box = scene.querySelector<PhysicsBoxElement>('#box')!;
     expect(() => box.setVelocity(NaN, 0)).to.throw(RangeError, 'vx');
     expect(() => box.setVelocity('5' as never, 0)).to.throw(TypeError, 'vx');
@@ -337,19 +324,15 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => errors.some((e) => e.message.includes('ix / mass')), 'the refused impulse reported');
     // On the body it was asked of (it was the scene's, with nothing to tell which body).
     expect(errors.find((e) => e.message.includes('ix / mass'))!.element).to.equal(box);
-    const before = scene.stepCount;
-    expect(await scene.step(10)).to.equal(before + 10);
+    const steps = scene.stepCount;
+    expect(await scene.step(10)).to.equal(steps + 10);
     expect(Number.isFinite(box.x) && Number.isFinite(box.y)).to.equal(true);
     expect(errors.every((e) => e.attribute !== 'worker'), 'the worker did not die').to.equal(true);
   });
 
   it('a bad value set from script is reported as set, not as the attribute text it replaced', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
-    const errors: PhysicsErrorDetail[] = [];
-    scene = await mount('width="12" height="10" paused', `<physics-box id="b1" x="4" y="2" width="1" height="1"></physics-box>`, {
-      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
-    });
+    const { warnings, errors, before } = reports();
+    scene = await mount('width="12" height="10" paused', `<physics-box id="b1" x="4" y="2" width="1" height="1"></physics-box>`, { before });
     const box = scene.querySelector<PhysicsBoxElement>('#b1')!;
     box.x = NaN;
     box.width = -1;
@@ -364,13 +347,9 @@ describe('<physics-scene> bad markup', () => {
   });
 
   it('an attribute value never reaches the DOM as markup', async () => {
-    const warnings: string[] = [];
-    console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));
+    const { warnings, errors, before } = reports();
     const evil = '<img src=x onerror="window.pwned=1">';
-    const errors: PhysicsErrorDetail[] = [];
-    scene = await mount('width="10" height="10"', `<physics-box x="5" y="2" width="1" height="1"></physics-box>`, {
-      before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
-    });
+    scene = await mount('width="10" height="10"', `<physics-box x="5" y="2" width="1" height="1"></physics-box>`, { before });
     const box = scene.querySelector('physics-box')!;
     box.setAttribute('fill', evil);
     box.setAttribute('id', evil);

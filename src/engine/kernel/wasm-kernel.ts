@@ -18,7 +18,7 @@
 import type { ParticleStore } from '../particles.js';
 import type { DistanceConstraints } from '../constraints/distance.js';
 import type { StepContext } from '../pipeline/context.js';
-import { rim, type RigidContacts } from '../rigid/contacts.js';
+import { arcsExact, type RigidContacts } from '../rigid/contacts.js';
 import { colourRows } from './colour.js';
 import { findRuns, kindOf, RunKind, type RunLayout } from './runs.js';
 
@@ -635,7 +635,7 @@ export class WasmKernel {
  * (contacts.ts FAST_TURN: the lanes' series falls short there).
  */
 function lanesFit(c: RigidContacts): 0 | 1 | 2 {
-  if (c.shockCount > 0 || c.edgePoints > 0 || rim[3] !== 0) return 0;
+  if (c.shockCount > 0 || c.edgePoints > 0 || arcsExact()) return 0;
   const { pair, b2, restitution, a, b, radA, radB } = c;
   let fit: 0 | 1 | 2 = 1;
   let round = false;

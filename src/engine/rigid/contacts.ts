@@ -241,6 +241,11 @@ export const rim = new Float64Array(4);
  */
 export const FAST_TURN = 0.8;
 
+/** Whether this step measures its rims' arcs exactly (set by RigidAnchorCache.restore: see FAST_TURN). */
+export function arcsExact(): boolean {
+  return rim[3] !== 0;
+}
+
 /** Whether a point with friction has a round side turning faster than FAST_TURN this step (of dt seconds). */
 function fastRoundSide(c: RigidContacts, omega: Float64Array, dt: number): boolean {
   const fast = FAST_TURN / dt;
