@@ -3,18 +3,17 @@
 // result object and allocates nothing.
 export {
   ShapeType, ShapeView, polygon, circle, segment, polygonView, circleView, segmentView, counterClockwise, assertConvex,
-  shapeArea, shapeCentroid, shapeVertices, shapeSize, vertexX, vertexY, supportIndex, supportPoint,
 } from './shape.js';
 export type { Shape, PointLike } from './shape.js';
 export { Penetration, Manifold, Simplex, ClosestPoints, RayHit } from './results.js';
-export { sat } from './sat.js';
-export { gjkIntersect, gjkDistance } from './gjk.js';
-export { epa, gjkEpa } from './epa.js';
-export { polygonManifold } from './manifold.js';
-export { AABB, aabbOf, aabbOverlap, aabbContains, aabbArea } from './aabb.js';
-export { BoundingCircle, boundingCircleOf, boundingCircle, boundingCircleOverlap } from './bounding-circle.js';
-export { OBB, obbOf, obbFromPoints, obbOverlap, obbContains } from './obb.js';
-export { KDOP8, kdopOf, kdopOverlap, kdopContains } from './kdop.js';
+// The functions that take shapes check them (their layout, in constant time) and their result objects on every call.
+export {
+  sat, gjkIntersect, gjkDistance, epa, gjkEpa, polygonManifold, aabbOf, boundingCircleOf, obbOf, kdopOf, pointInShape,
+  raycast, shapeArea, shapeCentroid, shapeVertices, shapeSize, vertexX, vertexY, supportIndex, supportPoint,
+} from './checked.js';
+export { AABB, aabbOverlap, aabbContains, aabbArea } from './aabb.js';
+export { BoundingCircle, boundingCircle, boundingCircleOverlap } from './bounding-circle.js';
+export { OBB, obbFromPoints, obbOverlap, obbContains } from './obb.js';
+export { KDOP8, kdopOverlap, kdopContains } from './kdop.js';
 export { quickhull, quickhullIndices } from './hull.js';
-export { pointInShape, raycast } from './query.js';
 export { decompose, decomposeToShapes, triangulate } from './decompose.js';

@@ -231,12 +231,18 @@ export function shoelace(xs: Float64Array, ys: Float64Array, index: Int32Array, 
   return s;
 }
 
-/** Throws unless `shape` is valid: a convex counter-clockwise polygon, a circle of finite radius, or a proper segment. */
-export function assertConvex(shape: Shape, name = 'shape'): void {
-  if (shape === null || typeof shape !== 'object') throw new TypeError(`${name} must be a shape, got ${describeValue(shape)}`);
-  const { xs, ys, index, offset, count, type } = shape;
+/**
+ * Throws a TypeError or RangeError naming `name` unless `shape` is laid out as a shape: its type, arrays, count for the
+ * type, offset within its index and radius (0 or more). Constant time: it reads no vertex (assertConvex does), so the
+ * functions the module exports check their shapes with it on every call.
+ */
+export function checkShapeLayout(shape: unknown, name: string): asserts shape is Shape {
+  if (shape === null || typeof shape !== 'object') {
+    throw new TypeError(`${name} must be a shape (polygon(), circle(), segment() or a view), got ${describeValue(shape)}`);
+  }
+  const { xs, ys, index, offset, count, type, radius } = shape as Shape;
   if (!(xs instanceof Float64Array) || !(ys instanceof Float64Array) || !(index instanceof Int32Array)) {
-    throw new TypeError(`${name}.xs, .ys must be Float64Arrays and ${name}.index an Int32Array`);
+    throw new TypeError(`${name} must be a shape (polygon(), circle(), segment() or a view): ${name}.xs, .ys must be Float64Arrays and ${name}.index an Int32Array, got ${describeValue(shape)}`);
   }
   const expected = type === ShapeType.Circle ? 1 : type === ShapeType.Segment ? 2 : type === ShapeType.Polygon ? -1 : -2;
   if (expected === -2) throw new RangeError(`${name}.type must be ShapeType.Polygon, Circle or Segment, got ${describeValue(type)}`);
@@ -246,6 +252,13 @@ export function assertConvex(shape: Shape, name = 'shape'): void {
   if (!Number.isInteger(offset) || offset < 0 || offset + count > index.length) {
     throw new RangeError(`${name}.offset ${describeValue(offset)} with count ${count} runs past ${name}.index (length ${index.length})`);
   }
+  if (!(radius >= 0 && radius <= MAX_COORDINATE)) checkRadius(`${name}.radius`, radius);
+}
+
+/** Throws unless `shape` is valid: a convex counter-clockwise polygon, a circle of finite radius, or a proper segment. */
+export function assertConvex(shape: Shape, name = 'shape'): void {
+  checkShapeLayout(shape, name);
+  const { xs, ys, index, offset, count, type } = shape;
   for (let k = 0; k < count; k++) {
     const i = index[offset + k];
     if (i < 0 || i >= xs.length || i >= ys.length) throw new RangeError(`${name}.index[${offset + k}] = ${i} is outside the coordinate arrays`);

@@ -6,6 +6,8 @@ import {
   Penetration, ShapeType, assertConvex, circle, circleView, counterClockwise, polygon, polygonView, quickhull, sat,
   segment, segmentView, shapeArea, shapeCentroid, shapeVertices, supportIndex, supportPoint, vertexX, vertexY,
 } from '../../../src/engine/collision/index.js';
+import * as C from '../../../src/engine/collision/index.js';
+import type { Shape } from '../../../src/engine/collision/index.js';
 import { throwsNaming } from './helpers.js';
 
 describe('shapes', () => {
@@ -70,6 +72,59 @@ describe('shapes', () => {
     throwsNaming(() => assertConvex({ ...circle(0, 0, 1), type: 7 as never }), RangeError, 'shape.type', '7');
     ys[1] = NaN;
     throwsNaming(() => assertConvex(polygonView(xs, ys, index, 0, 4)), RangeError, 'vertex 1 y', 'NaN');
+  });
+
+  it('every exported function that takes a shape or a result object refuses one that is not, naming the argument', () => {
+    const c = circle(0, 0, 1);
+    const p = polygon([0, 0, 1, 0, 1, 1]);
+    // Before the checks: pointInShape({}) answered true, raycast({}) hit, aabbOf(5) was a box of NaN, and the
+    // narrow phase threw "Cannot read properties of undefined" from inside.
+    const takesShapes: Record<string, (a: unknown, b: unknown) => unknown> = {
+      sat: (a, b) => C.sat(a as Shape, b as Shape, new Penetration()),
+      gjkIntersect: (a, b) => C.gjkIntersect(a as Shape, b as Shape),
+      gjkDistance: (a, b) => C.gjkDistance(a as Shape, b as Shape, new C.ClosestPoints()),
+      gjkEpa: (a, b) => C.gjkEpa(a as Shape, b as Shape, new Penetration()),
+      epa: (a, b) => C.epa(a as Shape, b as Shape, new C.Simplex(), new Penetration()),
+      polygonManifold: (a, b) => C.polygonManifold(a as Shape, b as Shape, new C.Manifold()),
+    };
+    const takesOne: Record<string, (s: unknown) => unknown> = {
+      aabbOf: (s) => C.aabbOf(s as Shape), boundingCircleOf: (s) => C.boundingCircleOf(s as Shape), obbOf: (s) => C.obbOf(s as Shape),
+      kdopOf: (s) => C.kdopOf(s as Shape), pointInShape: (s) => C.pointInShape(s as Shape, 0, 0),
+      raycast: (s) => C.raycast(s as Shape, 0, 0, 1, 0, 10, new C.RayHit()), shapeArea: (s) => shapeArea(s as Shape),
+      shapeCentroid: (s) => shapeCentroid(s as Shape), shapeVertices: (s) => shapeVertices(s as Shape), shapeSize: (s) => C.shapeSize(s as Shape),
+      supportIndex: (s) => supportIndex(s as Shape, 1, 0), supportPoint: (s) => supportPoint(s as Shape, 1, 0, { x: 0, y: 0 }),
+      vertexX: (s) => vertexX(s as Shape, 0), vertexY: (s) => vertexY(s as Shape, 0),
+    };
+    const notShapes: [unknown, typeof TypeError | typeof RangeError, string][] = [
+      [null, TypeError, 'null'], [5, TypeError, '5'], [{}, TypeError, 'Float64Array'], [{ x: 0, y: 0, radius: 1 }, TypeError, 'Float64Array'],
+      [{ ...c, type: 9 }, RangeError, '9'], [{ ...p, count: 2 }, RangeError, 'count'], [{ ...p, offset: 1 }, RangeError, 'runs past'],
+      [{ ...c, radius: NaN }, RangeError, 'NaN'], [{ ...c, radius: -1 }, RangeError, '-1'],
+    ];
+    for (const [bad, type, word] of notShapes) {
+      for (const f of Object.values(takesShapes)) {
+        throwsNaming(() => f(bad, c), type, 'a', word);
+        throwsNaming(() => f(p, bad), type, 'b', word);
+      }
+      for (const [name, f] of Object.entries(takesOne)) {
+        expect(() => f(bad), name).to.throw(type, 'shape');
+        throwsNaming(() => f(bad), type, word);
+      }
+    }
+    // Result objects: an instance of their class (a plain object lacks a Manifold's arrays, a number takes no field).
+    throwsNaming(() => C.sat(c, p, {} as Penetration), TypeError, 'out', 'Penetration');
+    throwsNaming(() => C.polygonManifold(c, p, { count: 0 } as unknown as C.Manifold), TypeError, 'out', 'Manifold');
+    throwsNaming(() => C.gjkDistance(c, p, 5 as never), TypeError, 'out', 'ClosestPoints');
+    throwsNaming(() => C.gjkIntersect(c, p, {} as never), TypeError, 'simplexOut', 'Simplex');
+    throwsNaming(() => C.aabbOf(c, {} as never), TypeError, 'out', 'AABB');
+    throwsNaming(() => C.raycast(c, 0, 0, 1, 0, 1, null as never), TypeError, 'out', 'RayHit');
+    throwsNaming(() => supportPoint(c, 1, 0, null as never), TypeError, 'out');
+    throwsNaming(() => C.polygonManifold(c, p, new C.Manifold(), NaN), RangeError, 'margin', 'NaN');
+    throwsNaming(() => vertexX(p, 3), RangeError, 'k', '3');
+    throwsNaming(() => supportIndex(p, Infinity, 0), RangeError, 'dx');
+    // The good calls still answer.
+    expect(C.sat(c, p, new Penetration())).to.equal(true);
+    expect(C.pointInShape(p, 0.9, 0.1)).to.equal(true);
+    expect(C.aabbOf(c).maxX).to.equal(1);
   });
 
   it('support: the farthest vertex; a circle\'s is centre + r·d/|d|', () => {
