@@ -46,7 +46,12 @@ export function rigidBodyPlan(o: RigidBodyOptions): {
 export function rigidOf(ctx: StepContext, body: Handle, what = 'body'): { i: number; slot: number; source: RigidShapeSource } {
   const slot = ctx.bodies.slotOf(body, what);
   const source = ctx.rigidShapes.source(slot);
-  if (!source) throw new RangeError(`${what} ${body} is not a rigid body (it is a ${ctx.bodies.kind[slot]} built of particles)`);
+  if (!source) {
+    // A particle frame's kind is 'rigid' (the thesis' rigid frame), which read "it is a rigid built of particles".
+    const kind = ctx.bodies.kind[slot];
+    const built = kind === 'rigid' ? "a frame of particles and sticks (model: 'particles')" : `a ${kind} built of particles`;
+    throw new RangeError(`${what} ${body} is not a rigid body (it is ${built}: read or move its particles)`);
+  }
   return { i: ctx.bodies.particles[slot][0], slot, source };
 }
 

@@ -1,7 +1,7 @@
 // Bad input to the rigid-body and joint API: a TypeError/RangeError naming the argument and its value, and the world
 // untouched (no half-made body, no NaN in the state).
 import { expect } from 'chai';
-import { createBox, createCloth, World, type Vec2 } from '../../../src/engine/index.js';
+import { buildBody, createBox, createCloth, World, type Vec2 } from '../../../src/engine/index.js';
 import { throwsNaming } from '../collision/helpers.js';
 
 const square: Vec2[] = [
@@ -45,6 +45,9 @@ describe('rigid bodies: bad input', () => {
     const box = world.addRigidBody({ x: 0, y: 0, points: square });
     const cloth = createCloth(world, { origin: { x: 5, y: 0 }, columns: 3, rows: 3, spacing: 0.5 });
     throwsNaming(() => world.bodyPose(cloth.body), RangeError, `${cloth.body}`, 'not a rigid body', 'cloth');
+    // A particle frame's kind is 'rigid' internally: the message says what it is (it read "it is a rigid built of particles").
+    const frame = buildBody(world, { type: 'box', x: 0, y: -5, width: 1, height: 1, model: 'particles' });
+    throwsNaming(() => world.setBodyAngularVelocity(frame.body, 2), RangeError, `${frame.body}`, 'not a rigid body', "frame of particles and sticks (model: 'particles')");
     throwsNaming(() => world.setBodyVelocity(box, Number.NaN, 0), RangeError, 'vx', 'NaN');
     throwsNaming(() => world.setBodyAngularVelocity(box, Infinity), RangeError, 'angularVelocity');
     throwsNaming(() => world.setBodyPose(box, 0, 0, Number.NaN), RangeError, 'angle');
