@@ -50,6 +50,7 @@ export const FIELDS = {
       freeMovableParticles: 'rebuilt by restore()',
       pinMoved: 'a request for the next step, cleared by restore() (the pins are where the snapshot had them)',
       particleRows: 'rebuilt by restore()',
+      freeSpin: "which bodies are closed is rebuilt by restore(); the rest is the step's own (its angular momenta)",
       measureTimings: "the caller's diagnostics switch, not simulation state",
       timings: "the last step's diagnostics",
       rowsRepaired: 'diagnostics: a count kept since the world was made (World.diagnostics())',

@@ -19,12 +19,12 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
   chain: '3a2adb5b0e7fd6ab',
   cloth: '4a17b850c2e2c7fc',
   thrown: 'fed4f89683c07317',
-  ragdolls: '9907b724c4b27ca7',
-  soft: 'e17efac79d7fc870',
+  ragdolls: '6f0c18efbe6441af',
+  soft: '4a0c0614a54993d5',
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */
-const BUSY = '73ff099980b6650f';
+const BUSY = '1642340415d8ecf1';
 
 const STEPS = 300;
 

@@ -9,6 +9,7 @@ import { PairList, type BroadPhase } from './broadphase.js';
 import { NarrowPhase } from './narrowphase.js';
 import { AnchorCache, Contacts } from './contacts.js';
 import { Sleep } from './sleep.js';
+import { FreeSpin } from './spin.js';
 import { KeyTable } from './key-table.js';
 import { CollisionEvents, EventTracker } from './events.js';
 import { shouldCollide } from './collide.js';
@@ -77,6 +78,8 @@ export class StepContext {
   kinematicCount = 0;
 
   readonly sleep = new Sleep();
+  /** Bodies of particles that keep their angular momentum through a step nothing outside acts on them (spin.ts). */
+  readonly freeSpin = new FreeSpin();
   /** Begin/end collision events of the last step. */
   readonly events = new CollisionEvents();
   readonly eventTracker = new EventTracker();

@@ -4,7 +4,7 @@
 //   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → aim grabs → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
 //     velocities (linear, angular) → contact velocities (particle, walls, rigid) → particle frames' bounces
-//   → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
+//   → free bodies' spin (spin.ts) → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
@@ -29,6 +29,7 @@ import { solveContacts, solveContactVelocities } from './contacts.js';
 import { solveFrameBounces } from './frame-bounces.js';
 import { detectCollisions } from './collide.js';
 import { keepRowsFinite } from './guard.js';
+import { keepFreeSpin, recordFreeSpin } from './spin.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount, verletReferenceHalf } from '../settings.js';
@@ -67,6 +68,7 @@ export function step(ctx: StepContext, dt: number): void {
   ctx.wallHits.beginStep();
   if (ctx.eventTracker.active) ctx.eventTracker.recordStartVelocities(ctx.particles);
   detectCollisions(ctx, dt);
+  recordFreeSpin(ctx);
   kernelAtWork(ctx)?.beginStep(ctx);
   // The rigid lanes are taken (or not) in this step's first substep (a step that threw may have left them on).
   if (ctx.kernel) ctx.kernel.rigidLanes = false;
@@ -83,6 +85,8 @@ export function step(ctx: StepContext, dt: number): void {
   ctx.anchors.store(ctx.contacts);
   // The rotations follow the last substep's corrections before anything outside the solver reads them.
   if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount);
+  // Bodies of particles that nothing outside touched turn on as they began the step (spin.ts: v from the moves lost it).
+  keepFreeSpin(ctx, n, 1 / (1 + h * ctx.settings.damping));
   keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);

@@ -6,6 +6,7 @@ import { grown } from '../table.js';
 import { ParticleFlag } from '../particles.js';
 import { ColliderKind } from './colliders.js';
 import { BodyType } from '../rigid/shapes.js';
+import { rebuildFreeSpin } from './spin.js';
 
 /**
  * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers floating,
@@ -80,6 +81,7 @@ export function rebuildTopology(ctx: StepContext): void {
   for (let slot = 0; slot < high; slot++) if (apart[slot] !== (before[slot] ?? 0)) ctx.rigidShapes.staticsMoved = true;
   sleep.setLinks(links);
   listRigidRows(ctx);
+  rebuildFreeSpin(ctx);
   let free = 0;
   let movable = 0;
   for (let i = 0; i < p.count; i++) {
