@@ -48,7 +48,18 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
       // Each ring particle collides as a circle half a chord wide, so the ring has no gaps.
       particles.push(world.addParticle({ x: c.x + radius * Math.cos(t), y: c.y + radius * Math.sin(t), mass: each, radius: radius * Math.sin(Math.PI / segments) }));
     }
-    for (let k = 0; k < segments; k++) constraints.push(world.addDistance(particles[k], particles[(k + 1) % segments], { compliance }));
+    // The ring's links are solved every other one, then the rest, then (odd rings) the last, so that each link's
+    // neighbours are both solved before it or both after it; they are listed in ring order all the same. Swept around
+    // the ring in order, each link pulled along a direction the one before had just turned, and a ring under pressure
+    // (its links taut) gained spin from nothing, the same way every substep: at pressure 1.2 it rolled 47 units along a
+    // floor in 10 s under the JS solver (the kernel colours the links), and the order reversed rolled it the other way.
+    const ring: number[] = [];
+    const link = (k: number) => (ring[k] = world.addDistance(particles[k], particles[(k + 1) % segments], { compliance }));
+    const paired = segments - (segments % 2);
+    for (let k = 0; k < paired; k += 2) link(k);
+    for (let k = 1; k < paired; k += 2) link(k);
+    if (paired < segments) link(segments - 1);
+    constraints.push(...ring);
     if (model === 'pressure') {
       constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance }));
     } else {
