@@ -37,6 +37,22 @@ describe('<physics-scene> collision events', () => {
     expect(off.eventsSent).to.be.at.least(1);
   });
 
+  it('a removeEventListener for a listener never added leaves the one added hearing; removing it with its capture flag wrong too', async () => {
+    // The scene counted add and remove calls: a stray remove stopped the engine's events while a listener was still there.
+    scene = await mount('width="10" height="10" gravity="0 20" paused', `
+      <physics-box x="5" y="9.5" width="10" height="1" static></physics-box>
+      <physics-box x="5" y="6" width="1" height="1"></physics-box>`);
+    let heard = 0;
+    const listener = () => heard++;
+    scene.addEventListener('physics-collision', listener);
+    scene.removeEventListener('physics-collision', () => {});
+    scene.removeEventListener('physics-collision', listener, true);
+    expect((await scene.diagnostics()).events).to.equal(true);
+    await stepUntil(scene, () => heard > 0, 'a collision heard');
+    scene.removeEventListener('physics-collision', listener);
+    expect((await scene.diagnostics()).events).to.equal(false);
+  });
+
   for (const model of ['rigid', 'particles'])
   it(`a body (${model}) landing on the view's floor fires physics-collision with b null, the normal from it into the floor; thrown off, physics-collision-end`, async () => {
     scene = await mount('width="10" height="10" gravity="0 20" paused', `<physics-circle id="ball" x="5" y="6" radius="0.5" model="${model}"></physics-circle>`);

@@ -18,6 +18,14 @@ export interface CollisionOptions {
 
 /** @internal */
 export class CollisionEventsController implements ReactiveController {
+  /**
+   * The scene's own listeners of the collision events, as the DOM keeps them: one per listener, type and capture flag.
+   * Each is registered through a wrapper of ours, so that a `once` listener's call and a `signal`'s abort, which the
+   * DOM removes without a removeEventListener call, are seen too. Counting the calls instead went wrong both ways:
+   * removing a listener never added stopped the events of one still there, and adding one twice (the DOM keeps one)
+   * or a `once` one kept the engine collecting with nobody listening.
+   */
+  private readonly registered = new Map<EventListenerOrEventListenerObject, Map<string, EventListener>>();
   private listeners = 0;
   /** Whether the engine was last told to collect events. */
   private on = false;
@@ -45,11 +53,48 @@ export class CollisionEventsController implements ReactiveController {
     return this.options.always() || this.listeners > 0;
   }
 
-  /** A listener of `type` was added (+1) or removed (−1) on the scene. */
-  listened(type: string, delta: 1 | -1): void {
-    if (!COLLISION_EVENTS.has(type) || (delta < 0 && this.listeners === 0)) return;
-    this.listeners += delta;
+  /**
+   * addEventListener on the scene: a collision event's listener is registered here, through `add` (the element's own
+   * addEventListener), and true returned; any other type is left to the caller (false).
+   */
+  addListener(type: string, listener: EventListenerOrEventListenerObject, options: boolean | AddEventListenerOptions | undefined, add: (wrapper: EventListener, options: boolean | AddEventListenerOptions | undefined) => void): boolean {
+    if (!COLLISION_EVENTS.has(type)) return false;
+    const key = `${type} ${capture(options)}`;
+    const signal = typeof options === 'object' ? options.signal : undefined;
+    let byKey = this.registered.get(listener);
+    // The DOM adds nothing for a listener it holds already, or with a signal aborted before.
+    if (byKey?.has(key) || signal?.aborted) return true;
+    const wrapper = function (this: unknown, event: Event): void {
+      if (typeof options === 'object' && options.once) forget();
+      if (typeof listener === 'function') listener.call(this, event);
+      else listener.handleEvent(event);
+    };
+    const forget = (): void => {
+      if (this.registered.get(listener)?.get(key) !== wrapper) return;
+      this.registered.get(listener)!.delete(key);
+      this.listeners--;
+      this.refresh();
+    };
+    if (!byKey) this.registered.set(listener, (byKey = new Map()));
+    byKey.set(key, wrapper);
+    this.listeners++;
+    signal?.addEventListener('abort', forget, { once: true });
+    add(wrapper, options);
     this.refresh();
+    return true;
+  }
+
+  /** removeEventListener on the scene: as addListener, through `remove`. */
+  removeListener(type: string, listener: EventListenerOrEventListenerObject, options: boolean | EventListenerOptions | undefined, remove: (wrapper: EventListener, options: boolean | EventListenerOptions | undefined) => void): boolean {
+    if (!COLLISION_EVENTS.has(type)) return false;
+    const key = `${type} ${capture(options)}`;
+    const wrapper = this.registered.get(listener)?.get(key);
+    if (!wrapper) return true;
+    this.registered.get(listener)!.delete(key);
+    this.listeners--;
+    remove(wrapper, options);
+    this.refresh();
+    return true;
   }
 
   /** Tells the engine when whether events are wanted changed. */
@@ -98,4 +143,9 @@ export class CollisionEventsController implements ReactiveController {
     for (const [a, b] of pairs) firePhysicsEvent(this.host, 'physics-collision-end', { a, b, normal: { x: 0, y: 0 }, depth: 0, speed: 0 });
   }
 
+}
+
+/** The capture flag of addEventListener's or removeEventListener's options (the DOM tells listeners apart by it). */
+function capture(options: boolean | EventListenerOptions | undefined): boolean {
+  return typeof options === 'boolean' ? options : !!options?.capture;
 }

@@ -59,8 +59,8 @@ let callTimeoutMs = 8000;
  * @summary A declarative 2D physics scene.
  *
  * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
- * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth, speed}`, a and b are the body elements, b null for the view's floor and walls). Sent only while a listener is registered on the scene (or `collision-events` is set).
- * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`).
+ * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth, speed}`, a and b are the body elements, b null for the view's floor and walls). Sent only while a listener is registered on the scene itself (or `collision-events` is set): a listener added before the element is defined (by a script that runs before this library's) is not seen, so set `collision-events` then.
+ * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`, with `normal`, `depth` and `speed` 0).
  * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
  *
  * @csspart stage - The box that holds the canvas.
@@ -576,9 +576,10 @@ export class PhysicsSceneElement extends LitElement {
   override addEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | AddEventListenerOptions): void;
   override addEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | AddEventListenerOptions): void {
     if (!listener) return;
+    // Collision events' listeners are kept by their controller (the engine collects events while there are any).
+    // Controllers add listeners of their own while the element is made, before the collision controller exists.
+    if (this.collisions?.addListener(type, listener, options, (wrapper, o) => super.addEventListener(type, wrapper, o))) return;
     super.addEventListener(type, listener, options);
-    // Controllers add listeners while the element is made, before the collision controller exists.
-    this.collisions?.listened(type, 1);
   }
 
   /** @ignore */
@@ -587,8 +588,8 @@ export class PhysicsSceneElement extends LitElement {
   override removeEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | EventListenerOptions): void;
   override removeEventListener(type: string, listener: EventListenerOrEventListenerObject | null, options?: boolean | EventListenerOptions): void {
     if (!listener) return;
+    if (this.collisions?.removeListener(type, listener, options, (wrapper, o) => super.removeEventListener(type, wrapper, o))) return;
     super.removeEventListener(type, listener, options);
-    this.collisions?.listened(type, -1);
   }
 
   protected override render() {

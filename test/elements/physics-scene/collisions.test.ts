@@ -18,7 +18,12 @@ function rig() {
     elementOf: (key) => (key === 1 ? a : key === 2 ? b : undefined),
     engine: port,
   });
-  return { host, sent, port, collisions, a, b, setAlways: (on: boolean) => (always = on) };
+  // The element's addEventListener and removeEventListener, as the scene passes them on.
+  const add = (type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions) =>
+    collisions.addListener(type, listener, options, (wrapper, o) => host.addEventListener(type, wrapper, o));
+  const remove = (type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions) =>
+    collisions.removeListener(type, listener, options, (wrapper, o) => host.removeEventListener(type, wrapper, o));
+  return { host, sent, port, collisions, a, b, add, remove, setAlways: (on: boolean) => (always = on) };
 }
 
 describe('CollisionEventsController', () => {
@@ -28,18 +33,61 @@ describe('CollisionEventsController', () => {
   it('asks the engine for events while a listener is registered, once per change', () => {
     const r = rig();
     host = r.host;
+    const [f, g] = [() => {}, () => {}];
     expect(r.collisions.wanted).to.equal(false);
-    r.collisions.listened('physics-collision', 1);
-    r.collisions.listened('physics-collision-end', 1);
-    r.collisions.listened('click', 1);
+    r.add('physics-collision', f);
+    r.add('physics-collision-end', g);
+    expect(r.add('click', f), 'other types are left to the element').to.equal(false);
     expect(r.collisions.wanted).to.equal(true);
-    r.collisions.listened('physics-collision', -1);
+    r.remove('physics-collision', f);
     expect(r.sent).to.deep.equal([['setParams', [{ events: true }]]]);
-    r.collisions.listened('physics-collision-end', -1);
-    // More removals than additions (a listener removed twice) do not go below none.
-    r.collisions.listened('physics-collision-end', -1);
+    r.remove('physics-collision-end', g);
+    // A listener removed twice does not go below none.
+    r.remove('physics-collision-end', g);
     expect(r.sent).to.deep.equal([['setParams', [{ events: true }]], ['setParams', [{ events: false }]]]);
     expect(r.collisions.wanted).to.equal(false);
+  });
+
+  it('keeps the listeners as the DOM does: a stray remove, a second add, once, a signal, capture', () => {
+    // Counting add and remove calls went wrong both ways: removing a listener never added stopped the events of one
+    // still there; adding one twice, or a once listener, kept the engine collecting with nobody listening.
+    const r = rig();
+    host = r.host;
+    const [f, g] = [() => {}, () => {}];
+    r.add('physics-collision', f);
+    r.remove('physics-collision', g);
+    expect(r.collisions.wanted, 'removing a listener never added').to.equal(true);
+    r.add('physics-collision', f);
+    r.remove('physics-collision', f);
+    expect(r.collisions.wanted, 'added twice (kept once), removed once').to.equal(false);
+    // Capture flags tell listeners apart: a capture listener stays after the other is removed.
+    r.add('physics-collision', f, true);
+    r.add('physics-collision', f, { capture: false });
+    r.remove('physics-collision', f);
+    expect(r.collisions.wanted).to.equal(true);
+    r.remove('physics-collision', f, { capture: true });
+    expect(r.collisions.wanted).to.equal(false);
+    // once: gone after its first call, which it gets with the event and the scene as `this`.
+    const calls: [unknown, string][] = [];
+    r.add('physics-collision', function (this: unknown, e: Event) { calls.push([this, e.type]); }, { once: true });
+    expect(r.collisions.wanted).to.equal(true);
+    r.host.dispatchEvent(new Event('physics-collision'));
+    r.host.dispatchEvent(new Event('physics-collision'));
+    expect(calls).to.deep.equal([[r.host, 'physics-collision']]);
+    expect(r.collisions.wanted, 'a once listener after its call').to.equal(false);
+    // A listener object's handleEvent is called; a signal's abort removes it; an aborted signal adds nothing.
+    const handled: string[] = [];
+    const controller = new AbortController();
+    r.add('physics-collision-end', { handleEvent: (e: Event) => handled.push(e.type) }, { signal: controller.signal });
+    r.host.dispatchEvent(new Event('physics-collision-end'));
+    expect(handled).to.deep.equal(['physics-collision-end']);
+    controller.abort();
+    expect(r.collisions.wanted, 'after the signal aborted').to.equal(false);
+    r.host.dispatchEvent(new Event('physics-collision-end'));
+    expect(handled.length).to.equal(1);
+    r.add('physics-collision', f, { signal: controller.signal });
+    expect(r.collisions.wanted, 'added with an aborted signal').to.equal(false);
+    expect(r.sent.map(([, [p]]) => (p as { events: boolean }).events)).to.deep.equal([true, false, true, false, true, false, true, false]);
   });
 
   it('collision-events wants them with no listener (seen after an update); nothing is sent with no live engine', () => {
