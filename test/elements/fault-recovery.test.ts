@@ -263,6 +263,30 @@ describe('fault recovery', () => {
     expect(s.running).to.equal(true);
   });
 
+  it('stopped after its engine failed, put in the page again starts afresh, also when moved within one task', async () => {
+    // A move in one task keeps a running engine; a stopped scene's move used to start a new engine but leave the scene
+    // stopped: physics-ready again, step() working, yet running false, no stepping of its own and the error box up.
+    const s = await mountScene(`${ATTRS} max-restarts="0"`);
+    const parent = s.parentElement!;
+    for (const move of ['in one task', 'a task later']) {
+      const failed = errors.length + 1;
+      await s._debugFault('throw');
+      await waitFor(() => errors.length === failed, 'the physics-error');
+      expect(errors[failed - 1].message, move).to.match(/the scene is stopped/);
+      expect(s.running, move).to.equal(false);
+      s.remove();
+      if (move === 'a task later') await sleep(0);
+      parent.append(s);
+      await s.ready;
+      expect(s.mode, move).to.equal('worker');
+      expect(s.running, move).to.equal(true);
+      expect(errorBox(s).hidden, move).to.equal(true);
+      const stepped = s.stepCount;
+      await waitFor(() => s.stepCount > stepped + 5, `stepping of its own after a move ${move}`);
+    }
+    expect(uncaught.seen).to.deep.equal([]);
+  });
+
   it('a hung worker: a call fails with a TimeoutError naming it within callTimeout, others with WorkerDiedError; then a restart', async () => {
     // The default callTimeout (8 s): it is also how long a worker may take to start, which a loaded machine may need
     // (a shorter one would fail the start of the next worker, not the hung call).

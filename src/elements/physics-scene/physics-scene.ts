@@ -41,6 +41,10 @@ export function checkSteps(n: unknown): void {
 
 /** PhysicsSceneElement.callTimeout. */
 let callTimeoutMs = 8000;
+/** PhysicsSceneElement.workerFactory. */
+let workerFactory: (() => Worker) | null = null;
+/** The longest delay setTimeout takes (2³¹ − 1 ms); a longer one fires at once. */
+const MAX_TIMER_MS = 2147483647;
 
 /**
  * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
@@ -81,16 +85,30 @@ let callTimeoutMs = 8000;
 export class PhysicsSceneElement extends LitElement {
   static override styles: CSSResultGroup = sceneStyles;
 
-  /** Makes the engine worker; replace it to load the worker from elsewhere (or to test a failing one). */
-  static workerFactory: (() => Worker) | null = null;
-  /** Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error` (> 0). */
+  /** Makes the engine worker; replace it to load the worker from elsewhere (or to test a failing one). A function or null (the library's own worker). */
+  static get workerFactory(): (() => Worker) | null {
+    return workerFactory;
+  }
+
+  static set workerFactory(make: (() => Worker) | null) {
+    // Anything else failed later, at the next scene's start ("Invalid value used as weak map key").
+    if (make !== null && make !== undefined && typeof make !== 'function') {
+      throw new TypeError(`PhysicsSceneElement.workerFactory must be a function that returns a Worker, or null, got ${typeof make === 'string' ? JSON.stringify(make) : String(make)}`);
+    }
+    workerFactory = make ?? null;
+  }
+  /**
+   * Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error` (> 0, at most
+   * 2147483647: about 24.8 days, the longest delay a timer takes).
+   */
   static get callTimeout(): number {
     return callTimeoutMs;
   }
 
   static set callTimeout(ms: number) {
     if (typeof ms !== 'number') throw new TypeError(`PhysicsSceneElement.callTimeout must be a number of milliseconds, got ${typeof ms}`);
-    if (!(ms > 0)) throw new RangeError(`PhysicsSceneElement.callTimeout must be > 0 (milliseconds), got ${ms}`);
+    // Longer, a timer fires at once: 3e9 or Infinity failed every new worker's start ("did not answer within 3000000000 ms").
+    if (!(ms > 0 && ms <= MAX_TIMER_MS)) throw new RangeError(`PhysicsSceneElement.callTimeout must be > 0 and at most ${MAX_TIMER_MS} (milliseconds), got ${ms}`);
     callTimeoutMs = ms;
   }
 
@@ -502,6 +520,10 @@ export class PhysicsSceneElement extends LitElement {
   // ---- lifecycle ---------------------------------------------------------------------------------------------
 
   override connectedCallback(): void {
+    // A scene stopped after its engine failed starts afresh when put in the page again, a move in one task too (which
+    // otherwise keeps what it has): its controllers back to their start before they connect (the session then starts
+    // a new engine). Kept, the move started an engine under a scene still stopped: running false, the error box up.
+    if (this.recovery?.gaveUp) this.stop();
     super.connectedCallback();
     // Known before the first render (slotchange comes after it), so the loading message never flashes over it.
     this.fallbackChanged();
