@@ -42,11 +42,17 @@ describe('<physics-scene> API arguments', () => {
 
   it('callTimeout takes milliseconds > 0; drawHook a function or null', async () => {
     const before = PhysicsSceneElement.callTimeout;
-    for (const bad of [-1, 0, NaN] as unknown[]) {
+    // Past 2³¹ − 1 ms a timer fires at once: 3e9 failed every new worker's start.
+    for (const bad of [-1, 0, NaN, 3e9, Infinity, 2 ** 31] as unknown[]) {
       expect(() => (PhysicsSceneElement.callTimeout = bad as number), String(bad)).to.throw(RangeError, 'callTimeout');
     }
     expect(() => (PhysicsSceneElement.callTimeout = '100' as unknown as number)).to.throw(TypeError, 'callTimeout');
     expect(PhysicsSceneElement.callTimeout).to.equal(before);
+    // workerFactory: a function or null; anything else failed at the next scene's start ("Invalid value used as weak map key").
+    for (const bad of [5, 'x', {}] as unknown[]) {
+      expect(() => (PhysicsSceneElement.workerFactory = bad as () => Worker), String(bad)).to.throw(TypeError, 'workerFactory');
+    }
+    expect(PhysicsSceneElement.workerFactory).to.equal(null);
     scene = await mount('width="10" height="10" paused', '');
     const s = scene;
     for (const bad of ['draw', {}, 42] as unknown[]) expect(() => (s.drawHook = bad as never), String(bad)).to.throw(TypeError, 'drawHook');
