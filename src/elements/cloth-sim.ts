@@ -122,8 +122,7 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     const check = new Checker(this);
     const columns = check.number('columns', this.columns, { integer: true, min: 2, max: 200, fallback: 24 })!;
     const rows = check.number('rows', this.rows, { integer: true, min: 2, max: 200, fallback: 16 })!;
-    const w = Number.isFinite(this.width) && this.width > 0 ? this.width : 16;
-    const h = Number.isFinite(this.height) && this.height > 0 ? this.height : 10;
+    const { width: w, height: h } = this.view;
     const auto = Math.min((w * 0.7) / (columns - 1), (h * 0.75) / (rows - 1));
     const spacing = check.number('spacing', this.spacing, { positive: true, max: 100, fallback: auto })!;
     const spread = [...new Set([0, 1, 2, 3, 4].map((k) => Math.round((k * (columns - 1)) / 4)))].join(' ');

@@ -1,12 +1,18 @@
 import { css } from 'lit';
 import { property } from 'lit/decorators.js';
 import { numberAttribute, type Problem } from './checks.js';
+import { checkedView, type ViewSize } from './physics-scene/config.js';
 import { checkSteps, PhysicsSceneElement } from './physics-scene/physics-scene.js';
 
 /** Steps between two ticks of a preset's behaviour (a tenth of a second at the default timestep). */
 const TICK_STEPS = 6;
 /** How often a running preset looks at the simulated time (page clock; the behaviour itself follows the steps). */
 const TICK_MS = 100;
+/**
+ * A preset's view in world units: its bodies are laid out for it, and a bad `width` or `height` falls back to it (the
+ * `height` property's default below is written out, for the manifest's analyzer).
+ */
+const PRESET_VIEW: ViewSize = Object.freeze({ width: 16, height: 10 });
 
 /**
  * What `<cloth-sim>` and `<ragdoll-sim>` share: a `<physics-scene>` whose bodies are generated, from a setup read off
@@ -31,6 +37,11 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
   /** World units down the view. Default 10. */
   @property({ type: Number, converter: numberAttribute }) override height = 10;
 
+  /** What a bad `width` or `height` falls back to: this preset's view, not the scene's 16 × 9. @internal */
+  get viewDefaults(): ViewSize {
+    return PRESET_VIEW;
+  }
+
   /** The setup of the last update. */
   protected setup: Setup | null = null;
 
@@ -51,6 +62,11 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
 
   protected override get bodyContainer(): ParentNode & Node {
     return (this.renderRoot?.querySelector('.bodies') as HTMLElement | null) ?? this.renderRoot ?? this;
+  }
+
+  /** The view's width and height as the scene draws it (each its default when bad): what the bodies are laid out for. */
+  protected get view(): ViewSize {
+    return checkedView(this);
   }
 
   /** Simulated seconds at the newest step shown. */

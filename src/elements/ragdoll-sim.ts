@@ -104,8 +104,7 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
    * pegs), so a paused scene shows them; the rest stacked above the view, falling in.
    */
   private spawnPoint(k: number, s: RagdollSetup): { x: number; y: number } {
-    const w = this.viewW();
-    const h = this.viewH();
+    const { width: w, height: h } = this.view;
     if (s.obstacles === 'stairs') {
       const step = k % 2;
       const stepW = (w * 0.85) / 6;
@@ -115,18 +114,9 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
     return { x: w * (0.12 + 0.76 * ((k * 0.618 + 0.2) % 1)), y: s.size * 0.7 - 1.3 * s.size * Math.floor(k / 4) };
   }
 
-  private viewW(): number {
-    return Number.isFinite(this.width) && this.width > 0 ? this.width : 16;
-  }
-
-  private viewH(): number {
-    return Number.isFinite(this.height) && this.height > 0 ? this.height : 10;
-  }
-
   protected override renderBodies(): TemplateResult | typeof nothing {
     const s = this.setup ?? this.readSetup();
-    const w = this.viewW();
-    const h = this.viewH();
+    const { width: w, height: h } = this.view;
     const obstacles: TemplateResult[] = [];
     if (s.obstacles === 'stairs') {
       // Steps going down from the top left to the bottom right.

@@ -245,3 +245,63 @@ describe('<ragdoll-sim>', () => {
     }
   });
 });
+
+describe('presets: a bad width or height', () => {
+  let sim: PhysicsSceneElement | null = null;
+  afterEach(() => unmount(sim));
+
+  /** `<tag attrs>` in a 480 px wide container that leaves its height to the element (its view's aspect ratio). */
+  async function mountUnsized<T extends PhysicsSceneElement>(tag: string, attrs: string): Promise<T> {
+    const box = document.createElement('div');
+    box.style.cssText = 'width: 480px;';
+    // Test markup only: fixed strings written in the tests.
+    box.innerHTML = `<${tag} ${attrs}></${tag}>`;
+    document.body.append(box);
+    const el = box.firstElementChild as T;
+    await el.ready;
+    return el;
+  }
+
+  it('falls back to the preset\'s own 16 × 10 in the view (aspect, element height) as in the layout of its bodies', async () => {
+    const errors: PhysicsErrorDetail[] = [];
+    const warn = console.warn;
+    console.warn = () => {};
+    const listener = (e: Event) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail);
+    document.addEventListener('physics-error', listener);
+    try {
+      const cases: [string, string, (s: PhysicsSceneElement) => void, string][] = [
+        ['ragdoll-sim', 'height="oops"', () => {}, 'height=oops'],
+        ['ragdoll-sim', '', (s) => (s.height = 0), 'height=0'],
+        ['cloth-sim', '', (s) => (s.height = -1), 'height=-1'],
+        ['cloth-sim', 'width="-4"', () => {}, 'width=-4'],
+      ];
+      for (const [tag, attrs, change, reported] of cases) {
+        const what = `<${tag} ${attrs}> ${reported}`;
+        errors.length = 0;
+        sim = await mountUnsized(tag, attrs);
+        change(sim);
+        await waitFor(() => errors.some((e) => `${e.attribute}=${e.value}` === reported), `${what} reported`);
+        await sim.updateComplete;
+        expect(sim.style.getPropertyValue('--physics-scene-view-aspect'), what).to.equal('16 / 10');
+        expect(sim.getBoundingClientRect().height, what).to.be.closeTo(300, 1);
+        if (tag === 'ragdoll-sim') {
+          // The stairs stand on the view's floor: the bottom of every step at y = 10, none below it.
+          const steps = Array.from(sim.shadowRoot!.querySelectorAll<HTMLElement & { y: number; height: number }>('physics-box'));
+          expect(steps.length, what).to.equal(6);
+          for (const s of steps) expect(Number(s.getAttribute('y')) + Number(s.getAttribute('height')) / 2, what).to.be.closeTo(10, 1e-9);
+        } else {
+          // The cloth hangs centred across the 16 units, and its 16 rows fill three quarters of the 10 down at most.
+          const cloth = clothOf(sim as ClothSimElement);
+          const spacing = Number(cloth.getAttribute('spacing'));
+          expect(Number(cloth.getAttribute('x')) + (spacing * 23) / 2, what).to.be.closeTo(8, 1e-9);
+          expect(spacing * 15, what).to.be.at.most(10 * 0.75 + 1e-9);
+        }
+        unmount(sim);
+        sim = null;
+      }
+    } finally {
+      console.warn = warn;
+      document.removeEventListener('physics-error', listener);
+    }
+  });
+});

@@ -26,7 +26,21 @@ export interface SceneAttributes {
   maxRestarts: number;
   drawMode: string;
   debug: boolean;
+  /**
+   * The view a bad `width` or `height` falls back to: the element's own defaults (a preset's view is 16 × 10, laid out
+   * for it). Absent: the scene's, 16 × 9.
+   */
+  readonly viewDefaults?: ViewSize;
 }
+
+/** A view's size in world units. */
+export interface ViewSize {
+  width: number;
+  height: number;
+}
+
+/** `<physics-scene>`'s default view. */
+const SCENE_VIEW: ViewSize = { width: 16, height: 9 };
 
 /**
  * Lit converter for the substeps attribute: "auto" stays "auto", anything else reads as a number (blank: NaN, which
@@ -67,8 +81,7 @@ const KERNELS: readonly KernelChoice[] = ['auto', 'wasm', 'js'];
 export function readConfig(scene: Element & SceneAttributes, scheme: ColourScheme = 'light'): { config: SceneConfig; problems: Problem[] } {
   const check = new Checker(scene);
   const config: SceneConfig = {
-    width: check.number('width', scene.width, { positive: true, fallback: 16 })!,
-    height: check.number('height', scene.height, { positive: true, fallback: 9 })!,
+    ...viewOf(check, scene),
     gravity: gravityOf(check, scene.gravity),
     iterations: check.number('iterations', scene.iterations, { integer: true, min: 1, max: 1000, fallback: 1 })!,
     substeps: substepsOf(check, scene.substeps),
@@ -83,6 +96,22 @@ export function readConfig(scene: Element & SceneAttributes, scheme: ColourSchem
     background: check.color('background', scene.background, SCHEME_COLOURS[scheme].background) ?? 'transparent',
   };
   return { config, problems: check.problems };
+}
+
+/**
+ * The view's width and height as the scene uses them: each the element's default (`viewDefaults`) when bad. A preset
+ * lays its bodies out for this, so they fit the view drawn. @internal
+ */
+export function checkedView(scene: Element & Pick<SceneAttributes, 'width' | 'height' | 'viewDefaults'>): ViewSize {
+  return viewOf(new Checker(scene), scene);
+}
+
+function viewOf(check: Checker, scene: Element & Pick<SceneAttributes, 'width' | 'height' | 'viewDefaults'>): ViewSize {
+  const defaults = scene.viewDefaults ?? SCENE_VIEW;
+  return {
+    width: check.number('width', scene.width, { positive: true, fallback: defaults.width })!,
+    height: check.number('height', scene.height, { positive: true, fallback: defaults.height })!,
+  };
 }
 
 /** Substeps: "auto" (default, also when absent) or a whole number from 1 to 1000 (the engine's limits). */
