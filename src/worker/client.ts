@@ -47,12 +47,27 @@ export function maxWorkers(): number {
   return workerLimit ?? defaultPoolSize();
 }
 
-/** Sets the most engine workers the page's pools make (null: the default). Workers already made stay. */
+/**
+ * Sets the most engine workers the page's pools make (null: the default). Workers already made stay. A TypeError for
+ * anything but a number or null (`"2"` is a string, not 2), a RangeError for a number that is not an integer ≥ 1.
+ */
 export function setMaxWorkers(limit: number | null): void {
-  if (limit !== null && (typeof limit !== 'number' || !Number.isInteger(limit) || limit < 1)) {
+  if (limit !== null && typeof limit !== 'number') {
+    throw new TypeError(`maxWorkers must be a number (an integer of at least 1) or null for the default, got ${shown(limit)}`);
+  }
+  if (limit !== null && (!Number.isInteger(limit) || limit < 1)) {
     throw new RangeError(`maxWorkers must be an integer of at least 1 (or null for the default), got ${String(limit)}`);
   }
   workerLimit = limit;
+}
+
+/** A value as an error message shows it: a string quoted (so "2" is told from 2), others with their type when unclear. */
+function shown(value: unknown): string {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (typeof value === 'number' || typeof value === 'boolean' || value === undefined) return String(value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (typeof value === 'symbol') return value.toString();
+  return Array.isArray(value) ? 'an array' : 'an object';
 }
 
 /** The page's pools, one per worker factory (a page normally has one). */

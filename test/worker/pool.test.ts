@@ -49,8 +49,12 @@ describe('WorkerPool (fake workers)', () => {
     expect(maxWorkers()).to.equal(3);
     setMaxWorkers(null);
     expect(maxWorkers()).to.equal(defaultPoolSize());
-    for (const bad of [0, -1, 1.5, Number.NaN, '2' as unknown as number]) {
+    for (const bad of [0, -1, 1.5, Number.NaN]) {
       expect(() => setMaxWorkers(bad), String(bad)).to.throw(RangeError, /maxWorkers must be an integer of at least 1.*got/);
+    }
+    // Not a number at all: a TypeError, the value shown as what it is ("2" was reported as "got 2", a RangeError).
+    for (const [bad, got] of [['2', 'got "2"'], [undefined, 'got undefined'], [true, 'got true'], [{}, 'got an object']] as const) {
+      expect(() => setMaxWorkers(bad as unknown as number), String(bad)).to.throw(TypeError, `maxWorkers must be a number (an integer of at least 1) or null for the default, ${got}`);
     }
     expect(maxWorkers()).to.equal(defaultPoolSize());
   });
