@@ -61,6 +61,20 @@ export function setMaxWorkers(limit: number | null): void {
   workerLimit = limit;
 }
 
+/**
+ * A worker factory as PhysicsSceneElement.workerFactory takes it: a function that returns a Worker, or null (or
+ * undefined) for the default, createEngineWorker. A TypeError naming workerFactory and the value otherwise: the
+ * page's pools are keyed by their factory, and `5` used as one failed later, in every scene, as "Invalid value used as
+ * weak map key".
+ */
+export function checkWorkerFactory(factory: unknown): (() => Worker) | null {
+  if (factory === null || factory === undefined) return null;
+  if (typeof factory !== 'function') {
+    throw new TypeError(`workerFactory must be a function that returns a Worker, or null for the default, got ${shown(factory)}`);
+  }
+  return factory as () => Worker;
+}
+
 /** A value as an error message shows it: a string quoted (so "2" is told from 2), others with their type when unclear. */
 function shown(value: unknown): string {
   if (typeof value === 'string') return JSON.stringify(value);
@@ -75,6 +89,7 @@ const pools = new WeakMap<() => Worker, WorkerPool>();
 
 /** The page's pool of engine workers made by `createWorker`. */
 export function pageWorkers(createWorker: () => Worker = createEngineWorker): WorkerPool {
+  createWorker = checkWorkerFactory(createWorker) ?? createEngineWorker;
   let pool = pools.get(createWorker);
   if (!pool) {
     pool = new WorkerPool({ createWorker, size: maxWorkers });

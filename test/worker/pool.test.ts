@@ -2,7 +2,7 @@
 // the least-loaded worker within the pool's size, each world its own frames and state, an empty worker terminated
 // after the grace period (and reused within it), and a dead worker's worlds all told while the other worker's go on.
 import { expect } from '@open-wc/testing';
-import { EngineClient, maxWorkers, setMaxWorkers } from '../../src/worker/client.js';
+import { checkWorkerFactory, EngineClient, maxWorkers, setMaxWorkers } from '../../src/worker/client.js';
 import { defaultPoolSize, WorkerPool, type PoolMember } from '../../src/worker/pool.js';
 import type { HostScene } from '../../src/worker/protocol.js';
 import { liveResources } from '../../src/worker/resources.js';
@@ -57,6 +57,23 @@ describe('WorkerPool (fake workers)', () => {
       expect(() => setMaxWorkers(bad as unknown as number), String(bad)).to.throw(TypeError, `maxWorkers must be a number (an integer of at least 1) or null for the default, ${got}`);
     }
     expect(maxWorkers()).to.equal(defaultPoolSize());
+  });
+
+  it('a worker factory is a function or null: anything else is a TypeError naming workerFactory, or a clear fallback to the main thread', async () => {
+    const f = () => new FakeWorker(true) as unknown as Worker;
+    expect(checkWorkerFactory(f)).to.equal(f);
+    expect(checkWorkerFactory(null)).to.equal(null);
+    expect(checkWorkerFactory(undefined)).to.equal(null);
+    for (const [bad, got] of [[5, 'got 5'], ['x', 'got "x"'], [{}, 'got an object'], [true, 'got true']] as const) {
+      expect(() => checkWorkerFactory(bad), String(bad)).to.throw(TypeError, `workerFactory must be a function that returns a Worker, or null for the default, ${got}`);
+    }
+    // Given to a client (as the scene passes PhysicsSceneElement.workerFactory): the main thread, told why (it was
+    // "Invalid value used as weak map key").
+    const errors: string[] = [];
+    const c = await EngineClient.start({ createWorker: 5 as unknown as () => Worker, timeout: 2000, onError: (m) => errors.push(m) });
+    clients.push(c);
+    expect(c.mode).to.equal('main');
+    expect(errors).to.deep.equal(['engine worker failed, running on the main thread instead: workerFactory must be a function that returns a Worker, or null for the default, got 5']);
   });
 
   it('places five worlds in two workers, least-loaded first; each world keeps its own state and frames', async () => {

@@ -107,6 +107,22 @@ describe('engine worker', () => {
     expect(await scene.step(3)).to.equal(3);
   });
 
+  it('a workerFactory that is not a function: physics-error naming it and its value, and the main-thread engine', async () => {
+    for (const [bad, got] of [[5, 'got 5'], ['x', 'got "x"']] as const) {
+      PhysicsSceneElement.workerFactory = bad as unknown as () => Worker;
+      const errors: PhysicsErrorDetail[] = [];
+      const scene = await mount('paused', `<physics-circle x="5" y="1" radius="0.5"></physics-circle>`, {
+        before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+      });
+      scenes.push(scene);
+      expect(errors.map((e) => [e.attribute, e.message]), String(bad)).to.deep.equal([
+        ['worker', `engine worker failed, running on the main thread instead: workerFactory must be a function that returns a Worker, or null for the default, ${got}`],
+      ]);
+      expect(scene.mode).to.equal('main');
+      expect(await scene.step(3)).to.equal(3);
+    }
+  });
+
   it('a worker that never answers times out with physics-error instead of hanging', async () => {
     PhysicsSceneElement.callTimeout = 300;
     PhysicsSceneElement.workerFactory = () => new Worker(URL.createObjectURL(new Blob(['/* silent */'], { type: 'text/javascript' })), { type: 'module' });
