@@ -4,7 +4,7 @@
 import { TripleBuffer } from './triple-buffer.js';
 import { TripleBufferPublisher } from './publishers.js';
 import { F, HEADER, POSE, frameLength, poseOffset, type EngineApi, type FramePatch, type PortMessage, type Topology, type Transport } from './protocol.js';
-import { TimeoutError, WorkerPool, defaultPoolSize, type WorldLink } from './pool.js';
+import { TimeoutError, WorkerPool, defaultPoolSize, timerDelay, type WorldLink } from './pool.js';
 import { track } from './resources.js';
 
 export { TimeoutError } from './pool.js';
@@ -14,7 +14,10 @@ export type Remote = { [K in keyof EngineApi]: (...args: Parameters<EngineApi[K]
 export interface ClientOptions {
   /** 'auto' (default): a worker when possible; 'none': the main thread. */
   worker?: 'auto' | 'none';
-  /** Milliseconds a call (and the worker's start) may take before it fails. Default 8000. */
+  /**
+   * Milliseconds a call (and the worker's start) may take before it fails. Default 8000. A timer waits at most
+   * 2147483647 ms (2^31 − 1): a longer timeout waits that long.
+   */
   timeout?: number;
   /** Makes the workers (tests replace it): the page's pool for this factory is used. */
   createWorker?: () => Worker;
@@ -224,6 +227,8 @@ export class EngineClient {
   }
 
   private call(method: keyof EngineApi, args: unknown[], timeout: number, hung?: string): Promise<unknown> {
+    // A longer delay overflows the timer, which then fires at once.
+    timeout = timerDelay(timeout);
     if (this.deathReason !== null) return Promise.reject(new WorkerDiedError(`${method}(): the engine worker died (${this.deathReason})`));
     if (this.disposed) return Promise.reject(new EngineStoppedError(`engine stopped (${method})`));
     return new Promise((resolve, reject) => {

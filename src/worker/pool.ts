@@ -45,6 +45,17 @@ export interface PoolOptions {
 /** How long an empty worker waits for a new world before it is terminated (ms). */
 export const GRACE_MS = 1000;
 
+/**
+ * The longest delay a timer takes (ms, 2^31 − 1, about 24.8 days): a longer one overflows, and the browser fires it at
+ * once (a timeout of 3e9 ms or Infinity failed every worker's start at once, "did not answer within 3000000000 ms").
+ */
+export const MAX_TIMER_MS = 2147483647;
+
+/** A timeout as a timer can wait for it: at most MAX_TIMER_MS. */
+export function timerDelay(ms: number): number {
+  return ms > MAX_TIMER_MS ? MAX_TIMER_MS : ms;
+}
+
 /** A call that got no answer within the timeout; the message names the method. */
 export class TimeoutError extends Error {
   override name = 'TimeoutError';
@@ -94,9 +105,10 @@ export class WorkerPool {
   /**
    * Opens a world for `member` in the least-loaded worker (a new one while the pool has room and every worker holds a
    * world). Fails when the worker cannot be made, fails to load or does not answer within `timeout` ms (a worker that
-   * does not answer is terminated, and the worlds in it die).
+   * does not answer is terminated, and the worlds in it die). A timeout past MAX_TIMER_MS waits MAX_TIMER_MS.
    */
   async open(member: PoolMember, timeout: number): Promise<WorldLink> {
+    timeout = timerDelay(timeout);
     const w = this.#place();
     const id = nextWorld++;
     if (w.idle !== null) clearTimeout(w.idle);

@@ -3,7 +3,7 @@
 // after the grace period (and reused within it), and a dead worker's worlds all told while the other worker's go on.
 import { expect } from '@open-wc/testing';
 import { checkWorkerFactory, EngineClient, maxWorkers, setMaxWorkers } from '../../src/worker/client.js';
-import { defaultPoolSize, WorkerPool, type PoolMember } from '../../src/worker/pool.js';
+import { defaultPoolSize, MAX_TIMER_MS, WorkerPool, type PoolMember } from '../../src/worker/pool.js';
 import type { HostScene } from '../../src/worker/protocol.js';
 import { liveResources } from '../../src/worker/resources.js';
 import { waitFor } from '../elements/helpers.js';
@@ -151,6 +151,33 @@ describe('WorkerPool (fake workers)', () => {
     expect(made.length).to.equal(3);
     expect(r.worker).to.not.equal(cs[1].worker);
     expect(pool.loads).to.deep.equal([2, 1]);
+  });
+
+  it('a timeout past the longest timer delay (3e9 ms, Infinity) waits 2147483647 ms: the world opens and its calls are answered', async () => {
+    const { pool } = rig(1);
+    // The delays the pool and the client give their timers (a longer one overflows, and the timer fires at once).
+    const delays: number[] = [];
+    const real = window.setTimeout;
+    window.setTimeout = ((run: TimerHandler, ms?: number, ...rest: unknown[]) => {
+      delays.push(ms ?? 0);
+      return real(run, ms, ...rest);
+    }) as typeof window.setTimeout;
+    try {
+      for (const timeout of [3e9, Infinity]) {
+        delays.length = 0;
+        const deaths: string[] = [];
+        const errors: string[] = [];
+        const c = await EngineClient.start({ pool, timeout, onDeath: (r) => deaths.push(r), onError: (m) => errors.push(m) });
+        clients.push(c);
+        await c.api.load(SCENE);
+        expect(await c.api.step(2), String(timeout)).to.equal(2);
+        expect([c.mode, deaths, errors], String(timeout)).to.deep.equal(['worker', [], []]);
+        expect(Math.max(...delays), String(timeout)).to.equal(MAX_TIMER_MS);
+        expect(MAX_TIMER_MS).to.equal(2 ** 31 - 1);
+      }
+    } finally {
+      window.setTimeout = real;
+    }
   });
 
   it('a call one world got no answer to declares the worker dead for all its worlds, once each', async () => {

@@ -123,6 +123,21 @@ describe('engine worker', () => {
     }
   });
 
+  it('a callTimeout past the longest timer delay (3e9 ms, Infinity) does not fail the worker at once: it runs there', async () => {
+    for (const ms of [3e9, Infinity]) {
+      PhysicsSceneElement.callTimeout = ms;
+      const errors: PhysicsErrorDetail[] = [];
+      const scene = await mount('paused', `<physics-circle x="5" y="1" radius="0.5"></physics-circle>`, {
+        before: (s) => s.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail)),
+      });
+      scenes.push(scene);
+      // It read "engine worker failed, running on the main thread instead: the worker did not answer within 3000000000 ms".
+      expect(errors.map((e) => e.message), String(ms)).to.deep.equal([]);
+      expect(scene.mode, String(ms)).to.equal('worker');
+      expect(await scene.step(3)).to.equal(3);
+    }
+  });
+
   it('a worker that never answers times out with physics-error instead of hanging', async () => {
     PhysicsSceneElement.callTimeout = 300;
     PhysicsSceneElement.workerFactory = () => new Worker(URL.createObjectURL(new Blob(['/* silent */'], { type: 'text/javascript' })), { type: 'module' });
