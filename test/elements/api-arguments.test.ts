@@ -64,6 +64,24 @@ describe('<physics-scene> API arguments', () => {
     expect(s.drawHook).to.equal(null);
   });
 
+  it('worldToClient(x, y) and clientToWorld(x, y) take finite numbers (a bad one was NaN, like "not laid out")', async () => {
+    scene = await mount('width="10" height="10" paused', '');
+    const s = scene as unknown as Record<'worldToClient' | 'clientToWorld', (...a: unknown[]) => { x: number; y: number }>;
+    for (const name of ['worldToClient', 'clientToWorld'] as const) {
+      const call = (...a: unknown[]) => s[name].call(scene, ...a);
+      expect(() => call('a', 1)).to.throw(TypeError, `${name}(x, y): x must be a number, got "a"`);
+      expect(() => call(NaN, 1)).to.throw(RangeError, `${name}(x, y): x must be a finite number, got NaN`);
+      expect(() => call()).to.throw(TypeError, `${name}(x, y): x must be a number, got undefined`);
+      expect(() => call(1)).to.throw(TypeError, `${name}(x, y): y must be a number, got undefined`);
+      const p = call(5, 5);
+      expect([Number.isFinite(p.x), Number.isFinite(p.y)], name).to.deep.equal([true, true]);
+    }
+    const c = scene.worldToClient(5, 5);
+    const w = scene.clientToWorld(c.x, c.y);
+    expect(w.x).to.be.closeTo(5, 1e-6);
+    expect(w.y).to.be.closeTo(5, 1e-6);
+  });
+
   it('a draw hook that throws on every frame is warned of once; another hook that throws, once more', async () => {
     const warnings: string[] = [];
     console.warn = (...args: unknown[]) => warnings.push(args.map(String).join(' '));

@@ -2,6 +2,7 @@
 // colours, debug drawing, hook) after each update, and the mapping between world and viewport coordinates. The renderer
 // draws only when something changes (see SceneRenderer): an idle scene (paused, settled, reduced motion) costs nothing.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { finite } from '../../engine/validate.js';
 import { SceneRenderer, type BodyStyle, type DrawHook, type FrameSource } from '../../render/renderer.js';
 
 /** World → canvas CSS pixels: px = offsetX + x · scale, py = offsetY + y · scale. */
@@ -136,16 +137,21 @@ export class StageController implements ReactiveController {
     return m ? project(m, x, y) : { x: NaN, y: NaN };
   }
 
-  /** A world point in viewport (client) coordinates; NaN without a canvas. */
+  /**
+   * A world point in viewport (client) coordinates; NaN without a canvas. A TypeError for an argument that is not a
+   * number, a RangeError for NaN or ±Infinity (which would also give NaN, the answer that means "not laid out").
+   */
   worldToClient(x: number, y: number): { x: number; y: number } {
+    checkPoint('worldToClient', x, y);
     const canvas = this.canvas;
     if (!this.renderer || !canvas) return { x: NaN, y: NaN };
     const p = this.renderer.worldToCanvas(x, y);
     return this.canvasToClient(p.x, p.y);
   }
 
-  /** A viewport point in world units; NaN without a canvas. */
+  /** A viewport point in world units; NaN without a canvas. Its arguments are checked as worldToClient's. */
   clientToWorld(x: number, y: number): { x: number; y: number } {
+    checkPoint('clientToWorld', x, y);
     const canvas = this.canvas;
     if (!this.renderer || !canvas) return { x: NaN, y: NaN };
     const c = this.clientToCanvas(x, y);
@@ -187,6 +193,12 @@ export class StageController implements ReactiveController {
     }
     return homography(corners, w, h);
   }
+}
+
+/** The two coordinates of a point given to `method`: finite numbers, or an error naming the method and the argument. */
+function checkPoint(method: string, x: unknown, y: unknown): void {
+  finite(`${method}(x, y): x`, x);
+  finite(`${method}(x, y): y`, y);
 }
 
 type Point = [x: number, y: number];

@@ -85,4 +85,39 @@ describe('StageController', () => {
       canvas.remove();
     }
   });
+
+  it('refuses coordinates that are not finite numbers, naming the method and the argument (with a canvas or without)', () => {
+    const host = makeHost();
+    const renderer = new FakeRenderer();
+    const stage = new StageController(host, { source: () => null, view: () => ({ width: 10, height: 5, background: '', debug: false, drawMode: 'over', hook: null }), create: () => renderer });
+    const calls: [string, (x: number, y: number) => unknown][] = [
+      ['worldToClient', (x, y) => stage.worldToClient(x, y)],
+      ['clientToWorld', (x, y) => stage.clientToWorld(x, y)],
+    ];
+    const canvas = document.createElement('canvas');
+    for (const withCanvas of [false, true]) {
+      if (withCanvas) {
+        stage.open(document.createElement('div'), true);
+        document.body.append(canvas);
+        renderer.canvas = canvas;
+      }
+      try {
+        for (const [name, call] of calls) {
+          const bad: [unknown[], ErrorConstructor, string][] = [
+            [['a', 1], TypeError, `${name}(x, y): x must be a number, got "a"`],
+            [[1, '2'], TypeError, `${name}(x, y): y must be a number, got "2"`],
+            [[], TypeError, `${name}(x, y): x must be a number, got undefined`],
+            [[1], TypeError, `${name}(x, y): y must be a number, got undefined`],
+            [[NaN, 1], RangeError, `${name}(x, y): x must be a finite number, got NaN`],
+            [[1, -Infinity], RangeError, `${name}(x, y): y must be a finite number, got -Infinity`],
+          ];
+          for (const [args, type, message] of bad) {
+            expect(() => (call as (...a: unknown[]) => unknown)(...args), `${name}(${args.map(String)})`).to.throw(type, message);
+          }
+        }
+      } finally {
+        canvas.remove();
+      }
+    }
+  });
 });
