@@ -156,6 +156,23 @@ describe('body painters', () => {
     expect(paints.map((p) => [p.op, p.width])).to.deep.equal([['stroke', 2], ['fill', 2]]);
   });
 
+  it('a ragdoll or rope drawn in one colour: the stroke\'s, else the fill\'s; nothing when both are "none"', () => {
+    const indices = Int32Array.from({ length: RAGDOLL_JOINTS.length }, (_, i) => i);
+    const doll = { version: 1, bodies: [{ key: 1, type: 'ragdoll', kind: 'ragdoll', indices, radius: 0.1 }] as TopologyBody[], links: [] };
+    const rope = { version: 1, bodies: [{ key: 1, type: 'rope', kind: 'rope', indices: Int32Array.of(0, 1, 2), radius: 0 }] as TopologyBody[], links: [] };
+    const styles = (t: Topology, fill: string | null, stroke: string | null) => paint(t, [0], { fill, stroke, lineWidth: 1.5 }).paints.map((p) => `${p.op} ${p.style}`);
+    expect(styles(doll, null, '#00f')).to.deep.equal(['stroke #00f', 'fill #00f']);
+    expect(styles(doll, '#f00', null)).to.deep.equal(['stroke #f00', 'fill #f00']);
+    expect(styles(doll, '#f00', '#00f')).to.deep.equal(['stroke #00f', 'fill #f00']);
+    expect(styles(rope, null, '#00f')).to.deep.equal(['stroke #00f']);
+    expect(styles(rope, '#f00', null)).to.deep.equal(['stroke #f00']);
+    // stroke="none" on a ragdoll (no fill by default) was drawn in #333, on a rope in #000.
+    const none = paint(doll, [0], { fill: null, stroke: null, lineWidth: 1.5 });
+    expect([none.paints, none.calls]).to.deep.equal([[], []]);
+    const noRope = paint(rope, [0], { fill: null, stroke: null, lineWidth: 1.5 });
+    expect([noRope.paints, noRope.calls]).to.deep.equal([[], []]);
+  });
+
   it('a dense cloth draws every k-th grid line, through every k-th node and the last, so lines stay 6 px apart', () => {
     const n = 21;
     const body: TopologyBody = { key: 1, type: 'cloth', kind: 'cloth', indices: Int32Array.from({ length: n * n }, (_, i) => i), columns: n, rows: n };

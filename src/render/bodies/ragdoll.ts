@@ -5,6 +5,9 @@ import { disc, type BodyPainter } from './painter.js';
 export const ragdoll: BodyPainter = {
   batch: 'ragdoll',
   draw(pen, group, style) {
+    // One colour for the figure, the stroke's (else the fill's); with both "none", nothing (it was drawn in #333).
+    const colour = style.stroke ?? style.fill;
+    if (colour === null) return;
     const { ctx, X, Y } = pen;
     let width = 2;
     ctx.beginPath();
@@ -18,7 +21,7 @@ export const ragdoll: BodyPainter = {
         ctx.lineTo(X(idx[bone[1]]), Y(idx[bone[1]]));
       }
     }
-    ctx.strokeStyle = style.stroke ?? style.fill ?? '#333';
+    ctx.strokeStyle = colour;
     ctx.lineWidth = width;
     ctx.stroke();
     ctx.beginPath();
@@ -26,7 +29,7 @@ export const ragdoll: BodyPainter = {
       const b = pen.topology.bodies[k];
       disc(pen, b.indices[0], (b.radius ?? 0.1) * pen.scale);
     }
-    ctx.fillStyle = style.fill ?? style.stroke ?? '#333';
+    ctx.fillStyle = style.fill ?? colour;
     ctx.fill();
   },
 };

@@ -4,6 +4,9 @@ import type { BodyPainter } from './painter.js';
 export const rope: BodyPainter = {
   batch: 'rope',
   draw(pen, group, style) {
+    // The stroke's colour, else the fill's; with both "none", nothing (it was drawn in black).
+    const colour = style.stroke ?? style.fill;
+    if (colour === null) return;
     const { ctx, X, Y } = pen;
     let width = style.lineWidth;
     ctx.beginPath();
@@ -14,7 +17,7 @@ export const rope: BodyPainter = {
       ctx.moveTo(X(idx[0]), Y(idx[0]));
       for (let q = 1; q < idx.length; q++) ctx.lineTo(X(idx[q]), Y(idx[q]));
     }
-    ctx.strokeStyle = style.stroke ?? style.fill ?? '#000';
+    ctx.strokeStyle = colour;
     ctx.lineWidth = width;
     ctx.stroke();
   },
