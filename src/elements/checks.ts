@@ -181,6 +181,16 @@ export class Checker {
     }
     return v;
   }
+
+  /**
+   * A colour a preset passes on to the bodies it makes: the colour, "none" (that part not drawn), or undefined when
+   * absent or bad (reported): the body's own default.
+   */
+  colorOrNone(attribute: string, value: unknown): string | undefined {
+    const colour = this.color(attribute, value, null);
+    if (colour !== null) return colour;
+    return typeof value === 'string' && value.trim() === 'none' ? 'none' : undefined;
+  }
 }
 
 /** Characters of a value shown in warnings and the error box; the `physics-error` event carries the whole value. */

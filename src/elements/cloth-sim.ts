@@ -136,8 +136,8 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
     const wind = check.number('wind', this.wind, { min: -1000, max: 1000, fallback: 1.5 })!;
     const gusts = check.number('gusts', this.gusts, { min: 0, max: 1, fallback: 0.6 })!;
     const tear = check.number('tear', this.tear, { positive: true });
-    const fill = check.color('fill', this.fill, null) === null && this.fill !== 'none' ? undefined : this.fill;
-    const stroke = check.color('stroke', this.stroke, null) === null && this.stroke !== 'none' ? undefined : this.stroke;
+    const fill = check.colorOrNone('fill', this.fill);
+    const stroke = check.colorOrNone('stroke', this.stroke);
     const x = (w - spacing * (columns - 1)) / 2;
     const y = Math.min(h * 0.08, 0.8);
     return { columns, rows, spacing, x, y, pins, compliance, wind, gusts, tear, fill, stroke, problems: check.problems };

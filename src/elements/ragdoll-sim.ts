@@ -59,9 +59,12 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
    * value but "off" or "false"); `respawn="off"` lets them lie.
    */
   @property({ converter: respawnAttribute }) respawn = true;
-  /** Ragdoll line colour (CSS colour). Default "#333a44", or "#d3d8e0" on a page whose colour scheme is dark. */
+  /**
+   * Ragdoll line colour (CSS colour, or "none": the ragdolls are not drawn). Default "#333a44", or "#d3d8e0" on a page
+   * whose colour scheme is dark.
+   */
   @property() stroke?: string;
-  /** Obstacle fill colour (CSS colour). Default "#8a8f98". */
+  /** Obstacle fill colour (CSS colour, or "none": outlines only). Default "#8a8f98". */
   @property({ attribute: 'obstacle-fill' }) obstacleFill?: string;
 
   /** Ragdolls put back at the top so far. */
@@ -186,8 +189,9 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
     const count = check.number('count', this.count, { integer: true, min: 1, max: 12, fallback: 3 })!;
     const size = check.number('size', this.size, { positive: true, max: 100, fallback: 1.6 })!;
     const obstacles = check.oneOf('obstacles', this.obstacles, ['stairs', 'pegs', 'none'] as const, 'stairs');
-    const stroke = check.color('stroke', this.stroke, null) === null ? undefined : this.stroke;
-    const obstacleFill = check.color('obstacle-fill', this.obstacleFill, null) === null ? undefined : this.obstacleFill;
+    // "none" is passed on as written (the check reads it as null, which meant the default here: drawn all the same).
+    const stroke = check.colorOrNone('stroke', this.stroke);
+    const obstacleFill = check.colorOrNone('obstacle-fill', this.obstacleFill);
     return { count, size, obstacles, respawn: this.respawn, stroke, obstacleFill, problems: check.problems };
   }
 }

@@ -224,6 +224,44 @@ describe('<ragdoll-sim>', () => {
     expect(doll.x - atRelease - flown, 'distance flown in the next 0.5 s').to.be.above(0.5);
   });
 
+  it('stroke="none" and obstacle-fill="none" (attribute or property) draw no ragdoll lines and no obstacle fill', async () => {
+    const DOLL = '#333a44';
+    const OBSTACLE = '#8a8f98';
+    // Drawn by default: the dolls' lines and the stairs' fill.
+    sim = await mountSim<RagdollSimElement>('ragdoll-sim', 'paused');
+    await drawn(sim, 2);
+    expect(countColour(sim, DOLL)).to.be.above(100);
+    expect(countColour(sim, OBSTACLE)).to.be.above(5000);
+    const s = sim;
+    s.stroke = 'none';
+    s.obstacleFill = 'none';
+    // Not in another colour either (a ragdoll with neither stroke nor fill was drawn in #333).
+    const dark = () => countColour(s, DOLL) + countColour(s, '#333333') + countColour(s, '#000000');
+    await waitFor(() => dark() === 0 && countColour(s, OBSTACLE) === 0, 'dolls and stair fill gone (properties)');
+    expect(dollsOf(s).map((d) => d.getAttribute('stroke'))).to.deep.equal(['none', 'none', 'none']);
+    expect((await s.diagnostics()).bodyCount).to.equal(3 + 6);
+    unmount(s);
+    // Written as attributes (with spaces, as a CMS may leave them), from the start: nothing reported, nothing drawn.
+    const errors: PhysicsErrorDetail[] = [];
+    const box = document.createElement('div');
+    box.style.cssText = 'width: 480px; height: 300px;';
+    sim = document.createElement('ragdoll-sim');
+    sim.setAttribute('paused', '');
+    sim.setAttribute('stroke', ' none');
+    sim.setAttribute('obstacle-fill', 'none ');
+    sim.style.cssText = 'width: 100%; height: 100%';
+    sim.addEventListener('physics-error', (e) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail));
+    box.append(sim);
+    document.body.append(box);
+    await sim.ready;
+    await drawn(sim, 2);
+    expect(errors).to.deep.equal([]);
+    expect([countColour(sim, DOLL), countColour(sim, '#333333'), countColour(sim, OBSTACLE)]).to.deep.equal([0, 0, 0]);
+    // A colour still colours them (and the stroke "none" of the cloth still works: see above).
+    sim.stroke = '#ff0000';
+    await waitFor(() => countColour(sim!, '#ff0000') > 100, 'red ragdolls');
+  });
+
   it('bad attributes fall back to defaults and are reported on the element', async () => {
     const errors: PhysicsErrorDetail[] = [];
     const warn = console.warn;
