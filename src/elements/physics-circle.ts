@@ -17,11 +17,11 @@ export class PhysicsCircleElement extends PhysicsShapeElement {
 
   describe(): Described<BodyDescription> {
     const check = new Checker(this);
-    const radius = check.number('radius', this.radius, { positive: true, fallback: 0.5 });
-    const common = this.common(check, Math.PI * (radius ?? 0.5) ** 2, 'radius', 1);
-    // A negative or zero radius cannot make a ball: report it and leave the body out.
-    if (!common || check.problems.some((p) => p.attribute === 'radius')) return { desc: null, problems: check.problems };
-    return { desc: { type: 'circle', radius, ...common } as BodyDescription, problems: check.problems };
+    // A bad radius (0, -1, "abc", past 1e9) is reported and falls back to the default 0.5, as a box's width does.
+    const radius = check.number('radius', this.radius, { positive: true, fallback: 0.5 })!;
+    const common = this.common(check, Math.PI * radius ** 2, 'radius', 1);
+    // Left out only when no mass can be made (a radius too small for density × area: reported on density or radius).
+    return { desc: common && ({ type: 'circle', radius, ...common } as BodyDescription), problems: check.problems };
   }
 
   protected defaultStyle() {

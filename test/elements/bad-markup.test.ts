@@ -45,17 +45,48 @@ describe('<physics-scene> bad markup', () => {
       expect(warnings.some((w) => w.includes(`<${tag}`) && w.includes(`${attribute}="${value}"`)), `a warning for <${tag}> ${attribute}="${value}"`).to.equal(true);
     }
     expect(warnings.length).to.equal(4);
-    // The box is simulated and falls; the broken bodies and the joint were left out; width fell back to 16.
+    // The box is simulated and falls; the ball too, its radius the default 0.5; the polygon that cannot be built and
+    // the joint were left out; width fell back to 16.
     const d = await scene.diagnostics();
-    expect(d.bodyCount).to.equal(1);
+    expect(d.bodyCount).to.equal(2);
     expect(d.linkCount).to.equal(0);
     expect(scene.style.getPropertyValue('--physics-scene-view-aspect')).to.equal('16 / 10');
     const box = scene.querySelector<PhysicsBoxElement>('#box')!;
     await waitFor(() => box.y > 2.5, 'the good box to fall');
-    // Fixing the markup brings the body in, without another error.
-    scene.querySelector('physics-circle')!.setAttribute('radius', '0.5');
-    await waitFor(async () => (await scene!.diagnostics()).bodyCount === 2, 'the fixed circle');
+    // Fixing the markup brings the polygon in, without another error.
+    scene.querySelector('physics-polygon')!.setAttribute('points', '0,0 1,0 0,1');
+    await waitFor(async () => (await scene!.diagnostics()).bodyCount === 3, 'the fixed polygon');
     expect(errors.length).to.equal(4);
+  });
+
+  it('a bad size falls back to its default and keeps the body, on a ball as on a box (radius = 0 dropped the ball)', async () => {
+    const { warnings, errors, before } = reports();
+    scene = await mount(
+      'width="10" height="10" gravity="0 10" paused',
+      `<physics-box id="floor" x="5" y="9.5" width="10" height="1" static></physics-box>
+       <physics-box id="box" x="3" y="7" width="1" height="1"></physics-box>
+       <physics-circle id="ball" x="7" y="7" radius="1"></physics-circle>
+       <physics-circle id="marked" x="5" y="7" radius="-1"></physics-circle>`,
+      { before },
+    );
+    expect(errors.map((e) => `${e.element.id} ${e.attribute}=${e.value}`)).to.deep.equal(['marked radius=-1']);
+    expect((await scene.diagnostics()).bodyCount).to.equal(4);
+    const s = scene;
+    const [box, ball, marked] = ['#box', '#ball', '#marked'].map((q) => s.querySelector<HTMLElement & { width: number; radius: number; y: number }>(q)!);
+    box.width = -2;
+    ball.radius = 0;
+    await waitFor(() => errors.length === 3, 'both reported');
+    expect(errors.slice(1).map((e) => `${e.element.id} ${e.attribute}=${e.value}: ${e.message}`)).to.have.members([
+      'box width=-2: must be a number > 0',
+      'ball radius=0: must be a number > 0',
+    ]);
+    expect(warnings.length).to.equal(3);
+    expect((await s.diagnostics()).bodyCount).to.equal(4);
+    // Simulated at their defaults: each comes to rest on the floor (top at y = 9), the box 1 tall, the balls 0.5 round.
+    await s.step(120);
+    expect(box.y).to.be.closeTo(8.5, 0.05);
+    expect(ball.y).to.be.closeTo(8.5, 0.05);
+    expect(marked.y).to.be.closeTo(8.5, 0.05);
   });
 
   it('a static rope and a static cloth hold still; density on a rope, cloth or ragdoll is reported (they take mass), and they run', async () => {

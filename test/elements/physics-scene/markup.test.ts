@@ -130,13 +130,13 @@ describe('MarkupSync', () => {
   });
 
   it("bad markup: an element's problems go out with the element as their source, and nothing is sent for it", async () => {
-    const r = rig(`<physics-circle id="bad" radius="-1" fill="not-a-colour"></physics-circle>`);
+    const r = rig(`<physics-polygon id="bad" points="0,0 1,1" fill="not-a-colour"></physics-polygon>`);
     container = r.container;
     await changes();
     expect(r.sync.collect().bodies).to.deep.equal([]);
-    expect(r.problems.get(r.$('#bad'))!.map((p) => `${p.attribute}=${p.value}`)).to.deep.equal(['radius=-1', 'fill=not-a-colour']);
+    expect(r.problems.get(r.$('#bad'))!.map((p) => `${p.attribute}=${p.value}`)).to.deep.equal(['points=0,0 1,1', 'fill=not-a-colour']);
     r.sync.observe();
-    r.$('#bad').setAttribute('radius', '1');
+    r.$('#bad').setAttribute('points', '0,0 1,0 0,1');
     await changes();
     expect(r.sent.map(([m]) => m)).to.deep.equal(['updateBody']);
     expect(r.problems.get(r.$('#bad'))!.map((p) => p.attribute)).to.deep.equal(['fill']);
