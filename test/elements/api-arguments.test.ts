@@ -62,6 +62,10 @@ describe('<physics-scene> API arguments', () => {
     expect(s.drawHook).to.equal(hook);
     s.drawHook = null;
     expect(s.drawHook).to.equal(null);
+    // undefined counts as null (docs/embedding.md, Custom drawing).
+    s.drawHook = hook;
+    s.drawHook = undefined as unknown as null;
+    expect(s.drawHook).to.equal(null);
   });
 
   it('worldToClient(x, y) and clientToWorld(x, y) take finite numbers (a bad one was NaN, like "not laid out")', async () => {
