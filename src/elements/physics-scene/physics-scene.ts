@@ -4,7 +4,8 @@
 import { LitElement, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { property, state } from 'lit/decorators.js';
 import { loadP5, type DrawHook } from '../../render/renderer.js';
-import { EngineStoppedError, maxWorkers, setMaxWorkers } from '../../worker/client.js';
+import { checkWorkerFactory, EngineStoppedError, maxWorkers, setMaxWorkers } from '../../worker/client.js';
+import { MAX_TIMER_MS } from '../../worker/pool.js';
 import type { Diagnostics, HostParams, HostScene, HostSnapshot, TopologyBody, Transport } from '../../worker/protocol.js';
 import { propertyOfAttribute, type Problem } from '../checks.js';
 import type { SceneHost } from '../scene-host.js';
@@ -43,8 +44,6 @@ export function checkSteps(n: unknown): void {
 let callTimeoutMs = 8000;
 /** PhysicsSceneElement.workerFactory. */
 let workerFactory: (() => Worker) | null = null;
-/** The longest delay setTimeout takes (2³¹ − 1 ms); a longer one fires at once. */
-const MAX_TIMER_MS = 2147483647;
 
 /**
  * A physics scene. Its child elements (`<physics-box>`, `<physics-circle>`, `<physics-rope>`, …) declare bodies; the
@@ -64,7 +63,7 @@ const MAX_TIMER_MS = 2147483647;
  *
  * @fires physics-ready - The engine runs and the scene is loaded (detail: `{mode, transport}`).
  * @fires physics-collision - Two bodies began touching (detail: `{a, b, normal, depth, speed}`, a and b are the body elements, b null for the view's floor and walls). Sent only while a listener is registered on the scene itself (or `collision-events` is set): a listener added before the element is defined (by a script that runs before this library's) is not seen, so set `collision-events` then.
- * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b}`, with `normal`, `depth` and `speed` 0).
+ * @fires physics-collision-end - Two bodies stopped touching (detail: `{a, b, normal, depth, speed}` as physics-collision's, with normal `{x: 0, y: 0}`, depth and speed 0).
  * @fires physics-error - Bad markup or a failing engine (detail: `{element, attribute, value, message}`); the rest of the scene keeps running. A dead engine worker is reported with `attribute` "worker" and restarted (up to `max-restarts` times a minute).
  *
  * @csspart stage - The box that holds the canvas.
@@ -92,10 +91,7 @@ export class PhysicsSceneElement extends LitElement {
 
   static set workerFactory(make: (() => Worker) | null) {
     // Anything else failed later, at the next scene's start ("Invalid value used as weak map key").
-    if (make !== null && make !== undefined && typeof make !== 'function') {
-      throw new TypeError(`PhysicsSceneElement.workerFactory must be a function that returns a Worker, or null, got ${typeof make === 'string' ? JSON.stringify(make) : String(make)}`);
-    }
-    workerFactory = make ?? null;
+    workerFactory = checkWorkerFactory(make);
   }
   /**
    * Milliseconds an engine call (and the worker's start) may take before it fails with `physics-error` (> 0, at most
@@ -181,7 +177,7 @@ export class PhysicsSceneElement extends LitElement {
    * Custom p5 drawing, called each time the scene draws (every new frame while it moves; `view.requestDraw()` asks for
    * one more) with a DrawView (the p5 instance, the 2D context, interpolated particle positions and poses, the topology
    * and the world → canvas mapping), after the default drawing ("over") or instead ("replace"). See docs/drawing.md.
-   * A function or null (a TypeError otherwise); a hook that throws is reported with one console warning, not one a
+   * A function or null (undefined counts as null; a TypeError otherwise); a hook that throws is reported with one console warning, not one a
    * frame.
    */
   @property({ attribute: false, noAccessor: true })
