@@ -78,32 +78,31 @@ export function polygonManifold(a: Shape, b: Shape, out: Manifold, margin = 0): 
   return manifoldOf(a, b, out, margin);
 }
 
+/** A bounding volume of the shape written into `out`, once both are checked. */
+function volume<T>(s: Shape, out: T, type: abstract new () => T, typeName: string, of: (s: Shape, out: T) => T): T {
+  shape(s, 'shape');
+  result('out', out, type, typeName);
+  return of(s, out);
+}
+
 /** The shape's axis-aligned bounding box, radius included. */
 export function aabbOf(s: Shape, out: AABB = new AABB()): AABB {
-  shape(s, 'shape');
-  result('out', out, AABB, 'AABB');
-  return aabbOfShape(s, out);
+  return volume(s, out, AABB, 'AABB', aabbOfShape);
 }
 
 /** The least circle around the shape. */
 export function boundingCircleOf(s: Shape, out: BoundingCircle = new BoundingCircle()): BoundingCircle {
-  shape(s, 'shape');
-  result('out', out, BoundingCircle, 'BoundingCircle');
-  return boundingCircleOfShape(s, out);
+  return volume(s, out, BoundingCircle, 'BoundingCircle', boundingCircleOfShape);
 }
 
 /** The least-area oriented box around the shape. */
 export function obbOf(s: Shape, out: OBB = new OBB()): OBB {
-  shape(s, 'shape');
-  result('out', out, OBB, 'OBB');
-  return obbOfShape(s, out);
+  return volume(s, out, OBB, 'OBB', obbOfShape);
 }
 
 /** The shape's 8-direction discrete oriented polytope. */
 export function kdopOf(s: Shape, out: KDOP8 = new KDOP8()): KDOP8 {
-  shape(s, 'shape');
-  result('out', out, KDOP8, 'KDOP8');
-  return kdopOfShape(s, out);
+  return volume(s, out, KDOP8, 'KDOP8', kdopOfShape);
 }
 
 /** True when (x, y) is inside the shape or on its outline. */
