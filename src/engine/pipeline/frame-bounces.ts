@@ -10,8 +10,8 @@ import { grown } from '../table.js';
 /** Gauss–Seidel passes over a substep's bounces (a box landing flat converges by 1/9 a pass). */
 const PASSES = 8;
 
-/** A frame's reals in FrameBounces.frame: mass, centre, inertia about it, velocity, angular velocity. */
-const FRAME_FIELDS = 7;
+/** A frame's reals in FrameBounces.frame: mass, centre, inertia about it, velocity, angular velocity, angular momentum. */
+const FRAME_FIELDS = 8;
 const MASS = 0;
 const CX = 1;
 const CY = 2;
@@ -19,6 +19,7 @@ const INERTIA = 3;
 const VX = 4;
 const VY = 5;
 const OMEGA = 6;
+const SPIN = 7;
 
 /**
  * The bounces the velocity passes applied in the current substep (particle contacts, the walls, rigid contacts):
@@ -38,6 +39,9 @@ export class FrameBounces {
   target = new Float64Array(8);
   /** The impulse this phase added (never below 0: it pushes only). */
   impulse = new Float64Array(8);
+  /** Per bounce: its sides' separation along n as the position pass left it, and the push that restores it. */
+  separation = new Float64Array(8);
+  shift = new Float64Array(8);
 
   /** Per particle row: its frame's index in `frame` while the phase runs (−1: none; −2: a body that is no frame). */
   frameOf = new Int32Array(16).fill(-1);
@@ -53,7 +57,7 @@ export class FrameBounces {
   add(): number {
     const k = this.count++;
     if (k >= this.nx.length) {
-      for (const name of ['nx', 'ny', 'target', 'impulse'] as const) this[name] = grown(this[name], k + 1);
+      for (const name of ['nx', 'ny', 'target', 'impulse', 'separation', 'shift'] as const) this[name] = grown(this[name], k + 1);
       for (const name of ['p0', 'p1'] as const) this[name] = grown(this[name], 2 * this.nx.length);
       for (const name of ['alpha', 'armX', 'armY'] as const) this[name] = grown(this[name], 2 * this.nx.length);
     }
@@ -73,6 +77,13 @@ export function setSide(b: FrameBounces, k: number, s: 0 | 1, p0: number, p1: nu
 
 /** Velocity of side j's point (written to `sv`), its inverse mass along n, and impulses along n. */
 const sv = new Float64Array(2);
+/**
+ * A result (a separation, an inverse mass) out of, and an impulse into, the helpers below: V8 boxes a double passed
+ * to or returned from a call it does not inline.
+ */
+const io = new Float64Array(2);
+/** The direction inverseMass() and push() act along (a bounce's normal). */
+const dir = new Float64Array(2);
 
 /**
  * Solves the substep's bounces again with every particle frame in them as one rigid body, and clears the list. A
@@ -91,25 +102,48 @@ export function solveFrameBounces(b: FrameBounces, p: ParticleStore, bodies: Bod
     if (b.p0[j] >= 0) loadFrame(b, p, bodies, b.p0[j]);
   }
   if (b.frameCount > 0) {
+    // Each frame back on the shape it had at the substep's start (its centre and mean turn kept): the position pass
+    // moved the corners that touched alone, and the sticks, in their one iteration, sprang that squeeze back out as
+    // speed in the next substeps, against the other side: with e = 1 each bounce rose about 0.005 short.
+    for (let k = 0; k < b.count; k++) {
+      separationOf(b, p, k);
+      b.separation[k] = io[0];
+    }
+    for (let f = 0; f < b.frameCount; f++) fitFrame(b, p, bodies.particles[b.frameSlot[f]], f * FRAME_FIELDS);
     b.impulse.fill(0, 0, b.count);
+    for (let pass = 0; pass < PASSES; pass++) for (let k = 0; k < b.count; k++) solveNormal(b, p, k);
+    // The overlap the fit gave back (the squeeze was the position pass's push) is pushed out again by moving the
+    // frames, as rigid bodies, after the velocities are taken: it adds no speed.
+    b.shift.fill(0, 0, b.count);
     for (let pass = 0; pass < PASSES; pass++) {
       for (let k = 0; k < b.count; k++) {
         const j0 = 2 * k;
         const j1 = j0 + 1;
-        if (!inFrame(b, j0) && !inFrame(b, j1)) continue;
-        const nx = b.nx[k];
-        const ny = b.ny[k];
-        sideVelocity(b, p, j1);
-        let vn = sv[0] * nx + sv[1] * ny;
-        sideVelocity(b, p, j0);
-        vn -= sv[0] * nx + sv[1] * ny;
-        const w = inverseMass(b, p, j0, nx, ny) + inverseMass(b, p, j1, nx, ny);
+        const f0 = inFrame(b, j0);
+        const f1 = inFrame(b, j1);
+        if (!f0 && !f1) continue;
+        separationOf(b, p, k);
+        const error = io[0] - b.separation[k];
+        dir[0] = b.nx[k];
+        dir[1] = b.ny[k];
+        let w = 0;
+        if (f0) {
+          inverseMass(b, p, j0);
+          w += io[0];
+        }
+        if (f1) {
+          inverseMass(b, p, j1);
+          w += io[0];
+        }
         if (w === 0) continue;
-        const was = b.impulse[k];
-        const now = Math.max(0, was + (b.target[k] - vn) / w);
-        b.impulse[k] = now;
-        push(b, p, j1, now - was, nx, ny);
-        push(b, p, j0, was - now, nx, ny);
+        const was = b.shift[k];
+        const now = Math.max(0, was - error / w);
+        if (now === was) continue;
+        b.shift[k] = now;
+        io[1] = now - was;
+        if (f1) shiftFrame(b, p, bodies, j1);
+        io[1] = was - now;
+        if (f0) shiftFrame(b, p, bodies, j0);
       }
     }
     for (let f = 0; f < b.frameCount; f++) writeBack(b, p, bodies.particles[b.frameSlot[f]], f * FRAME_FIELDS);
@@ -179,6 +213,124 @@ function loadFrame(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry, i: n
   b.frame[o + VX] = ux;
   b.frame[o + VY] = uy;
   b.frame[o + OMEGA] = inertia > 0 ? spin / inertia : 0;
+  b.frame[o + SPIN] = spin;
+}
+
+/**
+ * The frame's particles onto the shape they had at the substep's start (px, py), turned by the mean turn since
+ * (the best fit by mass) about the centre they have now; its inertia for that shape, and its angular velocity for
+ * the angular momentum it had.
+ */
+function fitFrame(b: FrameBounces, p: ParticleStore, rows: Int32Array, o: number): void {
+  const { x, y, px, py, invMass } = p;
+  const m = b.frame[o + MASS];
+  const cx = b.frame[o + CX];
+  const cy = b.frame[o + CY];
+  let qx = 0;
+  let qy = 0;
+  for (const r of rows) {
+    const mr = 1 / invMass[r];
+    qx += mr * px[r];
+    qy += mr * py[r];
+  }
+  qx /= m;
+  qy /= m;
+  let dot = 0;
+  let cross = 0;
+  for (const r of rows) {
+    const mr = 1 / invMass[r];
+    const ax = px[r] - qx;
+    const ay = py[r] - qy;
+    const bx = x[r] - cx;
+    const by = y[r] - cy;
+    dot += mr * (ax * bx + ay * by);
+    cross += mr * (ax * by - ay * bx);
+  }
+  const len = Math.sqrt(dot * dot + cross * cross);
+  if (!(len > 0)) return;
+  const c = dot / len;
+  const s = cross / len;
+  let inertia = 0;
+  for (const r of rows) {
+    const ax = px[r] - qx;
+    const ay = py[r] - qy;
+    x[r] = cx + c * ax - s * ay;
+    y[r] = cy + s * ax + c * ay;
+    inertia += (ax * ax + ay * ay) / invMass[r];
+  }
+  b.frame[o + INERTIA] = inertia;
+  b.frame[o + OMEGA] = inertia > 0 ? b.frame[o + SPIN] / inertia : 0;
+}
+
+/** Bounce k's normal impulse (it only pushes): its sides' normal speed brought to its target. */
+function solveNormal(b: FrameBounces, p: ParticleStore, k: number): void {
+  const j0 = 2 * k;
+  const j1 = j0 + 1;
+  if (!inFrame(b, j0) && !inFrame(b, j1)) return;
+  const nx = b.nx[k];
+  const ny = b.ny[k];
+  dir[0] = nx;
+  dir[1] = ny;
+  sideVelocity(b, p, j1);
+  let vn = sv[0] * nx + sv[1] * ny;
+  sideVelocity(b, p, j0);
+  vn -= sv[0] * nx + sv[1] * ny;
+  inverseMass(b, p, j0);
+  let w = io[0];
+  inverseMass(b, p, j1);
+  w += io[0];
+  if (w === 0) return;
+  const was = b.impulse[k];
+  const now = Math.max(0, was + (b.target[k] - vn) / w);
+  b.impulse[k] = now;
+  io[1] = now - was;
+  push(b, p, j1);
+  io[1] = was - now;
+  push(b, p, j0);
+}
+
+/** Bounce k's separation along n into io[0]: side 1's point less side 0's (the world's counts as 0: only changes are read). */
+function separationOf(b: FrameBounces, p: ParticleStore, k: number): void {
+  const nx = b.nx[k];
+  const ny = b.ny[k];
+  let s = 0;
+  if (b.p0[2 * k + 1] >= 0) {
+    pointOf(b, p, 2 * k + 1);
+    s += sv[0] * nx + sv[1] * ny;
+  }
+  if (b.p0[2 * k] >= 0) {
+    pointOf(b, p, 2 * k);
+    s -= sv[0] * nx + sv[1] * ny;
+  }
+  io[0] = s;
+}
+
+/** Side j's frame moved as a rigid body by a positional push io[1] along n at its point (its centre and turn). */
+function shiftFrame(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry, j: number): void {
+  const P = io[1];
+  const nx = b.nx[j >> 1];
+  const ny = b.ny[j >> 1];
+  const f = b.frameOf[b.p0[j]];
+  const o = f * FRAME_FIELDS;
+  pointOf(b, p, j);
+  const cx = b.frame[o + CX];
+  const cy = b.frame[o + CY];
+  const rn = (sv[0] - cx) * ny - (sv[1] - cy) * nx;
+  const im = 1 / b.frame[o + MASS];
+  const dx = im * P * nx;
+  const dy = im * P * ny;
+  const turn = (rn * P) / b.frame[o + INERTIA];
+  const c = Math.cos(turn);
+  const s = Math.sin(turn);
+  const { x, y } = p;
+  for (const r of bodies.particles[b.frameSlot[f]]) {
+    const rx = x[r] - cx;
+    const ry = y[r] - cy;
+    x[r] = cx + dx + c * rx - s * ry;
+    y[r] = cy + dy + s * rx + c * ry;
+  }
+  b.frame[o + CX] = cx + dx;
+  b.frame[o + CY] = cy + dy;
 }
 
 /** Side j's contact point: its edge point, or its row plus the arm. */
@@ -225,27 +377,38 @@ function sideVelocity(b: FrameBounces, p: ParticleStore, j: number): void {
   }
 }
 
-function inverseMass(b: FrameBounces, p: ParticleStore, j: number, nx: number, ny: number): number {
+/** Side j's inverse mass along `dir`, at its point, into io[0]. */
+function inverseMass(b: FrameBounces, p: ParticleStore, j: number): void {
+  const nx = dir[0];
+  const ny = dir[1];
   const q0 = b.p0[j];
-  if (q0 < 0) return 0;
+  if (q0 < 0) {
+    io[0] = 0;
+    return;
+  }
   const f = b.frameOf[q0];
   if (f >= 0) {
     const o = f * FRAME_FIELDS;
     pointOf(b, p, j);
     const rn = (sv[0] - b.frame[o + CX]) * ny - (sv[1] - b.frame[o + CY]) * nx;
-    return 1 / b.frame[o + MASS] + (rn * rn) / b.frame[o + INERTIA];
+    io[0] = 1 / b.frame[o + MASS] + (rn * rn) / b.frame[o + INERTIA];
+    return;
   }
   const q1 = b.p1[j];
   if (q1 >= 0) {
     const a = b.alpha[j];
-    return (1 - a) * (1 - a) * p.invMass[q0] + a * a * p.invMass[q1];
+    io[0] = (1 - a) * (1 - a) * p.invMass[q0] + a * a * p.invMass[q1];
+    return;
   }
   const rn = b.armX[j] * ny - b.armY[j] * nx;
-  return p.invMass[q0] + p.invInertia[q0] * rn * rn;
+  io[0] = p.invMass[q0] + p.invInertia[q0] * rn * rn;
 }
 
-/** Impulse P along n on side j. */
-function push(b: FrameBounces, p: ParticleStore, j: number, P: number, nx: number, ny: number): void {
+/** Impulse io[1] along `dir` on side j. */
+function push(b: FrameBounces, p: ParticleStore, j: number): void {
+  const P = io[1];
+  const nx = dir[0];
+  const ny = dir[1];
   const q0 = b.p0[j];
   if (q0 < 0 || P === 0) return;
   const f = b.frameOf[q0];
