@@ -132,20 +132,29 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
     const i = hits.list[k];
     const body = owner.ownerOf(i);
     const e = body >= 0 ? restitution[body] : 0;
+    // A particle frame's corner that hits with e = 0 stops, and its frame with it (frame-bounces.ts): stopped alone,
+    // the corner stood while the rest of the frame came on, and the frame rebounded at a quarter of its approach.
+    const stop = e === 0 && bounces.frameRow[i] === 1;
     // The speed each wall sends it off at (NaN: no bounce off it).
     let vx = NaN;
     let vy = NaN;
-    if (e > 0 && approachX[i] === approachX[i]) {
+    if ((e > 0 || stop) && approachX[i] === approachX[i]) {
       hit[0] = approachX[i];
       hit[1] = sideX[i] * motion[0];
       impactInSubstep(hits.overlapX, i, motion);
-      if (hit[0] < -BOUNCE_THRESHOLD) vx = sideX[i] * (-e * hit[0] + hit[1]);
+      if (hit[0] < -BOUNCE_THRESHOLD) {
+        if (stop) wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, true);
+        else vx = sideX[i] * (-e * hit[0] + hit[1]);
+      }
     }
-    if (e > 0 && approachY[i] === approachY[i]) {
+    if ((e > 0 || stop) && approachY[i] === approachY[i]) {
       hit[0] = approachY[i];
       hit[1] = sideY[i] * motion[1];
       impactInSubstep(hits.overlapY, i, motion);
-      if (hit[0] < -BOUNCE_THRESHOLD) vy = sideY[i] * (-e * hit[0] + hit[1]);
+      if (hit[0] < -BOUNCE_THRESHOLD) {
+        if (stop) wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, true);
+        else vy = sideY[i] * (-e * hit[0] + hit[1]);
+      }
     }
     // Coulomb's friction on a bounce's impulse, along the wall (keepInBounds' covered the push out of the overlap
     // only: a ball bouncing at 45° kept 7–12.6 of its 14.1 sideways, μ 0.5, e 1). Into a corner, what runs along
@@ -153,12 +162,12 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
     if (vx === vx) {
       if (friction > 0 && vy !== vy) p.vy[i] -= frictionShift(p.vy[i], friction * Math.abs(vx - p.vx[i]));
       p.vx[i] = vx;
-      wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1);
+      wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, false);
     }
     if (vy === vy) {
       if (friction > 0 && vx !== vx) p.vx[i] -= frictionShift(p.vx[i], friction * Math.abs(vy - p.vy[i]));
       p.vy[i] = vy;
-      wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1);
+      wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, false);
     }
     approachX[i] = NaN;
     approachY[i] = NaN;
@@ -166,12 +175,15 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
   hits.count = 0;
 }
 
-/** Particle i's bounce off a wall on `axis` (x 0, y 1; `side` +1 the low wall), for its frame (frame-bounces.ts). */
-function wallBounce(bounces: FrameBounces, p: ParticleStore, i: number, axis: 0 | 1, side: 1 | -1): void {
+/**
+ * Particle i's bounce off a wall on `axis` (x 0, y 1; `side` +1 the low wall), for its frame (frame-bounces.ts): at
+ * the normal speed it has now, or (`stop`, e = 0) at rest along the wall's normal.
+ */
+function wallBounce(bounces: FrameBounces, p: ParticleStore, i: number, axis: 0 | 1, side: 1 | -1, stop: boolean): void {
   const k = bounces.add();
   setSide(bounces, k, 0, -1, -1);
   setSide(bounces, k, 1, i, -1);
   bounces.nx[k] = axis === 0 ? side : 0;
   bounces.ny[k] = axis === 1 ? side : 0;
-  bounces.target[k] = side * (axis === 0 ? p.vx[i] : p.vy[i]);
+  bounces.target[k] = stop ? 0 : side * (axis === 0 ? p.vx[i] : p.vy[i]);
 }

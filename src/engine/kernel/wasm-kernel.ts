@@ -629,18 +629,20 @@ export class WasmKernel {
 
 /**
  * Whether the lanes take the step's rigid contacts: 0 no, 1 as single points (all lone), 2 by manifold (some pairs).
- * Each point between two rows or with the world (no particle-built edge point), restitution 0, no shock sweep; a
+ * Each point between two rows or with the world (no particle-built edge point, no particle frame's corner: its stops
+ * are solved again in pipeline/frame-bounces.ts), restitution 0, no shock sweep; a
  * pair's partner follows it (the same bodies); by manifold only when no side is round;
  * not while the step measures its rims' arcs exactly
  * (contacts.ts FAST_TURN: the lanes' series falls short there).
  */
 function lanesFit(c: RigidContacts): 0 | 1 | 2 {
   if (c.shockCount > 0 || c.edgePoints > 0 || arcsExact()) return 0;
-  const { pair, b2, restitution, a, b, radA, radB } = c;
+  const { pair, b2, restitution, a, b, radA, radB, frameRow } = c;
   let fit: 0 | 1 | 2 = 1;
   let round = false;
   for (let i = 0, n = c.count; i < n; i++) {
-    if (b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0) return 0;
+    // A particle frame's corner: its stops are solved again with the frame as one body (pipeline/frame-bounces.ts).
+    if (b2[i] >= 0 || restitution[i] !== 0 || a[i] < 0 || (b[i] >= 0 && frameRow[b[i]] === 1)) return 0;
     if (radA[i] > 0 || radB[i] > 0) round = true;
     if (pair[i] === 1) {
       const j = i + 1;

@@ -390,6 +390,7 @@ function hitSpeed(c: Contacts, p: ParticleStore, i: number, alpha: number, nx: n
 export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number, bounces: FrameBounces): void {
   const { vx, vy, invMass } = p;
   const { v, e0, e1, lambda, restitution, friction, normalSpeed, solvedNx, solvedNy, solvedAlpha } = c;
+  const frameRow = bounces.frameRow;
   for (let i = 0, n = c.count; i < n; i++) {
     if (lambda[i] <= 0) continue;
     // The direction and edge fraction of this substep's correction: the positions barely moved since. A bouncing
@@ -428,9 +429,11 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number,
     // target of 0 pulled it back whenever an overlap left for later substeps (maxPushSpeed) made it act again, and a
     // Newton's cradle of particle balls 1.001 apart shared each hit (1.5 and 1.5 where 0 and 3).
     if (!impact && bouncy && approach > 0) target = vn < 0 ? 0 : vn < approach ? vn : approach;
-    if (impact && bouncy) {
-      target = -restitution[i] * approach + (approach === normalSpeed[i] ? c.lift[i] : 0);
-      // For a particle frame on either side (frame-bounces.ts).
+    if (bouncy && impact) target = -restitution[i] * approach + (approach === normalSpeed[i] ? c.lift[i] : 0);
+    // For a particle frame on either side (frame-bounces.ts): its bounce, or with e = 0 its stop (target 0). Stopped
+    // here alone, the corners that touched stood still while the rest of the frame came on, and its sticks sprang
+    // the squeeze back out: two frames parted at a quarter of their approach.
+    if (impact && (bouncy || frameRow[iv] === 1 || frameRow[i0] === 1 || (i1 >= 0 && frameRow[i1] === 1))) {
       const k = bounces.add();
       setSide(bounces, k, 0, i0, i1);
       bounces.alpha[2 * k] = i1 >= 0 ? alpha : 0;

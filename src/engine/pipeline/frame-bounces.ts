@@ -2,7 +2,9 @@
 // The velocity passes bounce the corner that touched alone; the sticks then share its new speed with the corners
 // still falling, and a frame with e = 1 dropped from 2 rose to 0.03. After the passes, this phase solves the
 // substep's bounces again with each frame that took part as one rigid body (its particles' mass, centre, inertia,
-// momentum and angular momentum), so the impulse reaches the whole frame as it reaches a rigid box.
+// momentum and angular momentum), so the impulse reaches the whole frame as it reaches a rigid box. With e = 0 the
+// velocity passes stop the corner that touched alone, likewise: they note a frame's impacts (approach faster than
+// BOUNCE_THRESHOLD) as bounces with target 0.
 import { ParticleFlag, type ParticleStore } from '../particles.js';
 import type { BodyRegistry } from '../body-registry.js';
 import { grown } from '../table.js';
@@ -22,7 +24,8 @@ const OMEGA = 6;
 const SPIN = 7;
 
 /**
- * The bounces the velocity passes applied in the current substep (particle contacts, the walls, rigid contacts):
+ * The bounces the velocity passes applied in the current substep (particle contacts, the walls, rigid contacts), and
+ * their stops (e = 0) of impacts on particle frames:
  * per bounce its two sides, the normal n from side 0 to side 1, and the target normal speed of side 1 relative to
  * side 0 along n. Side s of bounce k is at 2k + s: up to two rows p0, p1 (p1 = −1: one; p0 = −1: the world) with p1's
  * weight `alpha` on an edge, and the contact point's arm from a rigid row's centre (0 for a particle).
@@ -42,6 +45,12 @@ export class FrameBounces {
   /** Per bounce: its sides' separation along n as the position pass left it, and the push that restores it. */
   separation = new Float64Array(8);
   shift = new Float64Array(8);
+
+  /**
+   * Per particle row: 1 when its body may be a frame (kind 'rigid', two rows or more, none a rigid row; rebuilt with
+   * the topology). The velocity passes note stops (e = 0) only where a frame takes part; movability is judged here.
+   */
+  frameRow = new Uint8Array(16);
 
   /** Per particle row: its frame's index in `frame` while the phase runs (−1: none; −2: a body that is no frame). */
   frameOf = new Int32Array(16).fill(-1);
@@ -104,7 +113,8 @@ export function solveFrameBounces(b: FrameBounces, p: ParticleStore, bodies: Bod
   if (b.frameCount > 0) {
     // Each frame back on the shape it had at the substep's start (its centre and mean turn kept): the position pass
     // moved the corners that touched alone, and the sticks, in their one iteration, sprang that squeeze back out as
-    // speed in the next substeps, against the other side: with e = 1 each bounce rose about 0.005 short.
+    // speed in the next substeps, against the other side. With e = 0 two frames parted at a quarter of their
+    // approach; with e = 1 each bounce rose about 0.005 short.
     for (let k = 0; k < b.count; k++) {
       separationOf(b, p, k);
       b.separation[k] = io[0];

@@ -81,6 +81,7 @@ export function rebuildTopology(ctx: StepContext): void {
   for (let slot = 0; slot < high; slot++) if (apart[slot] !== (before[slot] ?? 0)) ctx.rigidShapes.staticsMoved = true;
   sleep.setLinks(links);
   listRigidRows(ctx);
+  markFrameRows(ctx);
   rebuildFreeSpin(ctx);
   let free = 0;
   let movable = 0;
@@ -134,6 +135,27 @@ function listRigidRows(ctx: StepContext): void {
     ctx.rigidRows[ctx.rigidCount++] = i;
     if (type === BodyType.Kinematic && p.flags[i] & ParticleFlag.Kinematic) ctx.kinematicRows[ctx.kinematicCount++] = i;
   }
+}
+
+/**
+ * The rows of bodies that may be particle frames (kind 'rigid', two rows or more, none a rigid row), for the velocity
+ * passes: they note the stops (e = 0) of these for the frames' bounces (frame-bounces.ts).
+ */
+function markFrameRows(ctx: StepContext): void {
+  const { ids, particles, kind } = ctx.bodies;
+  const p = ctx.particles;
+  const fb = ctx.frameBounces;
+  fb.frameRow = grown(fb.frameRow, p.count);
+  fb.frameRow.fill(0);
+  for (let s = 0; s < ids.high; s++) {
+    if (!ids.alive[s] || kind[s] !== 'rigid') continue;
+    const rows = particles[s];
+    if (rows.length < 2) continue;
+    let frame = true;
+    for (const r of rows) if (p.flags[r] & ParticleFlag.Rigid) frame = false;
+    if (frame) for (const r of rows) fb.frameRow[r] = 1;
+  }
+  ctx.rigidContacts.frameRow = fb.frameRow;
 }
 
 /** A key for an unordered pair of body slots. */

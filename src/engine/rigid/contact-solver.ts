@@ -25,7 +25,10 @@ const lev = new Float64Array(2);
 /** Per point at offset o (0 or 2) of the velocity pass: [normal speed, target]. */
 const vel = new Float64Array(4);
 
-/** Per point at offset o of the velocity pass (vel's), 1 when its target is a bounce (target(), settle()). */
+/**
+ * Per point at offset o of the velocity pass (vel's), 1 when its target is a bounce, 2 when it is the stop (e = 0) of
+ * an impact on a particle frame (target(), settle()).
+ */
 const bounce = new Uint8Array(4);
 /** Where the velocity pass notes its bounces (solveRigidContactVelocities' argument; null: nowhere). */
 let bounces: FrameBounces | null = null;
@@ -249,7 +252,7 @@ function touch(c: RigidContacts, r: BodyRows, i: number): void {
     keepApproach(c, r, i, 1);
     const j = c.pair[i] === 1 ? i + 1 : i > 0 && c.pair[i - 1] === 1 ? i - 1 : -1;
     if (j >= 0) keepApproach(c, r, j, 0);
-  }
+  } else if (c.b[i] >= 0 && c.frameRow[c.b[i]] === 1) keepApproach(c, r, i, 1);
 }
 
 /**
@@ -1010,6 +1013,9 @@ function target(c: RigidContacts, i: number, o: number, acted: boolean): void {
       t = -e * approach + (kept === kept ? c.lift[i] : 0);
       bounce[o] = 1;
     } else if (acted && approach > 0 && kept > 0) t = approach;
+  } else if (c.approach[i] < -BOUNCE_THRESHOLD) {
+    // A particle frame's point (only they keep an approach with e = 0: touch()) stops, and the frame with it.
+    bounce[o] = 2;
   }
   vel[o + 1] = t;
 }
@@ -1018,7 +1024,7 @@ function target(c: RigidContacts, i: number, o: number, acted: boolean): void {
 function settle(c: RigidContacts, i: number, o: number): void {
   if (bounce[o] === 0) return;
   c.approach[i] = Infinity;
-  c.lift[i] = vel[o + 1];
+  if (bounce[o] === 1) c.lift[i] = vel[o + 1];
   // For a particle frame on side B (frame-bounces.ts).
   const b = bounces;
   if (b === null) return;
@@ -1100,7 +1106,8 @@ export function solveRigidContactVelocities(c: RigidContacts, r: BodyRows, h: nu
     const e = restitution[i];
     bounce[0] = 0;
     bounce[2] = 0;
-    if (e > 0) {
+    // (A particle frame's points keep an approach with e = 0 too: its stop, target() and settle().)
+    if (e > 0 || (ib >= 0 && c.frameRow[ib] === 1)) {
       if (use0) {
         vel[0] = v0;
         target(c, i, 0, acted0);

@@ -128,6 +128,11 @@ export class RigidContacts extends Table {
    * only they need the per-substep prepare pass.
    */
   edgePoints = 0;
+  /**
+   * Per particle row, 1 for a particle frame's (pipeline/frame-bounces.ts FrameBounces.frameRow, set with the
+   * topology): a point on a frame keeps its approach with e = 0 too, and its stop is solved again with the frame as one body.
+   */
+  frameRow = new Uint8Array(0);
   shockOrder = new Int32Array(16);
   level = new Int32Array(16);
   /** Manifolds per level (a counting sort's buckets). */

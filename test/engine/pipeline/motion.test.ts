@@ -259,6 +259,80 @@ describe('pipeline: motion', () => {
       }
   });
 
+  it('a particle frame with e = 0 stops as one body without gravity: against a frame (equal and unequal masses), a rigid disc, a static rigid or particle wall and the bounds, momentum kept (both kernels)', () => {
+    // Only the corners that touched were stopped, and the sticks, in their one iteration, sprang the frame's squeeze
+    // back out against the other side: two frames parted at a quarter of their approach (1.875 and 3.125 where 2.5
+    // and 2.5) at 1, 5 and 20 units/s, an eighth at 60, and a frame left a wall at a quarter of its speed.
+    const mean = (world: World, body: number) => {
+      const p = world.particles;
+      let m = 0;
+      let px = 0;
+      for (const i of world.bodyParticleIndices(body)) {
+        m += 1 / p.invMass[i];
+        px += p.vx[i] / p.invMass[i];
+      }
+      return px / m;
+    };
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const v of [1, 5, 20, 60]) {
+        const steps = 60 + Math.ceil(240 / v);
+        const at = `${kernel}, ${v} units/s`;
+        for (const heavy of [1, 3]) {
+          const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+          const a = createBox(world, { x: -3, y: 0, width: 1, height: 1, model: 'particles', mass: 1, friction: 0, vx: v });
+          const b = createBox(world, { x: 0, y: 0, width: 1, height: 1, model: 'particles', mass: heavy, friction: 0 });
+          for (let n = 0; n < steps; n++) world.step();
+          const va = mean(world, a.body);
+          const vb = mean(world, b.body);
+          expect(va + heavy * vb, `${at}, frame of ${heavy}: momentum`).to.be.closeTo(v, 1e-9 * v);
+          expect(va, `${at}, frame of ${heavy}: the frame`).to.be.closeTo(v / (1 + heavy), 0.01 * v);
+          expect(vb, `${at}, frame of ${heavy}: the other`).to.be.closeTo(v / (1 + heavy), 0.01 * v);
+        }
+        {
+          // A rigid disc of mass 3 into a frame of mass 1: both go on at 3/4 of its speed.
+          const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+          const disc = createCircle(world, { x: -3, y: 0, radius: 0.5, mass: 3, friction: 0, vx: v });
+          const frame = createBox(world, { x: 0, y: 0, width: 1, height: 1, model: 'particles', mass: 1, friction: 0 });
+          for (let n = 0; n < steps; n++) world.step();
+          const vd = world.getVelocity(disc.particles[0]).x;
+          const vf = mean(world, frame.body);
+          expect(3 * vd + vf, `${at}, disc: momentum`).to.be.closeTo(3 * v, 1e-9 * v);
+          expect(vd, `${at}: the disc`).to.be.closeTo(0.75 * v, 0.01 * v);
+          expect(vf, `${at}: the frame the disc hit`).to.be.closeTo(0.75 * v, 0.01 * v);
+        }
+        for (const wall of ['rigid', 'particles', 'bounds'] as const) {
+          const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: false, bounds: wall === 'bounds' ? { minX: -10, maxX: 0.5, minY: -10, maxY: 10 } : null });
+          if (wall !== 'bounds') createBox(world, { x: 1, y: 0, width: 1, height: 4, static: true, model: wall, friction: 0 });
+          const frame = createBox(world, { x: -3, y: 0, width: 1, height: 1, model: 'particles', mass: 1, friction: 0, vx: v });
+          for (let n = 0; n < steps; n++) world.step();
+          expect(mean(world, frame.body), `${at}, ${wall} wall`).to.be.closeTo(0, 0.01 * v);
+        }
+      }
+  });
+
+  it('a particle frame with e = 0 landing flat stays down: dropped to hit at 5 units/s on the bounds, a rigid and a particle floor, it rises less than 1 mm (both kernels)', () => {
+    // Its sticks sprang the squeeze of the landing back out: it hopped 7.6 cm on the bounds and 2.6 cm on a floor.
+    const g = 9.81;
+    for (const kernel of ['js', 'wasm'] as const)
+      for (const floor of ['bounds', 'rigid', 'particles'] as const) {
+        const world = new World({ kernel, sleeping: false, gravity: { x: 0, y: g }, bounds: floor === 'bounds' ? { minX: -10, maxX: 10, minY: -20, maxY: 0 } : null });
+        if (floor !== 'bounds') createBox(world, { x: 0, y: 0.5, width: 20, height: 1, static: true, model: floor, restitution: 0 });
+        const box = createBox(world, { x: 0, y: -0.5 - 25 / (2 * g), width: 1, height: 1, model: 'particles', restitution: 0 });
+        const p = world.particles;
+        let landed = false;
+        let hop = 0;
+        for (let n = 0; n < 120; n++) {
+          world.step();
+          let low = -Infinity;
+          for (const i of world.bodyParticleIndices(box.body)) low = Math.max(low, p.y[i]);
+          if (low > -2e-3) landed = true;
+          if (landed) hop = Math.max(hop, -(world.bodyCentroid(box.body).y + 0.5));
+        }
+        expect(landed, `${kernel}, ${floor}: landed`).to.equal(true);
+        expect(hop, `${kernel}, ${floor}: hop`).to.be.below(1e-3);
+      }
+  });
+
   it("the bounds' side walls and corners bounce a particle ball without gravity at its speed (e = 1) or e times it", () => {
     for (const e of [1, 0.5]) {
       const world = new World({ sleeping: false, gravity: { x: 0, y: 0 }, bounds: { minX: -5, maxX: 5, minY: -5, maxY: 5 } });
