@@ -127,6 +127,7 @@ export function frictionShift(t: number, limit: number): number {
  * h, half], gravity and the substep as impact() takes them. Clears `hits` for the next substep.
  */
 export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { ownerOf(i: number): number }, restitution: Float64Array, friction: number, motion: Float64Array, bounces: FrameBounces): void {
+  wallFriction[0] = friction;
   const { approachX, approachY, sideX, sideY } = hits;
   for (let k = 0; k < hits.count; k++) {
     const i = hits.list[k];
@@ -143,7 +144,7 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
       hit[1] = sideX[i] * motion[0];
       impactInSubstep(hits.overlapX, i, motion);
       if (hit[0] < -BOUNCE_THRESHOLD) {
-        if (stop) wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, true);
+        if (stop) wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, true, wallFriction);
         else vx = sideX[i] * (-e * hit[0] + hit[1]);
       }
     }
@@ -152,7 +153,7 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
       hit[1] = sideY[i] * motion[1];
       impactInSubstep(hits.overlapY, i, motion);
       if (hit[0] < -BOUNCE_THRESHOLD) {
-        if (stop) wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, true);
+        if (stop) wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, true, wallFriction);
         else vy = sideY[i] * (-e * hit[0] + hit[1]);
       }
     }
@@ -162,12 +163,12 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
     if (vx === vx) {
       if (friction > 0 && vy !== vy) p.vy[i] -= frictionShift(p.vy[i], friction * Math.abs(vx - p.vx[i]));
       p.vx[i] = vx;
-      wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, false);
+      wallBounce(bounces, p, i, 0, sideX[i] > 0 ? 1 : -1, false, wallFriction);
     }
     if (vy === vy) {
       if (friction > 0 && vx !== vx) p.vx[i] -= frictionShift(p.vx[i], friction * Math.abs(vy - p.vy[i]));
       p.vy[i] = vy;
-      wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, false);
+      wallBounce(bounces, p, i, 1, sideY[i] > 0 ? 1 : -1, false, wallFriction);
     }
     approachX[i] = NaN;
     approachY[i] = NaN;
@@ -175,15 +176,20 @@ export function bounceOffBounds(hits: WallHits, p: ParticleStore, owner: { owner
   hits.count = 0;
 }
 
+/** The walls' friction, for wallBounce (a double passed to a call V8 does not inline is boxed). */
+const wallFriction = new Float64Array(1);
+
 /**
  * Particle i's bounce off a wall on `axis` (x 0, y 1; `side` +1 the low wall), for its frame (frame-bounces.ts): at
- * the normal speed it has now, or (`stop`, e = 0) at rest along the wall's normal.
+ * the normal speed it has now, or (`stop`, e = 0) at rest along the wall's normal; `friction` [0], the walls'.
  */
-function wallBounce(bounces: FrameBounces, p: ParticleStore, i: number, axis: 0 | 1, side: 1 | -1, stop: boolean): void {
+function wallBounce(bounces: FrameBounces, p: ParticleStore, i: number, axis: 0 | 1, side: 1 | -1, stop: boolean, friction: Float64Array): void {
   const k = bounces.add();
   setSide(bounces, k, 0, -1, -1);
   setSide(bounces, k, 1, i, -1);
   bounces.nx[k] = axis === 0 ? side : 0;
   bounces.ny[k] = axis === 1 ? side : 0;
   bounces.target[k] = stop ? 0 : side * (axis === 0 ? p.vx[i] : p.vy[i]);
+  // Friction with its stop (e = 0) only (frame-bounces.ts).
+  bounces.friction[k] = stop ? friction[0] : 0;
 }

@@ -441,6 +441,8 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number,
       bounces.nx[k] = nx;
       bounces.ny[k] = ny;
       bounces.target[k] = target;
+      // Friction with its stop (e = 0) only (frame-bounces.ts).
+      bounces.friction[k] = bouncy ? 0 : friction[i];
     }
     const dl = (target - vn) / w;
     // An impact's friction, Coulomb's on its whole impulse (from its approach to the target): the position pass

@@ -1042,6 +1042,8 @@ function settle(c: RigidContacts, i: number, o: number): void {
   b.nx[k] = c.nx[i];
   b.ny[k] = c.ny[i];
   b.target[k] = vel[o + 1];
+  // Friction with its stop (e = 0) only (frame-bounces.ts).
+  b.friction[k] = bounce[o] === 2 ? c.friction[i] : 0;
 }
 
 /** Point i's sides get the normal velocity impulse pt[o+1] (per unit inverse mass; prepared levers). */
