@@ -298,22 +298,15 @@ function solveNormal(b: FrameBounces, p: ParticleStore, k: number): void {
   const ny = b.ny[k];
   dir[0] = nx;
   dir[1] = ny;
-  sideVelocity(b, p, j1);
-  let vn = sv[0] * nx + sv[1] * ny;
-  sideVelocity(b, p, j0);
-  vn -= sv[0] * nx + sv[1] * ny;
-  inverseMass(b, p, j0);
-  let w = io[0];
-  inverseMass(b, p, j1);
-  w += io[0];
+  relativeAlong(b, p, j0, j1);
+  const vn = io[0];
+  const w = io[1];
   if (w === 0) return;
   const was = b.impulse[k];
   const now = Math.max(0, was + (b.target[k] - vn) / w);
   b.impulse[k] = now;
   io[1] = now - was;
-  push(b, p, j1);
-  io[1] = was - now;
-  push(b, p, j0);
+  exchange(b, p, j0, j1);
 }
 
 /** Bounce k's friction along t = (−ny, nx): its sides' sliding stopped, within μ × its normal impulse. */
@@ -326,14 +319,9 @@ function solveFriction(b: FrameBounces, p: ParticleStore, k: number): void {
   const ny = b.ny[k];
   dir[0] = -ny;
   dir[1] = nx;
-  sideVelocity(b, p, j1);
-  let vt = sv[1] * nx - sv[0] * ny;
-  sideVelocity(b, p, j0);
-  vt -= sv[1] * nx - sv[0] * ny;
-  inverseMass(b, p, j0);
-  let w = io[0];
-  inverseMass(b, p, j1);
-  w += io[0];
+  relativeAlong(b, p, j0, j1);
+  const vt = io[0];
+  const w = io[1];
   if (w === 0) return;
   const limit = mu * b.impulse[k];
   const was = b.impulseT[k];
@@ -341,8 +329,30 @@ function solveFriction(b: FrameBounces, p: ParticleStore, k: number): void {
   now = now > limit ? limit : now < -limit ? -limit : now;
   b.impulseT[k] = now;
   io[1] = now - was;
+  exchange(b, p, j0, j1);
+}
+
+/** Along `dir` at a bounce's sides j0, j1: side 1's speed less side 0's into io[0], their inverse masses' sum into io[1]. */
+function relativeAlong(b: FrameBounces, p: ParticleStore, j0: number, j1: number): void {
+  const dx = dir[0];
+  const dy = dir[1];
+  sideVelocity(b, p, j1);
+  let v = sv[0] * dx + sv[1] * dy;
+  sideVelocity(b, p, j0);
+  v -= sv[0] * dx + sv[1] * dy;
+  inverseMass(b, p, j0);
+  let w = io[0];
+  inverseMass(b, p, j1);
+  w += io[0];
+  io[0] = v;
+  io[1] = w;
+}
+
+/** The impulse io[1] along `dir` between a bounce's sides: side 1 pushed forward, side 0 back. */
+function exchange(b: FrameBounces, p: ParticleStore, j0: number, j1: number): void {
+  const change = io[1];
   push(b, p, j1);
-  io[1] = was - now;
+  io[1] = -change;
   push(b, p, j0);
 }
 

@@ -15,6 +15,7 @@
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
 import type { StepContext } from './context.js';
+import { eachLinkedPair } from './topology.js';
 
 export class FreeSpin {
   /** Per body slot: 1 when only its own links act on its particles (rebuilt with the topology). */
@@ -46,14 +47,8 @@ export function rebuildFreeSpin(ctx: StepContext): void {
     if (a >= 0) closed[a] = 0;
     if (b >= 0) closed[b] = 0;
   };
-  const { distances: d, springs: sp, angles: g, areas: ar, joints: j, pins } = ctx.constraints;
-  for (let r = 0; r < d.count; r++) open(d.a[r], d.b[r]);
-  for (let r = 0; r < sp.count; r++) open(sp.a[r], sp.b[r]);
-  for (let r = 0; r < g.count; r++) {
-    open(g.a[r], g.b[r]);
-    open(g.b[r], g.c[r]);
-  }
-  for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) open(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+  eachLinkedPair(ctx, open);
+  const { joints: j, pins } = ctx.constraints;
   for (let r = 0; r < j.count; r++) open(j.a[r], j.b[r]);
   for (let r = 0; r < pins.count; r++) open(pins.p[r], -1);
   let count = 0;

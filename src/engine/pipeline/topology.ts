@@ -50,14 +50,7 @@ export function rebuildTopology(ctx: StepContext): void {
     const b = owner[j];
     if (a >= 0 && b >= 0 && a !== b) links.push([a, b]);
   };
-  const { distances: d, springs: s, angles: g, areas: ar } = ctx.constraints;
-  for (let r = 0; r < d.count; r++) link(d.a[r], d.b[r]);
-  for (let r = 0; r < s.count; r++) link(s.a[r], s.b[r]);
-  for (let r = 0; r < g.count; r++) {
-    link(g.a[r], g.b[r]);
-    link(g.b[r], g.c[r]);
-  }
-  for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) link(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
+  eachLinkedPair(ctx, link);
   // Joints: their bodies (from their rows), sleeping links, and the jointed pairs that do not collide.
   const j = ctx.constraints.joints;
   const jointed = ctx.jointedPairs;
@@ -98,6 +91,21 @@ export function rebuildTopology(ctx: StepContext): void {
   for (let b = 0; b < high; b++) if (ids.alive[b] && !sleep.asleep[b]) awake++;
   sleep.awakeCount = awake;
   ctx.topologyDirty = false;
+}
+
+/**
+ * Calls `visit` with particles that a distance, spring, angle or area constraint ties together (for an area, its first
+ * particle with each other one): what joins bodies for sleeping, and what closes a body for free spin (spin.ts).
+ */
+export function eachLinkedPair(ctx: StepContext, visit: (i: number, j: number) => void): void {
+  const { distances: d, springs: s, angles: g, areas: ar } = ctx.constraints;
+  for (let r = 0; r < d.count; r++) visit(d.a[r], d.b[r]);
+  for (let r = 0; r < s.count; r++) visit(s.a[r], s.b[r]);
+  for (let r = 0; r < g.count; r++) {
+    visit(g.a[r], g.b[r]);
+    visit(g.b[r], g.c[r]);
+  }
+  for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) visit(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
 }
 
 /** The colliders' convex parts and active list, from the bodies (after bodies or colliders changed). */
