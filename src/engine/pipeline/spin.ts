@@ -15,7 +15,7 @@
 import { ParticleFlag } from '../particles.js';
 import { grown } from '../table.js';
 import type { StepContext } from './context.js';
-import { eachLinkedPair } from './topology.js';
+import { eachLinkedPair } from './linked.js';
 
 export class FreeSpin {
   /** Per body slot: 1 when only its own links act on its particles (rebuilt with the topology). */

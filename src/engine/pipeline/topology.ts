@@ -7,6 +7,7 @@ import { ParticleFlag } from '../particles.js';
 import { ColliderKind } from './colliders.js';
 import { BodyType } from '../rigid/shapes.js';
 import { rebuildFreeSpin } from './spin.js';
+import { eachLinkedPair } from './linked.js';
 
 /**
  * Bodies, particles or constraints changed. Everything wakes (a removed support must not leave sleepers floating,
@@ -91,21 +92,6 @@ export function rebuildTopology(ctx: StepContext): void {
   for (let b = 0; b < high; b++) if (ids.alive[b] && !sleep.asleep[b]) awake++;
   sleep.awakeCount = awake;
   ctx.topologyDirty = false;
-}
-
-/**
- * Calls `visit` with particles that a distance, spring, angle or area constraint ties together (for an area, its first
- * particle with each other one): what joins bodies for sleeping, and what closes a body for free spin (spin.ts).
- */
-export function eachLinkedPair(ctx: StepContext, visit: (i: number, j: number) => void): void {
-  const { distances: d, springs: s, angles: g, areas: ar } = ctx.constraints;
-  for (let r = 0; r < d.count; r++) visit(d.a[r], d.b[r]);
-  for (let r = 0; r < s.count; r++) visit(s.a[r], s.b[r]);
-  for (let r = 0; r < g.count; r++) {
-    visit(g.a[r], g.b[r]);
-    visit(g.b[r], g.c[r]);
-  }
-  for (let r = 0; r < ar.count; r++) for (let k = 1; k < ar.length[r]; k++) visit(ar.pool[ar.start[r]], ar.pool[ar.start[r] + k]);
 }
 
 /** The colliders' convex parts and active list, from the bodies (after bodies or colliders changed). */
