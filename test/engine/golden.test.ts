@@ -19,8 +19,8 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
   chain: '3a2adb5b0e7fd6ab',
   cloth: '4a17b850c2e2c7fc',
   thrown: 'fed4f89683c07317',
-  ragdolls: '6f0c18efbe6441af',
-  soft: '9200b15d386d30f0',
+  ragdolls: '942e35a91a558c8b',
+  soft: 'a2bb351a7cbe2640',
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */

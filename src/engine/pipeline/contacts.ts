@@ -317,13 +317,12 @@ export function recordApproachSpeeds(c: Contacts, p: ParticleStore, motion: Floa
       ny = c.ny[i];
     }
     normalSpeed[i] = (vx[iv] - vx[i0]) * nx + (vy[iv] - vy[i0]) * ny;
-    if (c.restitution[i] > 0) {
-      // A bounce acts along the line of centres where they will touch (touchNormal), which turns from the one now
-      // as a glancing pair closes: its speed along this one bounced them too hard (a glancing elastic hit gained up
-      // to 26% of its energy).
-      touchNormal(c, p, i);
-      hitSpeed(c, p, i, 0, c.nx[i], c.ny[i], motion);
-    }
+    // An impact acts along the line of centres where they will touch (touchNormal), which turns from the one now as
+    // a glancing pair closes: its speed along this one bounced them too hard (a glancing elastic hit gained up to 26%
+    // of its energy), and a stop (e = 0) along the overlap's turned the pair up to 1.8° off at 60 units/s.
+    const bouncy = c.restitution[i] > 0;
+    if (bouncy || normalSpeed[i] < -BOUNCE_THRESHOLD) touchNormal(c, p, i);
+    if (bouncy) hitSpeed(c, p, i, 0, c.nx[i], c.ny[i], motion);
   }
 }
 
@@ -393,9 +392,9 @@ export function solveContactVelocities(c: Contacts, p: ParticleStore, h: number,
   const frameRow = bounces.frameRow;
   for (let i = 0, n = c.count; i < n; i++) {
     if (lambda[i] <= 0) continue;
-    // The direction and edge fraction of this substep's correction: the positions barely moved since. A bouncing
-    // pair of particles bounces along the line of centres where they touched (touchNormal), once.
-    const touchBounce = e1[i] < 0 && restitution[i] > 0 && normalSpeed[i] < -BOUNCE_THRESHOLD;
+    // The direction and edge fraction of this substep's correction: the positions barely moved since. A pair of
+    // particles meeting at speed bounces or stops along the line of centres where they touched (touchNormal), once.
+    const touchBounce = e1[i] < 0 && normalSpeed[i] < -BOUNCE_THRESHOLD;
     const nx = touchBounce ? c.nx[i] : solvedNx[i];
     const ny = touchBounce ? c.ny[i] : solvedNy[i];
     const alpha = solvedAlpha[i];

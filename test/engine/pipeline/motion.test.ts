@@ -159,7 +159,7 @@ describe('pipeline: motion', () => {
         }
   });
 
-  it('particle balls meeting at a glance bounce along their line of centres at the touch: the energy kept at e = 1, the textbook speeds and directions at e = 1 and 0.5', () => {
+  it('particle balls meeting at a glance bounce or stop along their line of centres at the touch: the energy kept at e = 1, the textbook speeds and directions at e = 1, 0.5 and 0', () => {
     // The bounce took the approach along the line of centres found a step earlier, and acted along the one of the
     // overlap: a glancing elastic hit gained up to 26% of its energy at 60 units/s, 10% at 20.
     const kinetic = (world: World) => {
@@ -178,20 +178,36 @@ describe('pipeline: motion', () => {
           for (let n = 0; n < Math.ceil(360 / v) + 30; n++) world.step();
           expect(kinetic(world) / before, `${v} units/s, mass ${heavy}, ${late}/8 of a step later`).to.be.closeTo(1, 1e-3);
         }
-    // Equal masses, 0.6 of a diameter off centre: they touch along a line 36.87° from the path.
-    for (const [e, speedA, speedB] of [[1, 0.6, 0.8], [0.5, Math.hypot(0.6, 0.2), 0.6]] as const)
-      for (const v of [5, 20]) {
-        const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
-        const a = createCircle(world, { x: -3, y: -0.6, radius: 0.5, mass: 1, vx: v, restitution: e, friction: 0, model: 'particles' });
-        const b = createCircle(world, { x: 0, y: 0, radius: 0.5, mass: 1, restitution: e, friction: 0, model: 'particles' });
-        for (let n = 0; n < 60; n++) world.step();
-        const at = `e ${e}, ${v} units/s`;
-        const va = world.getVelocity(a.particles[0]);
-        const vb = world.getVelocity(b.particles[0]);
-        expect(Math.hypot(va.x, va.y), `${at}: A`).to.be.closeTo(speedA * v, 1e-3 * v);
-        expect(Math.hypot(vb.x, vb.y), `${at}: B`).to.be.closeTo(speedB * v, 1e-3 * v);
-        expect((Math.atan2(vb.y, vb.x) * 180) / Math.PI, `${at}: B's direction`).to.be.closeTo((Math.asin(0.6) * 180) / Math.PI, 0.05);
-      }
+    // Equal masses, 0.6 of a diameter off centre: they touch along a line 36.87° from the path. With e = 0 the stop
+    // acted along the overlap's line of centres, up to 1.8° and 2.4% off at 60 units/s (0.3° at 5).
+    for (const [e, speedA, speedB] of [[1, 0.6, 0.8], [0.5, Math.hypot(0.6, 0.2), 0.6], [0, Math.hypot(0.6, 0.4), 0.4]] as const)
+      for (const v of [5, 20, 60])
+        for (const late of [0, 3, 6]) {
+          const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
+          const a = createCircle(world, { x: -3 - (late * v) / 480, y: -0.6, radius: 0.5, mass: 1, vx: v, restitution: e, friction: 0, model: 'particles' });
+          const b = createCircle(world, { x: 0, y: 0, radius: 0.5, mass: 1, restitution: e, friction: 0, model: 'particles' });
+          for (let n = 0; n < 60; n++) world.step();
+          const at = `e ${e}, ${v} units/s, ${late}/8 of a step later`;
+          const va = world.getVelocity(a.particles[0]);
+          const vb = world.getVelocity(b.particles[0]);
+          expect(Math.hypot(va.x, va.y), `${at}: A`).to.be.closeTo(speedA * v, 1e-3 * v);
+          expect(Math.hypot(vb.x, vb.y), `${at}: B`).to.be.closeTo(speedB * v, 1e-3 * v);
+          expect((Math.atan2(vb.y, vb.x) * 180) / Math.PI, `${at}: B's direction`).to.be.closeTo((Math.asin(0.6) * 180) / Math.PI, 0.05);
+        }
+    // The same stop with friction: Coulomb's on the normal impulse (0.4·v a unit mass) along the touch's tangent, up
+    // to what stops the slide (0.3·v): B leaves at 0.4·v along the line of centres and min(μ·0.4, 0.3)·v across it.
+    for (const mu of [0.2, 0.5, 1])
+      for (const v of [5, 60])
+        for (const late of [0, 3, 6]) {
+          const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false });
+          createCircle(world, { x: -3 - (late * v) / 480, y: -0.6, radius: 0.5, mass: 1, vx: v, restitution: 0, friction: mu, model: 'particles' });
+          const b = createCircle(world, { x: 0, y: 0, radius: 0.5, mass: 1, restitution: 0, friction: mu, model: 'particles' });
+          for (let n = 0; n < 60; n++) world.step();
+          const vb = world.getVelocity(b.particles[0]);
+          const at = `μ ${mu}, ${v} units/s, ${late}/8 of a step later`;
+          expect(vb.x * 0.8 + vb.y * 0.6, `${at}: B along the line of centres`).to.be.closeTo(0.4 * v, 1e-3 * v);
+          expect(vb.x * 0.6 - vb.y * 0.8, `${at}: B across it`).to.be.closeTo(Math.min(mu * 0.4, 0.3) * v, 1e-3 * v);
+        }
   });
 
   it("a Newton's cradle of particle balls passes the hit down the row: without gravity exactly, hung on strings the last rises as the rigid cradle's does", () => {
