@@ -156,6 +156,8 @@ export interface AreaOptions {
   /** Rest area as a multiple of the loop's current area (a soft body's pressure). Default 1. */
   pressure?: number;
   compliance?: number;
+  /** Rate (per second) at which the loop's deformation dies out: its motion apart from moving and turning as one. Default 0. */
+  damping?: number;
 }
 
 /** Material and filtering of a rigid body (as ColliderOptions, without the particle-based shapes). */
@@ -296,7 +298,7 @@ export const OPTION_NAMES = {
   angle: { min: true, max: true, compliance: true } satisfies Record<keyof AngleOptions, true>,
   spring: { length: true, stiffness: true, damping: true } satisfies Record<keyof SpringOptions, true>,
   pin: { x: true, y: true, compliance: true } satisfies Record<keyof PinOptions, true>,
-  area: { pressure: true, compliance: true } satisfies Record<keyof AreaOptions, true>,
+  area: { pressure: true, compliance: true, damping: true } satisfies Record<keyof AreaOptions, true>,
   grab: { stiffness: true, pickRadius: true } satisfies Record<keyof GrabOptions, true>,
   collider: { shape: true, parts: true, friction: true, restitution: true, category: true, mask: true, group: true } satisfies Record<keyof ColliderOptions, true>,
   rigidBody: {

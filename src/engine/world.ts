@@ -478,9 +478,10 @@ export class World {
     if (pressure > MAX_PRESSURE) throw new RangeError(`pressure must be at most ${MAX_PRESSURE} (times the rest area), got ${describeValue(pressure)}`);
     const t = this.areas;
     const compliance = complianceOf('compliance', options.compliance ?? 0);
+    const damping = nonNegative('damping', options.damping ?? 0);
     const start = t.appendLoop(slots);
     const restArea = loopArea(t.pool, start, slots.length, this.particles.x, this.particles.y) * pressure;
-    return this.added(this.ctx.constraints.add(t, { start, length: slots.length, restArea, compliance }));
+    return this.added(this.ctx.constraints.add(t, { start, length: slots.length, restArea, compliance, damping }));
   }
 
   removeConstraint(handle: Handle): void {

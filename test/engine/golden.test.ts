@@ -20,11 +20,11 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
   cloth: '4a17b850c2e2c7fc',
   thrown: 'fed4f89683c07317',
   ragdolls: '942e35a91a558c8b',
-  soft: 'a2bb351a7cbe2640',
+  soft: 'fc9704a7f860640f',
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */
-const BUSY = '02c383875e735d3c';
+const BUSY = '9fccb620772b744c';
 
 const STEPS = 300;
 

@@ -19,8 +19,12 @@ export interface SoftBodyOptions extends BodyOptions {
   compliance?: number;
   /** Compliance of the area constraint. Default 0. */
   areaCompliance?: number;
-  /** Springs model: Hooke constant and damping of the spokes. Defaults 400 and 2. */
+  /** Springs model: Hooke constant of the spokes. Default 400. */
   stiffness?: number;
+  /**
+   * Springs model: the spokes' damping, default 2. Pressure model: the rate (per second) at which the ring's
+   * deformation dies out, its material damping (AreaOptions.damping), default 5.
+   */
   damping?: number;
 }
 
@@ -40,7 +44,7 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
   const pressure = positive('pressure', o.pressure ?? 1);
   const areaCompliance = complianceOf('areaCompliance', o.areaCompliance);
   const stiffness = nonNegative('stiffness', o.stiffness ?? 400);
-  const damping = nonNegative('damping', o.damping ?? 2);
+  const damping = nonNegative('damping', o.damping ?? (model === 'pressure' ? 5 : 2));
   return transactional(world, (particles, constraints) => {
     for (let k = 0; k < segments; k++) {
       // Counter-clockwise in a y-up frame, the orientation the area constraint measures as positive.
@@ -61,7 +65,7 @@ export function createSoftBody(world: World, o: SoftBodyOptions): Built {
     if (paired < segments) link(segments - 1);
     constraints.push(...ring);
     if (model === 'pressure') {
-      constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance }));
+      constraints.push(world.addAreaConstraint(particles.slice(), { pressure, compliance: areaCompliance, damping }));
     } else {
       // Listed at once (after the ring, where addBody wants it), so a failed spring takes it back too.
       const hub = world.addParticle({ x: c.x, y: c.y, mass: each, radius: 0 });

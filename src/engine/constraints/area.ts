@@ -4,15 +4,17 @@ import type { ParticleStore } from '../particles.js';
 /**
  * Keeps the area of a closed loop of particles at `restArea` (the pressure model of a soft body). The loop's
  * particle indices live in one shared pool, each row owning [start, start + length). The gradient of the
- * shoelace area with respect to vertex i is ½·perp(p[i+1] − p[i−1]).
+ * shoelace area with respect to vertex i is ½·perp(p[i+1] − p[i−1]). `damping` (per second) is the loop's material
+ * damping: the rate at which its particles' motion apart from the loop's rigid motion dies out (pipeline/spin.ts).
  */
 export class AreaConstraints extends Table {
-  readonly columns = ['start', 'length', 'restArea', 'compliance', 'lambda', 'slot'] as const;
+  readonly columns = ['start', 'length', 'restArea', 'compliance', 'lambda', 'slot', 'damping'] as const;
   start = new Int32Array(16);
   length = new Int32Array(16);
   restArea = new Float64Array(16);
   compliance = new Float64Array(16);
   lambda = new Float64Array(16);
+  damping = new Float64Array(16);
   slot = new Int32Array(16);
   pool = new Int32Array(64);
   poolUsed = 0;

@@ -4,7 +4,7 @@
 //   → per substep: (accelerate again only when springs add to it) → integrate (positions; rigid bodies' angles; kinematic bodies) → place pins → aim grabs → reset
 //     multipliers → relax (constraints, grabs, joints, contacts, rigid contacts, bounds) × iterations → derive
 //     velocities (linear, angular) → contact velocities (particle, walls, rigid) → particle frames' bounces
-//   → free bodies' spin (spin.ts) → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
+//   → free bodies' spin, area loops' damping (spin.ts) → keep rows finite (guard.ts) → store contact anchors → break links → collision events → sleep → clear forces → advance the clock
 //
 // Each phase is a plain function over the context's typed arrays, called in the order written here: to add a phase
 // (a table of rigid bodies, joints), write it as such a function and call it at its place. Nothing here allocates.
@@ -29,7 +29,7 @@ import { solveContacts, solveContactVelocities } from './contacts.js';
 import { solveFrameBounces } from './frame-bounces.js';
 import { detectCollisions } from './collide.js';
 import { keepRowsFinite } from './guard.js';
-import { keepFreeSpin, recordFreeSpin } from './spin.js';
+import { dampLoops, keepFreeSpin, recordFreeSpin } from './spin.js';
 import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount, verletReferenceHalf } from '../settings.js';
@@ -87,6 +87,8 @@ export function step(ctx: StepContext, dt: number): void {
   if (ctx.rigidCount > 0) syncRotation(ctx.particles, ctx.rigidRows, ctx.rigidCount);
   // Bodies of particles that nothing outside touched turn on as they began the step (spin.ts: v from the moves lost it).
   keepFreeSpin(ctx, n, 1 / (1 + h * ctx.settings.damping));
+  // Soft bodies' material damping (the pressure model's), on the step's velocities.
+  if (ctx.constraints.areas.count > 0) dampLoops(ctx, dt);
   keepRowsFinite(ctx);
   ctx.rigidAnchors.store(ctx.rigidContacts, ctx.particles);
   breakLinks(ctx);

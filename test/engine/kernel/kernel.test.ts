@@ -261,7 +261,7 @@ describe('solver kernel: determinism (golden hashes of the WebAssembly kernel)',
     cloth: '3bb7be7c5318fcc5',
     thrown: 'fed4f89683c07317',
     ragdolls: '094e1cf9c9cc2212',
-    soft: 'a2bb351a7cbe2640',
+    soft: 'fc9704a7f860640f',
   };
 
   for (const name of SCENE_NAMES) {
