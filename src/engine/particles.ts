@@ -18,7 +18,10 @@ export class ParticleStore extends Table {
   /** Velocity over the last substep, (x − px) / h for position-based integrators. */
   vx = new Float64Array(16);
   vy = new Float64Array(16);
-  /** Position right after integration, before constraints: what the explicit Euler velocity update needs. */
+  /**
+   * Position right after integration, before constraints: what the explicit Euler velocity update needs, and in a
+   * world with particle frames their bounces (step.ts keeps it under every integrator then; frame-bounces.ts).
+   */
   qx = new Float64Array(16);
   qy = new Float64Array(16);
   /** Acceleration this substep: gravity + user force / mass + spring forces / mass. */

@@ -114,6 +114,11 @@ export function substep(ctx: StepContext, h: number): void {
   const positionKernel = kernel ?? lanesKernel(ctx);
   if (positionKernel && settings.integrator === 'verlet') positionKernel.integrateVerlet(particles, h, damp, fused ? settings.gravity : null);
   else integrate(particles, h, damp, settings.integrator);
+  // Where each particle integrated to, before any contact: a particle frame bounces from that motion (frame-bounces.ts).
+  if (ctx.frameBounces.anyFrame) {
+    particles.qx.set(particles.x);
+    particles.qy.set(particles.y);
+  }
   const sub = ctx.substepReals;
   sub[0] = h;
   sub[1] = damp;
@@ -150,7 +155,7 @@ export function substep(ctx: StepContext, h: number): void {
     else solveRigidContactVelocities(rigid, particles, h, bounces);
   }
   // The bounces again, with each particle frame in them as one rigid body.
-  if (bounces.count > 0) solveFrameBounces(bounces, particles, ctx.bodies);
+  if (bounces.count > 0) solveFrameBounces(bounces, particles, ctx.bodies, h);
 }
 
 /** The stored v − ½·g·h made for substeps of length h instead of the reference ones (sign 1), or back (−1); false when both are h. */
@@ -291,7 +296,7 @@ function relax(ctx: StepContext, h: number): void {
   if (pins.count > 0) solveSoftPins(pins, p, h2);
   if (grabs.count > 0) solveGrabs(grabs, p, h2);
   if (joints.count > 0) solveJoints(joints, p, h);
-  if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p);
+  if (ctx.contacts.count > 0) solveContacts(ctx.contacts, p, ctx.substepMotion);
   if (ctx.rigidContacts.count > 0) {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidSweep();
     else solveRigidContacts(ctx.rigidContacts, p);

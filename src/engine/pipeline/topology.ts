@@ -141,6 +141,7 @@ function markFrameRows(ctx: StepContext): void {
   const fb = ctx.frameBounces;
   fb.frameRow = grown(fb.frameRow, p.count);
   fb.frameRow.fill(0);
+  fb.anyFrame = false;
   for (let s = 0; s < ids.high; s++) {
     if (!ids.alive[s] || kind[s] !== 'rigid') continue;
     const rows = particles[s];
@@ -148,6 +149,7 @@ function markFrameRows(ctx: StepContext): void {
     let frame = true;
     for (const r of rows) if (p.flags[r] & ParticleFlag.Rigid) frame = false;
     if (frame) for (const r of rows) fb.frameRow[r] = 1;
+    fb.anyFrame ||= frame;
   }
   ctx.rigidContacts.frameRow = fb.frameRow;
 }
