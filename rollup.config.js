@@ -243,6 +243,12 @@ export function __peWorkerUrl() {
 }`;
 
 const external = [/^lit/, /^@lit/, 'comlink', 'p5'];
+/**
+ * The ES module library leaves lit and p5 to the app (or the page's import map) but carries comlink, in a chunk the
+ * page and the worker chunk share: a module worker does not see the page's import map, so a bare `comlink` import in
+ * the worker chunk failed to load on a page without a bundler and every scene fell back to the main thread.
+ */
+const libExternal = external.filter((e) => e !== 'comlink');
 
 /**
  * The library's small modules that both the page and the worker use (frame buffers, the protocol, body models and
@@ -251,7 +257,7 @@ const external = [/^lit/, /^@lit/, 'comlink', 'p5'];
  * (src/worker/client.ts imports it on demand). An app's bundler sees each of dist/lib's chunks as one module.
  */
 const PAGE_SIDE = ['worker/triple-buffer', 'worker/publishers', 'worker/protocol', 'worker/resources', 'engine/builders/common', 'engine/builders/ragdoll', 'engine/options', 'engine/validate'].map((f) => resolve(root, `src/${f}.ts`));
-const pageSideChunk = (id) => (PAGE_SIDE.includes(id) ? 'shared' : undefined);
+const pageSideChunk = (id) => (PAGE_SIDE.includes(id) ? 'shared' : /[\\/]node_modules[\\/]comlink[\\/]/.test(id) ? 'comlink' : undefined);
 
 /** The single-file build's input and plugins; `extra` plugins go first in both of its builds (the engine function's and
  *  the page's). scripts/sizes.mjs builds it with a plugin that swaps the WebAssembly kernel for a stub. */
@@ -267,7 +273,7 @@ export default [
   },
   {
     input: { index: 'src/index.ts' },
-    external,
+    external: libExternal,
     output: { dir: 'dist/lib', format: 'es', sourcemap: true, chunkFileNames: '[name]-[hash].js', manualChunks: pageSideChunk },
     plugins: [...basePlugins({ external: true }), worker(), minify()],
   },

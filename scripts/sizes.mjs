@@ -5,7 +5,7 @@
 // - The single files are measured as they are.
 // - The ESM library is measured twice: as its files (what a page without a bundler fetches with an import map:
 //   dist/lib/index.js, every chunk it imports and the worker chunk), and as an app's bundler ships it for
-//   `import 'physics-elements'` (Rollup + terser, tree-shaken, package.json's sideEffects honoured; lit, comlink and p5
+//   `import 'physics-elements'` (Rollup + terser, tree-shaken, package.json's sideEffects honoured; lit and p5
 //   left out). The second is "engine + elements" as the page evaluates them: the elements, the renderer, the worker
 //   client and what they use of the engine (body models, checks); the engine itself is a chunk the page imports only
 //   for the main-thread fallback (measured on its own row) and the worker chunk runs it (not counted: it is the same
@@ -92,11 +92,11 @@ const add = (name, files) => rows.push({ name, files, raw: files.reduce((s, p) =
 
 add('single file, with p5 (the CMS embed)', [fileSize(resolve(dist, 'physics-elements.bundle.js'))]);
 add('single file, without p5 (lit and comlink inside; p5 from an import map)', [fileSize(resolve(dist, 'physics-elements.no-p5.js'))]);
-add('ESM library, its files as a page loads them unbundled (lit, comlink, p5 from an import map)', libFiles(resolve(dist, 'lib/index.js')).map(fileSize));
+add('ESM library, its files as a page loads them unbundled (lit and p5 from an import map; comlink is a chunk of its own)', libFiles(resolve(dist, 'lib/index.js')).map(fileSize));
 const lib = JSON.stringify(resolve(dist, 'lib/index.js'));
 {
-  const app = await bundled('app bundle', `import ${lib};`, [/^lit/, /^@lit/, 'comlink', 'p5']);
-  add('**engine + elements, as the page evaluates them**: the ESM library in an app\'s bundle (`import \'physics-elements\'`), without lit, comlink and p5', [app.entry]);
+  const app = await bundled('app bundle', `import ${lib};`, [/^lit/, /^@lit/, 'p5']);
+  add('**engine + elements, as the page evaluates them**: the ESM library in an app\'s bundle (`import \'physics-elements\'`), without lit and p5 (comlink, 1.5 KB, is in it)', [app.entry]);
   // The engine itself runs in the worker (its own chunk, not counted here); the page imports it only to run the
   // engine on its own thread when no worker can start (src/worker/client.ts, startMain).
   add('the engine on the page, loaded only when no worker can start (main-thread fallback)', app.lazy);

@@ -70,7 +70,7 @@ try {
 check(existsSync(join(installed, snippetFile ?? '-')), `installed: node_modules/${pkg.name}/${snippetFile} (${elapsed()})`);
 check(!/\bexport\s*\{/.test(readFileSync(join(installed, snippetFile ?? 'package.json'), 'utf8').slice(-4000)), `${snippetFile} is a classic script (it does not end in an export statement)`);
 
-const TYPES = { '.js': 'text/javascript', '.json': 'application/json', '.map': 'application/json', '.ts': 'text/plain' };
+const TYPES = { '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json', '.map': 'application/json', '.ts': 'text/plain' };
 // /npm/<name>@<version>/<file> as jsDelivr lays it out; /nocors/npm/… the same without Access-Control-Allow-Origin.
 const cdn = await listen('localhost', (req, res) => {
   const url = new URL(req.url, 'http://x');
@@ -98,6 +98,17 @@ const post = (head, body) => `<!doctype html>
 ${body}
 <ragdoll-sim id="dolls" count="3"></ragdoll-sim>
 <p>Some text after it.</p></body></html>`;
+/** The import map of the library's page: lit and p5 (the packages it leaves to the app), at their ES module entries. */
+const LIB_IMPORTS = {
+  lit: '/modules/lit/index.js',
+  'lit/': '/modules/lit/',
+  '@lit/reactive-element': '/modules/@lit/reactive-element/reactive-element.js',
+  '@lit/reactive-element/': '/modules/@lit/reactive-element/',
+  'lit-html': '/modules/lit-html/lit-html.js',
+  'lit-html/': '/modules/lit-html/',
+  'lit-element/': '/modules/lit-element/',
+  p5: '/modules/p5/lib/p5.esm.min.js',
+};
 // The snippet as the README has it (its element gets an id so the checks can find it).
 const asWritten = local(snippet).replace('<cloth-sim', '<cloth-sim id="cloth"');
 const moduleUrl = `${cdnBase}/npm/${pkg.name}@${pkg.version}/dist/physics-elements.bundle.js`;
@@ -106,9 +117,21 @@ const pages = {
   '/nocors.html': { what: 'the classic script from a CDN without CORS', html: post('', asWritten.replace(cdnBase, `${cdnBase}/nocors`)) },
   '/module.html': { what: 'the ES module single file with <script type="module">', html: post(`<script type="module" src="${moduleUrl}"></script>`, '<cloth-sim id="cloth"></cloth-sim>') },
   '/mixup.html': { what: 'the ES module file in a plain <script src>', html: post(`<script src="${moduleUrl}"></script>`, '<cloth-sim id="cloth"></cloth-sim>'), fails: true },
+  // The ES module library unbundled, on the page's own origin (a module worker's script must be), lit and p5 from an
+  // import map. A module worker does not see the page's import map: its chunk must import nothing by a bare name.
+  '/lib.html': { what: 'the ES module library with lit and p5 from an import map (same origin)', html: post(`<script type="importmap">${JSON.stringify({ imports: LIB_IMPORTS })}</script><script type="module" src="/site/dist/lib/index.js"></script>`, '<cloth-sim id="cloth"></cloth-sim>') },
 };
 const server = await listen('127.0.0.1', (req, res) => {
-  const page = pages[new URL(req.url, 'http://x').pathname];
+  const path = new URL(req.url, 'http://x').pathname;
+  // /site/… the installed package, /modules/… the packages the import map names (this checkout's, as an app has its own).
+  const [base, rest] = path.startsWith('/site/') ? [installed, path.slice(6)] : path.startsWith('/modules/') ? [resolve(root, 'node_modules'), path.slice(9)] : [];
+  const file = base ? normalize(join(base, decodeURIComponent(rest))) : '';
+  if (file.startsWith(base + '/') && existsSync(file)) {
+    res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    res.end(readFileSync(file));
+    return;
+  }
+  const page = pages[path];
   res.writeHead(page ? 200 : 404, page ? { 'content-type': 'text/html' } : {});
   res.end(page?.html ?? '');
 });
@@ -127,7 +150,9 @@ async function checkPage(browserName, tab, problems, path) {
     return;
   }
   const info = await tab.evaluate(async () => {
-    await Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
+    const defined = Promise.all([customElements.whenDefined('cloth-sim'), customElements.whenDefined('ragdoll-sim')]);
+    // A script that fails to load defines nothing: a failed check, not a hung run.
+    if (!(await Promise.race([defined.then(() => true), new Promise((r) => setTimeout(r, 20000, false))]))) return null;
     const out = {};
     for (const id of ['cloth', 'dolls']) {
       const el = document.getElementById(id);
@@ -137,9 +162,11 @@ async function checkPage(browserName, tab, problems, path) {
     out.global = typeof window.PhysicsElements?.PhysicsSceneElement === 'function' && window.PhysicsElements.PhysicsSceneElement === customElements.get('physics-scene');
     return out;
   });
+  check(info !== null, `${label}: the elements are defined`);
+  if (info === null) return;
   check(info.cloth.mode === 'worker' && info.dolls.mode === 'worker', `${label}: both engines run in a worker (${info.cloth.mode}, ${info.dolls.mode})`);
   check(info.cloth.height > 100 && info.dolls.height > 100, `${label}: the elements have a box (${info.cloth.height} px, ${info.dolls.height} px tall)`);
-  if (path !== '/module.html') check(info.global, `${label}: window.PhysicsElements holds the element classes`);
+  if (path !== '/module.html' && path !== '/lib.html') check(info.global, `${label}: window.PhysicsElements holds the element classes`);
   for (const id of ['cloth', 'dolls']) check(await animates(tab, id), `${label}: #${id}'s canvas changes`);
   check(problems.length === 0, `${label}: no console errors or warnings${problems.length ? `:\n  ${problems.join('\n  ')}` : ''}`);
   await tab.screenshot({ path: resolve(artifacts, `pack-${browserName}-${path.slice(1, -5)}.png`) });
