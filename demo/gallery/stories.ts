@@ -202,11 +202,12 @@ const rigidStories: Story[] = [
     id: 'bounce',
     group: 'Rigid bodies',
     title: 'Bounce heights',
-    description: 'Dropped from the same height with restitution 0, 0.5, 0.8 and 0.95: each bounce reaches e² of the height before it.',
+    description: 'Balls dropped from the same height with restitution 0, 0.5, 0.8 and 0.95, and a box with 0.6 landing flat: each bounce reaches e² of the height before it.',
     root: scene({}, [
       floor(),
       ...[0, 0.5, 0.8, 0.95].map((e, k) => n('physics-circle', { x: 3 + 3.25 * k, y: 1, radius: 0.45, restitution: e, friction: 0, fill: ['#596273', '#3d7dd8', '#2a9d8f', '#e76f51'][k] })),
-      n('physics-box', { x: 14.8, y: 1, width: 0.7, height: 0.7, angle: 30, restitution: 0.6, fill: '#f2c14e', stroke: '#a5812a' }),
+      // Flat: tilted, it landed on a corner, tumbled 3.5 units and knocked the frictionless balls into a pile.
+      n('physics-box', { x: 14.8, y: 1, width: 0.7, height: 0.7, restitution: 0.6, fill: '#f2c14e', stroke: '#a5812a' }),
     ]),
   },
   {

@@ -20,7 +20,7 @@ const GOLDEN: Partial<Record<SceneName, string>> = {
   cloth: '4a17b850c2e2c7fc',
   thrown: 'fed4f89683c07317',
   ragdolls: '942e35a91a558c8b',
-  soft: 'fc9704a7f860640f',
+  soft: '9653eee236ce5470',
 };
 
 /** The determinism test's busy world (cloth, rope, ragdoll, soft bodies, a box; bounds; sleeping off). */

@@ -113,11 +113,12 @@ export const catalogue = {
   },
   soft: {
     title: 'Soft bodies',
-    description: 'Pressure rings and a mass–spring ring dropped on boxes.',
+    description: 'Pressure rings and a mass–spring ring dropped on boxes, in a container.',
     make: () => ({
       world: { gravity: GRAVITY },
       bodies: [
-        ground(40),
+        // Walls: the mass–spring ring, struck by the falling 16-link ring, rolled on for 40 s and 16 units.
+        ...container(16, 3),
         { type: 'box', x: -2, y: -1, width: 3, height: 2, static: true, angle: 0.2, fill: '#8a8f98' },
         { type: 'softbody', center: { x: -2, y: -6 }, radius: 1.2, segments: 20 },
         { type: 'softbody', center: { x: 1.5, y: -9 }, radius: 1, segments: 16, pressure: 1.2 },
