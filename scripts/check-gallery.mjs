@@ -89,9 +89,10 @@ try {
     // The snippet: reachable with the keyboard, and what Copy copies is complete.
     const snippet = await page.evaluate(() => ({ tabIndex: document.getElementById('snippet').tabIndex, text: document.getElementById('snippet').textContent }));
     check(snippet.tabIndex === 0, `${name}: the snippet box is in the tab order`);
-    const [first, second = ''] = snippet.text.split('\n');
+    const [first, second = '', third = ''] = snippet.text.split('\n');
     check(readmeScript !== undefined && first === readmeScript, `${name}: the snippet starts with the README's script line (${first})`);
     check(/^<[a-z-]+ .*style="display:block;aspect-ratio:\d+(\.\d+)?\/\d+(\.\d+)?"/.test(second), `${name}: the tag reserves its box (${second.slice(0, 90)})`);
+    check(/^ {2}<p slot="fallback">[^<]+<\/p>$/.test(third), `${name}: the tag holds fallback text (${third.slice(0, 90)})`);
     await page.screenshot({ path: new URL(`${name}.png`, outDir).pathname, fullPage: name === 'phone' });
 
     // axe-core, the whole page.

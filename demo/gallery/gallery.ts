@@ -157,15 +157,22 @@ let current: Current | null = null;
 
 /**
  * The snippet a page pastes: the script line, then the scene's tag with its box reserved before the script runs
- * (display:block and the aspect ratio of its view, which is the element's own sizing once defined: no layout shift).
+ * (display:block and the aspect ratio of its view, which is the element's own sizing once defined: no layout shift)
+ * and a line of fallback text, which the box shows until the scene starts and keeps if the script cannot load (a
+ * blank box said nothing to a reader).
  */
 function refreshSnippet(): void {
   if (!current) return;
-  const { scene, data } = current;
+  const { scene, data, story } = current;
   const [w, h] = [Number((scene as unknown as { width: unknown }).width), Number((scene as unknown as { height: unknown }).height)];
   const reserved = Number.isFinite(w) && w > 0 && Number.isFinite(h) && h > 0 && data.attrs.style === undefined;
   const root = reserved ? { ...data, attrs: { ...data.attrs, style: `display:block;aspect-ratio:${w}/${h}` } } : data;
-  snippet.textContent = `${SCRIPT_LINE}\n${markup(root)}`;
+  const tag = markup(root);
+  // The opening tag ends at its first ">": attribute values are escaped (escapeAttr).
+  const open = tag.indexOf('>') + 1;
+  const rest = tag.slice(open);
+  const fallback = `<p slot="fallback">${escapeAttr(story.title)}: an interactive physics animation.</p>`;
+  snippet.textContent = `${SCRIPT_LINE}\n${tag.slice(0, open)}\n  ${fallback}${rest.startsWith('\n') ? rest : `\n${rest}`}`;
 }
 
 function setAttr(target: HTMLElement, data: Node, attr: string, value: string | true | null): void {
