@@ -165,7 +165,9 @@ function refreshSnippet(): void {
   if (!current) return;
   const { scene, data, story } = current;
   const [w, h] = [Number((scene as unknown as { width: unknown }).width), Number((scene as unknown as { height: unknown }).height)];
-  const reserved = Number.isFinite(w) && w > 0 && Number.isFinite(h) && h > 0 && data.attrs.style === undefined;
+  const valid = Number.isFinite(w) && w > 0 && Number.isFinite(h) && h > 0;
+  if (valid) stage.style.setProperty('--view-ratio', String(w / h));
+  const reserved = valid && data.attrs.style === undefined;
   const root = reserved ? { ...data, attrs: { ...data.attrs, style: `display:block;aspect-ratio:${w}/${h}` } } : data;
   const tag = markup(root);
   // The opening tag ends at its first ">": attribute values are escaped (escapeAttr).
