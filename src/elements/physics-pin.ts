@@ -7,7 +7,7 @@ import { PhysicsLinkElement, type Resolve } from './link-element.js';
 /**
  * Pins a body (element id in `body`) to the world point `x`, `y`: a rigid body at its point there, about which it
  * can still turn (a hinge to the world); a body of particles by its particle nearest to the point (or the
- * `particle`-th of the body; of a rigid body, its centre), held rigidly or, with `compliance`, like a zero-length
+ * `particle`-th of the body; of a rigid body, 0: its centre), held rigidly or, with `compliance`, like a zero-length
  * spring.
  *
  * @summary Pins a body to a point.

@@ -223,7 +223,7 @@ describe('<physics-scene> bad markup', () => {
     await waitFor(() => box.y > 2.5 && far.y > 2.5, 'both boxes to fall');
   });
 
-  it('a pin\'s particle past the body\'s count, or one pinned already, is reported by the pin\'s attribute and the body\'s index', async () => {
+  it('a pin\'s particle past the body\'s count (a rigid body\'s is 1), or one pinned already, is reported by the pin\'s attribute and the body\'s index', async () => {
     const { warnings, errors, before } = reports();
     // An 11-particle rope (particles 0…10), unpinned; a 4-particle box of particles.
     scene = await mount(
@@ -236,25 +236,31 @@ describe('<physics-scene> bad markup', () => {
        <physics-pin id="again" body="r" particle="10" x="6" y="2"></physics-pin>
        <physics-pin id="near" body="r" x="6.1" y="2"></physics-pin>
        <physics-box id="plate" x="8" y="8" width="1" height="1"></physics-box>
-       <physics-pin id="centre" body="plate" particle="2" x="8" y="8"></physics-pin>`,
+       <physics-pin id="centre" body="plate" particle="0" x="8" y="8"></physics-pin>
+       <physics-box id="crate" x="3" y="8" width="1" height="1"></physics-box>
+       <physics-pin id="row" body="crate" particle="5" x="3" y="7"></physics-pin>`,
       { before },
     );
-    await waitFor(() => errors.length >= 4, 'the four refused pins reported');
+    await waitFor(() => errors.length >= 5, 'the five refused pins reported');
     const seen = errors.map((e) => [e.element.id, e.attribute, e.value]);
     expect(seen).to.have.deep.members([
       ['far', 'particle', '99'],
       ['corner', 'particle', '4'],
       ['again', 'particle', '10'],
       ['near', 'x', '6.1'],
+      ['row', 'particle', '5'],
     ]);
     const message = (id: string) => errors.find((e) => e.element.id === id)!.message;
     expect(message('far')).to.include("less than the body's particle count (11), got 99");
     expect(message('corner')).to.include("less than the body's particle count (4), got 4");
+    // A rigid body has one row: its particle 0, the centre.
+    expect(message('row')).to.include("less than the body's particle count (1), got 5");
     // The body's own index (10), not the engine's.
     expect(message('again')).to.include('not rigidly pinned already').and.include('got 10');
     expect(message('near')).to.include('particle 10');
-    expect(warnings.length).to.equal(4);
-    // The good pins: the rope's end, and the rigid plate by its centre (any particle index of a rigid body: its one row).
+    expect(warnings.length).to.equal(5);
+    expect(warnings.join('\n')).to.contain('particle="5"');
+    // The good pins: the rope's end, and the rigid plate by its centre (particle 0: its one row).
     const d = await scene.diagnostics();
     expect(d.linkCount).to.equal(2);
     await scene.step(30);

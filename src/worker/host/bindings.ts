@@ -344,8 +344,8 @@ export class Bindings {
       return;
     }
     const idx = w.bodyParticleIndices(a.handle!);
-    // A rigid body is pinned by its centre whatever `particle` says (its one row); a body of particles by the one named.
-    if (!a.rigid && d.particle !== undefined && d.particle >= idx.length) throw new RangeError(`particle must be less than the body's particle count (${idx.length}), got ${d.particle}`);
+    // A rigid body has one row (its centre: particle 0); a body of particles is pinned by the one named.
+    if ((d.particle ?? 0) >= idx.length) throw new RangeError(`particle must be less than the body's particle count (${idx.length}), got ${d.particle}`);
     const i = a.rigid ? idx[0] : d.particle !== undefined ? idx[d.particle] : this.nearest(idx, d.x, d.y);
     try {
       l.handles = [w.addPin(w.particleHandle(i), { x: d.x, y: d.y, compliance: d.compliance })];
