@@ -133,6 +133,17 @@ export class Checker {
     return n;
   }
 
+  /**
+   * A turning rate in degrees per second, in radians per second: within the engine's ±1e9 rad/s (±5.7e10 °/s). A rate
+   * is not reduced modulo 360 as an angle is (toRadians): 720 °/s is not 0.
+   */
+  rate(attribute: string, value: unknown): number | undefined {
+    // No number (absent or reported): NaN, neither kept nor reported again.
+    const rad = (this.number(attribute, value)! * Math.PI) / 180;
+    if (Math.abs(rad) <= MAX_SPEED) return rad;
+    if (rad) this.fail(attribute, value, 'must be within ±5.7e10 (degrees per second: 1e9 radians)');
+  }
+
   oneOf<T extends string>(attribute: string, value: unknown, options: readonly T[], fallback: T): T {
     if (value === undefined || value === null || value === '') return fallback;
     if ((options as readonly unknown[]).includes(value)) return value as T;
@@ -216,7 +227,7 @@ export function describeElement(el: Element): string {
   return `<${el.localName}${id ? ` id="${displayValue(id)}"` : ''}>`;
 }
 
-/** Degrees (markup) → radians (engine). */
+/** An angle in degrees (markup) → radians (engine); a rate is Checker.rate's. */
 // (deg · π) / 180 as it always was (the golden hashes hold its doubles). Any finite angle is a pose: past 1e9 degrees
 // it is taken modulo 360 (exact), which the engine's ±1e9 rad takes and a product past the largest double does not
 // overflow (1e308 degrees).

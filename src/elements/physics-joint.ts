@@ -42,7 +42,7 @@ export class PhysicsJointElement extends PhysicsLinkElement {
   @property({ attribute: 'lower-angle', type: Number, converter: numberAttribute }) lowerAngle?: number;
   /** Revolute: the highest angle, in degrees (>= lower-angle). */
   @property({ attribute: 'upper-angle', type: Number, converter: numberAttribute }) upperAngle?: number;
-  /** Revolute: a motor turning a relative to b at this speed, degrees per second (clockwise on screen). */
+  /** Revolute: a motor turning a relative to b at this speed, degrees per second (clockwise on screen), within ±5.7e10. */
   @property({ attribute: 'motor-speed', type: Number, converter: numberAttribute }) motorSpeed?: number;
   /** Revolute: the most torque the motor gives (>= 0; default unlimited once `motor-speed` is set). */
   @property({ attribute: 'max-motor-torque', type: Number, converter: numberAttribute }) maxMotorTorque?: number;
@@ -81,8 +81,7 @@ export class PhysicsJointElement extends PhysicsLinkElement {
       if (lowerAngle !== undefined) desc.lowerAngle = toRadians(lowerAngle);
       if (upperAngle !== undefined) desc.upperAngle = toRadians(upperAngle);
     }
-    const motorSpeed = check.number('motor-speed', this.motorSpeed);
-    if (motorSpeed !== undefined) desc.motorSpeed = toRadians(motorSpeed);
+    desc.motorSpeed = check.rate('motor-speed', this.motorSpeed);
     desc.maxMotorTorque = check.number('max-motor-torque', this.maxMotorTorque, { min: 0 });
     const axis = check.numbers('axis', this.axis);
     if (axis && (axis.length !== 2 || (axis[0] === 0 && axis[1] === 0))) check.fail('axis', this.axis, 'must be a direction "dx dy", not both 0');

@@ -57,8 +57,6 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
     if (velocity && velocity.length !== 2) check.fail('velocity', this.velocity, `must be two numbers "vx vy", got ${velocity.length}`);
     else if (velocity && velocity.some((v) => Math.abs(v) > MAX_SPEED)) check.fail('velocity', this.velocity, 'must be within ±1e9 (world units per second)');
     else if (velocity) [out.vx, out.vy] = velocity;
-    const spin = check.number('angular-velocity', this.angularVelocity);
-    if (spin !== undefined && Math.abs(toRadians(spin)) > MAX_SPEED) check.fail('angular-velocity', this.angularVelocity, 'must be within ±5.7e10 (degrees per second: 1e9 radians)');
-    else if (spin !== undefined) out.angularVelocity = toRadians(spin);
+    out.angularVelocity = check.rate('angular-velocity', this.angularVelocity);
   }
 }

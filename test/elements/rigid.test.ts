@@ -2,7 +2,7 @@
 // their motion attributes (model, kinematic, velocity, angular-velocity, valid and not, live), and <physics-joint>
 // of every type holding from markup. Paused scenes driven by step(n).
 import { expect } from '@open-wc/testing';
-import type { PhysicsBoxElement, PhysicsErrorDetail, PhysicsSceneElement } from '../../src/index.js';
+import type { PhysicsBoxElement, PhysicsErrorDetail, PhysicsJointElement, PhysicsSceneElement } from '../../src/index.js';
 import { afterEachScene, colourDistance, drawn, mount, pixelAt, rgb } from './helpers.js';
 
 const WHITE = rgb('#ffffff');
@@ -177,6 +177,38 @@ describe('rigid bodies in the page', () => {
       // Each body is built with the fallback (rigid, no velocity, not kinematic): six bodies.
       const d = await scene.diagnostics();
       expect([d.bodyCount, d.particleCount]).to.deep.equal([6, 5 + 3]);
+    } finally {
+      r.restore();
+    }
+  });
+
+  it('angular-velocity and motor-speed are kept as written up to ±5.7e10 °/s (a rate is not taken modulo 360); past it a physics-error and a warning each', async () => {
+    const r = reports();
+    try {
+      scene = await mount(
+        'width="20" height="10" gravity="0 0" bounds="none" paused',
+        `<physics-box id="spun" x="4" y="4" kinematic angular-velocity="1000000090"></physics-box>
+         <physics-box id="fast" x="8" y="4" angular-velocity="1e12"></physics-box>
+         <physics-joint id="motor" type="revolute" a="spun" motor-speed="-5e10"></physics-joint>
+         <physics-joint id="racing" type="revolute" a="fast" motor-speed="6e10"></physics-joint>`,
+        { before: r.listen },
+      );
+      expect(r.errors.map((e) => [e.element.id, e.attribute, e.value])).to.have.deep.members([
+        ['fast', 'angular-velocity', '1e12'],
+        ['racing', 'motor-speed', '6e10'],
+      ]);
+      expect(r.errors[0].message).to.equal('must be within ±5.7e10 (degrees per second: 1e9 radians)');
+      expect(r.warnings.filter((w) => w.includes('angular-velocity="1e12"') || w.includes('motor-speed="6e10"'))).to.have.length(2);
+      expect(r.warnings.length).to.equal(2);
+      // In range, as written: 1000000090 °/s, not 1000000090 mod 360 = 10 °/s; -5e10 °/s, not -5e10 mod 360 = -80.
+      const spun = scene.querySelector<PhysicsBoxElement>('#spun')!;
+      expect((spun.describe().desc as { angularVelocity?: number }).angularVelocity).to.equal((1000000090 * Math.PI) / 180);
+      const motor = scene.querySelector<PhysicsJointElement>('#motor')!;
+      expect((motor.describe(() => 1).desc as { motorSpeed?: number }).motorSpeed).to.equal((-5e10 * Math.PI) / 180);
+      // The kinematic box turns at that rate, as far as the engine turns a body in a step (0.5 rad a substep, 3 rad in
+      // six), where 10 °/s turned it a sixth of a degree.
+      await scene.step(1);
+      expect(spun.angle).to.be.above(90);
     } finally {
       r.restore();
     }
