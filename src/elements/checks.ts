@@ -8,6 +8,12 @@ import { MAX_COMPLIANCE, MAX_SPEED, MAX_WORLD_COORDINATE, nearestName } from '..
  */
 export const COMPLIANCE: NumberRule = { min: 0, max: MAX_COMPLIANCE };
 
+/**
+ * A spring's stiffness, of `<physics-spring>` and `<physics-joint type="spring">` alike: > 0, and at least 1e-9 (the
+ * engine's compliance 1/stiffness at most 1e9). 0 is refused: a spring of stiffness 0 pulls with no force.
+ */
+export const STIFFNESS: NumberRule = { positive: true, min: 1 / MAX_COMPLIANCE, fallback: 50 };
+
 /** The engine's range for a gravity component (units/s²). */
 export const GRAVITY_LIMIT = MAX_SPEED;
 

@@ -2,8 +2,7 @@ import { property } from 'lit/decorators.js';
 import { JOINT_TYPES } from '../engine/options.js';
 import type { JointLink, LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, COMPLIANCE, numberAttribute, toRadians } from './checks.js';
-import { MAX_COMPLIANCE } from '../engine/validate.js';
+import { Checker, COMPLIANCE, numberAttribute, STIFFNESS, toRadians } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -54,7 +53,7 @@ export class PhysicsJointElement extends PhysicsLinkElement {
   @property({ type: Number, converter: numberAttribute }) upper?: number;
   /** Distance and spring: rest length (>= 0); default the distance when the joint is made. */
   @property({ type: Number, converter: numberAttribute }) length?: number;
-  /** Spring: force per unit of stretch (> 0). Default 50. */
+  /** Spring: force per unit of stretch (> 0, at least 1e-9: a spring of stiffness 0 pulls with no force). Default 50. */
   @property({ type: Number, converter: numberAttribute }) stiffness?: number;
   /** Spring: force per unit of stretching speed (>= 0). Default 1. */
   @property({ type: Number, converter: numberAttribute }) damping?: number;
@@ -92,13 +91,9 @@ export class PhysicsJointElement extends PhysicsLinkElement {
     if (lower !== undefined && upper !== undefined && upper < lower) check.fail('upper', this.upper, `must be >= lower (${lower})`);
     else Object.assign(desc, { lower, upper });
     desc.length = check.number('length', this.length, { min: 0 });
-    if (type === 'spring') {
-      desc.stiffness = check.number('stiffness', this.stiffness, { min: 1 / MAX_COMPLIANCE, fallback: 50 });
-      desc.damping = check.number('damping', this.damping, { min: 0, fallback: 1 });
-    } else {
-      check.number('stiffness', this.stiffness, { positive: true });
-      check.number('damping', this.damping, { min: 0 });
-    }
+    const stiffness = check.number('stiffness', this.stiffness, STIFFNESS);
+    const damping = check.number('damping', this.damping, { min: 0, fallback: 1 });
+    if (type === 'spring') Object.assign(desc, { stiffness, damping });
     desc.compliance = check.number('compliance', this.compliance, COMPLIANCE);
     if (this.collideConnected) desc.collideConnected = true;
     if (a === null || b === null) return { desc: null, problems: check.problems };

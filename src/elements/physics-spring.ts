@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { LinkDescription } from '../worker/protocol.js';
 import type { Described } from './body-element.js';
-import { Checker, numberAttribute } from './checks.js';
+import { Checker, numberAttribute, STIFFNESS } from './checks.js';
 import { PhysicsLinkElement, type Resolve } from './link-element.js';
 
 /**
@@ -17,7 +17,7 @@ export class PhysicsSpringElement extends PhysicsLinkElement {
   @property() a?: string;
   /** Id of the second body element. */
   @property() b?: string;
-  /** Hooke constant (force per unit length, >= 0). Default 50. */
+  /** Hooke constant (force per unit length, > 0, at least 1e-9: a spring of stiffness 0 pulls with no force). Default 50. */
   @property({ type: Number, converter: numberAttribute }) stiffness?: number;
   /** Damping (force per unit relative speed, >= 0). Default 1. */
   @property({ type: Number, converter: numberAttribute }) damping?: number;
@@ -28,7 +28,7 @@ export class PhysicsSpringElement extends PhysicsLinkElement {
     const check = new Checker(this);
     const a = this.resolveBody(check, 'a', this.a, resolve);
     const b = this.resolveBody(check, 'b', this.b, resolve);
-    const stiffness = check.number('stiffness', this.stiffness, { min: 0, fallback: 50 })!;
+    const stiffness = check.number('stiffness', this.stiffness, STIFFNESS)!;
     const damping = check.number('damping', this.damping, { min: 0, fallback: 1 });
     const length = check.number('length', this.length, { min: 0 });
     if (a === null || b === null) return { desc: null, problems: check.problems };

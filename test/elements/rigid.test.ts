@@ -270,7 +270,7 @@ describe('rigid bodies in the page', () => {
     expect(Math.hypot(load.x - 5, load.y - 1)).to.be.within(3.1, 3.6);
   });
 
-  it('bad <physics-joint> values: a physics-error and a warning each', async () => {
+  it('bad <physics-joint> values and a <physics-spring> of stiffness 0: a physics-error and a warning each', async () => {
     const r = reports();
     try {
       scene = await mount(
@@ -280,7 +280,10 @@ describe('rigid bodies in the page', () => {
          <physics-joint id="j2" type="revolute" a="p" lower-angle="30" upper-angle="10"></physics-joint>
          <physics-joint id="j3" type="prismatic" a="p" b="q" axis="0 0"></physics-joint>
          <physics-joint id="j4" type="revolute" a="p" motor-speed="90" max-motor-torque="-1"></physics-joint>
-         <physics-joint id="j5" type="spring" a="p" b="q" stiffness="0"></physics-joint>`,
+         <physics-joint id="j5" type="spring" a="p" b="q" stiffness="0"></physics-joint>
+         <physics-spring id="s1" a="p" b="q" stiffness="0"></physics-spring>
+         <physics-spring id="s2" a="p" b="q" stiffness="1e-9"></physics-spring>
+         <physics-joint id="j6" type="spring" a="p" b="q" stiffness="1e-9"></physics-joint>`,
         { before: r.listen },
       );
       expect(r.errors.map((e) => [e.element.id, e.attribute, e.value])).to.have.deep.members([
@@ -289,10 +292,13 @@ describe('rigid bodies in the page', () => {
         ['j3', 'axis', '0 0'],
         ['j4', 'max-motor-torque', '-1'],
         ['j5', 'stiffness', '0'],
+        // One rule for a spring's stiffness, a joint's or a <physics-spring>'s: > 0 (at least 1e-9).
+        ['s1', 'stiffness', '0'],
       ]);
-      expect(r.warnings.length).to.equal(5);
-      // Each joint is made with the fallback (a distance joint; no limits; the default axis; no torque cap; k = 50).
-      expect((await scene.diagnostics()).linkCount).to.equal(5);
+      expect(r.errors.find((e) => e.element.id === 's1')!.message).to.equal('must be a number > 0');
+      expect(r.warnings.length).to.equal(6);
+      // Each link is made with the fallback (a distance joint; no limits; the default axis; no torque cap; k = 50).
+      expect((await scene.diagnostics()).linkCount).to.equal(8);
     } finally {
       r.restore();
     }
