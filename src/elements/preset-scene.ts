@@ -34,7 +34,7 @@ export abstract class PresetSceneElement<Setup extends { problems: Problem[] }> 
     `,
   ];
 
-  /** World units down the view. Default 10. */
+  /** World units down the view (>= 0.001). Default 10. */
   @property({ type: Number, converter: numberAttribute }) override height = 10;
 
   /** What a bad `width` or `height` falls back to: this preset's view, not the scene's 16 × 9. @internal */

@@ -118,6 +118,43 @@ describe('<physics-scene> bad markup', () => {
     expect((await scene.diagnostics()).bodyCount).to.equal(5);
   });
 
+  it('a view too small (width="1e-300", height="1e-9") is reported on width or height and falls back, on a scene, a <ragdoll-sim> and a <cloth-sim>: the box keeps its height, the presets their bodies', async () => {
+    const { warnings, errors } = reports();
+    const listen = (e: Event) => errors.push((e as CustomEvent<PhysicsErrorDetail>).detail);
+    document.addEventListener('physics-error', listen);
+    const box = document.createElement('div');
+    box.style.width = '400px';
+    try {
+      // No height set: the element's box takes the view's aspect ratio, which a view too small made 0 px tall.
+      box.innerHTML = `<physics-scene id="wide" width="1e-300" paused><physics-circle x="5" y="2" radius="0.5"></physics-circle></physics-scene>
+        <physics-scene id="tall" height="1e-9" paused></physics-scene>
+        <physics-scene id="small" width="0.001" height="0.001" paused></physics-scene>
+        <ragdoll-sim id="dolls" width="1e-300" paused></ragdoll-sim><ragdoll-sim id="dolls2" paused></ragdoll-sim>
+        <cloth-sim id="cloth" height="1e-9" paused></cloth-sim><cloth-sim id="cloth2" paused></cloth-sim>`;
+      document.body.append(box);
+      const scenes = Array.from(box.children) as PhysicsSceneElement[];
+      await Promise.all(scenes.map((s) => s.ready));
+      expect(errors.map((e) => [(e.element as Element).id, e.attribute, e.value, e.message])).to.have.deep.members([
+        ['wide', 'width', '1e-300', 'must be >= 0.001'],
+        ['tall', 'height', '1e-9', 'must be >= 0.001'],
+        ['dolls', 'width', '1e-300', 'must be >= 0.001'],
+        ['cloth', 'height', '1e-9', 'must be >= 0.001'],
+      ]);
+      expect(warnings.length).to.equal(4);
+      expect(warnings.filter((w) => w.includes('width="1e-300"'))).to.have.length(2);
+      // Each falls back to its default view: a 16 × 9 box (16 × 10 for a preset); 0.001 × 0.001 is a valid square.
+      const heights = scenes.map((s) => Math.round(s.getBoundingClientRect().height));
+      expect(heights).to.deep.equal([225, 225, 400, 250, 250, 250, 250]);
+      // The presets build what their defaults build.
+      const [dolls, dolls2, cloth, cloth2] = await Promise.all(scenes.slice(3).map((s) => s.diagnostics()));
+      expect([dolls.bodyCount, dolls.linkCount]).to.deep.equal([dolls2.bodyCount, dolls2.linkCount]);
+      expect(cloth.particleCount).to.equal(cloth2.particleCount);
+    } finally {
+      document.removeEventListener('physics-error', listen);
+      box.remove();
+    }
+  });
+
   it('reports misspelt attribute names with the one meant; the page\'s own attributes and globals are left alone', async () => {
     const { warnings, errors, before } = reports();
     scene = await mount(

@@ -106,12 +106,16 @@ export function checkedView(scene: Element & Pick<SceneAttributes, 'width' | 'he
   return viewOf(new Checker(scene), scene);
 }
 
+/**
+ * The smallest view width or height. Smaller, the page loses the box's aspect ratio (CSS reads 1e-10 as 0: the element
+ * was 0 px tall) and a preset lays out bodies too small for the engine's smallest mass.
+ */
+const MIN_VIEW = 1e-3;
+
 function viewOf(check: Checker, scene: Element & Pick<SceneAttributes, 'width' | 'height' | 'viewDefaults'>): ViewSize {
   const defaults = scene.viewDefaults ?? SCENE_VIEW;
-  return {
-    width: check.number('width', scene.width, { positive: true, fallback: defaults.width })!,
-    height: check.number('height', scene.height, { positive: true, fallback: defaults.height })!,
-  };
+  const size = (side: 'width' | 'height') => check.number(side, scene[side], { positive: true, min: MIN_VIEW, fallback: defaults[side] })!;
+  return { width: size('width'), height: size('height') };
 }
 
 /** Substeps: "auto" (default, also when absent) or a whole number from 1 to 1000 (the engine's limits). */

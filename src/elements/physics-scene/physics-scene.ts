@@ -120,9 +120,9 @@ export class PhysicsSceneElement extends LitElement {
     setMaxWorkers(limit);
   }
 
-  /** World units across the view. Default 16. */
+  /** World units across the view (>= 0.001). Default 16. */
   @property({ type: Number }) width = 16;
-  /** World units down the view. Default 9. */
+  /** World units down the view (>= 0.001). Default 9. */
   @property({ type: Number }) height = 9;
   /** Gravity "x y" in world units / s² (y grows downward). Default "0 9.81". */
   @property() gravity = '0 9.81';
