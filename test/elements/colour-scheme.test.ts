@@ -107,6 +107,26 @@ describe('colour scheme', () => {
     expect(pixelsNear(scene, DARK.rope)).to.equal(0);
   });
 
+  it('the play control stands out on the canvas of either scheme: its disc (contrast at least 3) and its triangle on it (at least 4.5)', async () => {
+    for (const [scheme, canvas] of [['light', LIGHT.background], ['dark', DARK.background]] as const) {
+      document.documentElement.style.colorScheme = scheme;
+      scene = await mount('width="10" height="10"', '');
+      await waitFor(() => pixelsNear(scene!, canvas) > 0, `the ${scheme} canvas`);
+      scene.focus();
+      scene.dispatchEvent(new KeyboardEvent('keydown', { key: ' ', code: 'Space', bubbles: true, composed: true, cancelable: true }));
+      await scene.updateComplete;
+      const button = getComputedStyle(scene.shadowRoot!.querySelector('[part="play-button"]')!);
+      // The disc is translucent: what shows is its colour laid over the canvas.
+      const [r, g, b, a = 1] = button.backgroundColor.match(/[\d.]+/g)!.map(Number);
+      const under = rgb(canvas);
+      const disc = `rgb(${[r, g, b].map((c, i) => c * a + under[i] * (1 - a)).join(', ')})`;
+      expect(contrast(disc, `rgb(${under.join(', ')})`), `${scheme}: disc ${disc} on the canvas ${canvas}`).to.be.at.least(3);
+      expect(contrast(button.color, disc), `${scheme}: triangle ${button.color} on ${disc}`).to.be.at.least(4.5);
+      unmount(scene);
+      scene = null;
+    }
+  });
+
   it('the error box and the loading message are readable on a dark page (contrast at least 4.5)', async () => {
     document.documentElement.style.colorScheme = 'dark';
     document.body.style.background = '#121212';

@@ -1,6 +1,6 @@
 // The keyboard on a real scene (paused, driven by step(n)): Tab picks the movable bodies in order (a static floor is
 // left out) and the live region says which, the ring sits around the picked body as drawn, an arrow key pushes it by a
-// third of the view's height per second, R resets, Space still pauses and plays.
+// third of the view's height per second, R resets, Space pauses and plays (each said in the live region).
 import { expect } from '@open-wc/testing';
 import type { PhysicsBoxElement, PhysicsCircleElement, PhysicsSceneElement } from '../../src/index.js';
 import { drawn, frames, mount, simulated, unmount, waitFor } from './helpers.js';
@@ -70,7 +70,7 @@ describe('<physics-scene> keyboard', () => {
     expect(crate.x).to.be.closeTo(7, 0.03);
   });
 
-  it('R resets the scene and says so; Space still pauses and plays', async () => {
+  it('R resets the scene and says so; Space pauses and plays and says so', async () => {
     scene = await mount('width="16" height="9" paused', `<physics-circle id="ball" x="8" y="2" radius="0.5"></physics-circle>`);
     const ball = scene.querySelector<PhysicsCircleElement>('#ball')!;
     await simulated(scene, ball);
@@ -82,9 +82,12 @@ describe('<physics-scene> keyboard', () => {
     await waitFor(async () => (await scene!.stateHash()) === start, 'the reset');
     await waitFor(() => Math.abs(ball.y - 2) < 1e-9, 'the ball back at its start');
     expect(said(scene)).to.equal('Reset');
+    // Space plays and pauses, and says which (the play control shows while paused).
     expect(press(scene, ' ')).to.equal(true);
-    expect(scene.paused).to.equal(false);
+    expect([scene.paused, said(scene)]).to.deep.equal([false, 'Playing']);
     expect(press(scene, ' ')).to.equal(true);
-    expect(scene.paused).to.equal(true);
+    expect([scene.paused, said(scene)]).to.deep.equal([true, 'Paused']);
+    await scene.updateComplete;
+    expect(scene.shadowRoot!.querySelector('[part="play-button"]')).to.not.equal(null);
   });
 });

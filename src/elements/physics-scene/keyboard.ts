@@ -3,8 +3,7 @@
 // push the picked body (with nothing picked, an arrow key picks the first), Escape lets go of it and the Tab after it
 // leaves the scene (a scene of many bodies is two keys to pass, not one per body), R resets the scene.
 // A ring drawn over the canvas (a DOM overlay placed from the body's box in the newest frame) shows the picked body,
-// and a live region tells screen readers ("Picked box 2 of 5", "Reset"). Space (pause) is the visibility
-// controller's.
+// and a live region tells screen readers ("Picked box 2 of 5", "Reset", "Paused"). Space pauses and plays.
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import type { Box } from './outlines.js';
 
@@ -22,6 +21,8 @@ export interface KeyboardOptions {
   /** Pushes body `key`: one press of an arrow key in direction (dx, dy), a unit vector (y grows downward). */
   push(key: number, dx: number, dy: number): void;
   reset(): void;
+  /** Pauses a running scene or plays a paused one (Space); returns whether it is paused now. */
+  togglePause(): boolean;
   /** The ring that shows the picked body (an element of the shadow root), or null before the first render. */
   ring(): HTMLElement | null;
   /** The live region for announcements, or null before the first render. */
@@ -141,6 +142,11 @@ export class KeyboardController implements ReactiveController {
       }
       e.preventDefault();
       this.pick(next < 0 ? null : bodies[next].key, true);
+      return;
+    }
+    if (e.key === ' ' || e.code === 'Space') {
+      e.preventDefault();
+      if (!e.repeat) this.announce(this.options.togglePause() ? 'Paused' : 'Playing');
       return;
     }
     if (e.shiftKey) return;

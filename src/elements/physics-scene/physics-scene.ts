@@ -54,7 +54,7 @@ let workerFactory: (() => Worker) | null = null;
  * Embedding: the scene steps only while it is on screen and the page is visible (no frames, no engine ticks
  * otherwise); with `prefers-reduced-motion: reduce` it starts paused and shows a play control; it is focusable: Space
  * toggles pause, Tab picks the bodies one by one, the arrow keys push the picked body, Escape lets go (the Tab after it
- * leaves the scene), R resets (told to screen readers in a live region); it gets `role="group"`, `aria-label`,
+ * leaves the scene), R resets (each told to screen readers in a live region); it gets `role="group"`, `aria-label`,
  * `aria-keyshortcuts="Space R"` and `aria-description` unless the page sets them. A touch where no body is drawn scrolls or zooms the page; a touch on a
  * body drags it. Before the script runs, a page reserves the element's box with `style="display:block;
  * aspect-ratio:16/9;overflow:hidden"` (its view's width / height), so nothing moves when it starts.
@@ -301,6 +301,7 @@ export class PhysicsSceneElement extends LitElement {
     reset: () => void this.reset().catch((error: unknown) => {
       if (!(error instanceof EngineStoppedError)) throw error;
     }),
+    togglePause: () => this.visibility.toggle(),
     ring: () => this.renderRoot?.querySelector<HTMLElement>('.ring') ?? null,
     liveRegion: () => this.renderRoot?.querySelector<HTMLElement>('.announcer') ?? null,
   });

@@ -129,14 +129,17 @@ export const sceneStyles = css`
     margin: -28px 0 0 -28px;
     border: 0;
     border-radius: 50%;
+    /* A dark disc on a light canvas, a light one on a dark canvas (the page's dark scheme). */
     background: #14181ebb;
+    background: light-dark(#14181ebb, #eef1f5dd);
     color: #fff;
+    color: light-dark(#fff, #14181e);
     font: 22px/56px system-ui, sans-serif;
     cursor: pointer;
     padding: 0 0 0 4px;
   }
   .play:focus-visible {
-    outline: 3px solid #fff;
+    outline: 3px solid;
     outline-offset: -6px;
   }
   ${schemeProbeStyles}

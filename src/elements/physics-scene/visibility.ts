@@ -2,9 +2,9 @@
 // When it may start: once it comes near the viewport (within about a viewport's height or width of it, a second
 // observer with a root margin), or once a script asks for it (ready, step(), …): a post with many scenes starts only
 // those a reader is about to see.
-// With `prefers-reduced-motion: reduce` it starts paused and shows a play control; Space toggles pause while the
-// scene has focus (it is focusable, with a role, a label and its key shortcuts, unless the page set its own; the other
-// keys are the keyboard controller's).
+// With `prefers-reduced-motion: reduce` it starts paused and shows a play control, as a pause with Space does (the
+// keyboard controller's, while the scene has focus: it is focusable, with a role, a label and its key shortcuts, unless
+// the page set its own).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { track } from '../../worker/resources.js';
 
@@ -87,7 +87,6 @@ export class VisibilityController implements ReactiveController {
     this.nearby = options.nearby !== undefined ? options.nearby : observer;
     this.reducedMotion = options.reducedMotion ?? prefersReducedMotion;
     host.addController(this);
-    host.addEventListener('keydown', this.onKeyDown);
   }
 
   /** In the document, on screen and the page visible (frames are drawn). */
@@ -119,6 +118,16 @@ export class VisibilityController implements ReactiveController {
   play(): void {
     this.playRequested = true;
     this.host.paused = false;
+  }
+
+  /** Space: plays a paused scene, or pauses it and shows the play control. Returns whether it is paused now. */
+  toggle(): boolean {
+    if (this.host.paused) this.play();
+    else {
+      this.host.paused = true;
+      this.showPlayControl();
+    }
+    return this.host.paused;
   }
 
   hostConnected(): void {
@@ -234,15 +243,4 @@ export class VisibilityController implements ReactiveController {
     this.options.changed();
   };
 
-  private readonly onKeyDown = (event: Event): void => {
-    const e = event as KeyboardEvent;
-    if ((e.key !== ' ' && e.code !== 'Space') || e.composedPath()[0] !== this.host || e.altKey || e.ctrlKey || e.metaKey) return;
-    e.preventDefault();
-    if (e.repeat) return;
-    if (this.host.paused) this.play();
-    else {
-      this.host.paused = true;
-      this.showPlayControl();
-    }
-  };
 }

@@ -1,5 +1,5 @@
 // The keyboard on its own, with a fake host and fake bodies: Tab and Shift+Tab through the bodies and out of the scene,
-// arrow keys push (or pick the first), Escape lets go, R resets, what the live region says, and the ring placed
+// arrow keys push (or pick the first), Escape lets go, R resets, Space pauses and plays, what the live region says, and the ring placed
 // around the picked body's box.
 import { expect } from '@open-wc/testing';
 import { KeyboardController, type PickableBody } from '../../../src/elements/physics-scene/keyboard.js';
@@ -15,12 +15,14 @@ function rig(bodies: PickableBody[] = [{ key: 7, label: 'box' }, { key: 9, label
   host.append(ring, live);
   const pushes: [number, number, number][] = [];
   let resets = 0;
+  let paused = false;
   const boxes = new Map<number, Box>([[9, { left: 10, top: 20, right: 30, bottom: 60 }]]);
   const keyboard = new KeyboardController(host, {
     bodies: () => bodies,
     bounds: (key) => boxes.get(key) ?? null,
     push: (key, dx, dy) => pushes.push([key, dx, dy]),
     reset: () => resets++,
+    togglePause: () => (paused = !paused),
     ring: () => ring,
     liveRegion: () => live,
   });
@@ -30,7 +32,7 @@ function rig(bodies: PickableBody[] = [{ key: 7, label: 'box' }, { key: 9, label
     host.dispatchEvent(e);
     return e.defaultPrevented;
   };
-  return { host, keyboard, ring, live, pushes, resets: () => resets, press, boxes, bodies };
+  return { host, keyboard, ring, live, pushes, resets: () => resets, paused: () => paused, press, boxes, bodies };
 }
 
 describe('KeyboardController', () => {
@@ -102,6 +104,22 @@ describe('KeyboardController', () => {
     expect([r.press('r'), r.resets(), r.live.textContent]).to.deep.equal([true, 1, 'Reset']);
     expect([r.press('R'), r.resets(), r.live.textContent]).to.deep.equal([true, 2, 'Reset\u00a0']);
     expect([r.press('r', { repeat: true }), r.resets()]).to.deep.equal([true, 2]);
+  });
+
+  it('Space pauses and plays and says which ("Paused", "Playing"); held down it toggles once; not with Ctrl, Alt or Meta, not from inside', () => {
+    const r = rig();
+    host = r.host;
+    document.body.append(host);
+    expect([r.press(' ', { code: 'Space' }), r.paused(), r.live.textContent]).to.deep.equal([true, true, 'Paused']);
+    expect([r.press(' ', { code: 'Space', repeat: true }), r.paused(), r.live.textContent]).to.deep.equal([true, true, 'Paused']);
+    expect([r.press(' ', { code: 'Space' }), r.paused(), r.live.textContent]).to.deep.equal([true, false, 'Playing']);
+    expect([r.press(' ', { code: 'Space', shiftKey: true }), r.paused(), r.live.textContent]).to.deep.equal([true, true, 'Paused']);
+    expect([r.press(' ', { code: 'Space', ctrlKey: true }), r.press(' ', { code: 'Space', altKey: true }), r.paused()]).to.deep.equal([false, false, true]);
+    const inner = document.createElement('button');
+    host.append(inner);
+    const e = new KeyboardEvent('keydown', { key: ' ', code: 'Space', bubbles: true, composed: true, cancelable: true });
+    inner.dispatchEvent(e);
+    expect([e.defaultPrevented, r.paused()]).to.deep.equal([false, true]);
   });
 
   it('with no bodies Tab and the arrows are the page\'s; keys from inside the shadow root (the play button) are not the scene\'s', () => {
