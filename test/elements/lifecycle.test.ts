@@ -216,21 +216,42 @@ describe('<physics-scene> lifecycle', () => {
     }
   });
 
-  it('a new worker attribute restarts the running scene in that mode, in one update (no update scheduled after one)', async () => {
+  it('a new worker mode carries the scene over to an engine in that mode (same step, same state), in one update; a value that leaves the mode as it is changes nothing', async () => {
     const warnings: string[] = [];
     const warn = console.warn;
     console.warn = (...args: unknown[]) => warnings.push(args.join(' '));
     let scene: PhysicsSceneElement | null = null;
     try {
-      scene = await mount('width="10" height="10"', CHILDREN);
+      scene = await mount('width="10" height="10" paused', CHILDREN);
+      const errors: string[] = [];
+      scene.addEventListener('physics-error', (e) => errors.push(`${e.detail.attribute}=${e.detail.value}`));
       expect(scene.mode).to.equal('worker');
-      for (const [worker, mode] of [['none', 'main'], ['auto', 'worker']] as const) {
+      await scene.step(60);
+      const ball = scene.querySelector('physics-circle')!;
+      let y = ball.y;
+      expect(y).to.be.above(2.5);
+      let hash = await scene.stateHash();
+      // "abc" is reported and falls back to "auto", where the engine runs already: the same engine goes on.
+      const engine = scene.client;
+      scene.setAttribute('worker', 'abc');
+      await scene.updateComplete;
+      expect(errors).to.deep.equal(['worker=abc']);
+      expect(warnings.filter((w) => w.includes('worker="abc"'))).to.have.length(1);
+      expect(scene.client === engine, 'the same engine').to.equal(true);
+      expect([scene.stepCount, await scene.stateHash()]).to.deep.equal([60, hash]);
+      for (const [worker, mode, steps] of [['none', 'main', 60], ['auto', 'worker', 90], ['', 'worker', 120]] as const) {
         scene.worker = worker;
         await scene.updateComplete;
-        await scene.ready;
-        await waitFor(() => scene!.mode === mode, `mode ${mode} after worker="${worker}"`);
-        expect(await scene.step(3)).to.be.greaterThan(0);
+        // The engine in the new mode goes on from where the old one was: the same step, the same state.
+        expect(await scene.stateHash(), `the state after worker="${worker}"`).to.equal(hash);
+        expect([scene.mode, scene.stepCount], `after worker="${worker}"`).to.deep.equal([mode, steps]);
+        expect(ball.y).to.equal(y);
+        expect(scene.paused).to.equal(true);
+        expect(await scene.step(30)).to.equal(steps + 30);
+        hash = await scene.stateHash();
+        y = ball.y;
       }
+      expect(errors).to.deep.equal(['worker=abc']);
       expect(warnings.filter((w) => w.includes('scheduled an update')), warnings.join('\n')).to.deep.equal([]);
     } finally {
       console.warn = warn;

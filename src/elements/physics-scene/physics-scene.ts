@@ -643,9 +643,14 @@ export class PhysicsSceneElement extends LitElement {
   };
 
   protected override willUpdate(changed: PropertyValues): void {
-    // A new `worker` restarts the engine in that mode. Here, before the render: the state stop() resets is part of
-    // this update (in updated() it scheduled another); start() waits for the update to complete.
-    if (changed.has('worker') && changed.get('worker') !== undefined && this.session.engine) {
+    // A `worker` that changes where the engine runs ("none": the main thread; anything else, "auto" or a bad value
+    // reported, a worker) replaces the engine: a loaded one carries its state over (recovery), one still starting
+    // starts again. Here, before the render: the state stop() resets is part of this update (in updated() it
+    // scheduled another); start() waits for the update to complete.
+    const engine = this.session.engine;
+    if (!changed.has('worker') || !engine || engine.mode === (this.worker === 'none' ? 'main' : 'worker')) return;
+    if (this.session.live) void this.recovery.replace();
+    else {
       this.stop();
       void this.session.start();
     }

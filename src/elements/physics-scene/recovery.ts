@@ -12,7 +12,7 @@
 // newest frames) and the scene resumes from what the user saw. While a snapshot is being taken the worker does not
 // step: that is not a stall (its answer is a sign of life; a worker that died meanwhile fails that call instead).
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
-import type { FramePatch, HostError, HostScene, HostSnapshot } from '../../worker/protocol.js';
+import type { FramePatch, HostError, HostParams, HostScene, HostSnapshot } from '../../worker/protocol.js';
 import type { Engine, EngineFactory, EngineSession } from './session.js';
 
 /** Milliseconds between snapshots while the scene steps (at least). */
@@ -187,6 +187,22 @@ export class RecoveryController implements ReactiveController {
     void this.restart(session.generation, saved?.snapshot ?? null, frame, saved?.grab ?? null);
   }
 
+  /**
+   * The live engine is replaced by one made anew (another `worker` mode), which carries on from the old one's state:
+   * paused, snapshot, then restored into the new one as after a restart (not counted as one, nothing reported).
+   */
+  async replace(): Promise<void> {
+    const { session, scene } = this.options;
+    const old = session.live!;
+    const [gen, grab] = [session.generation, scene.grab()];
+    // Out of the session at once: calls wait for the new engine (ready), the old one's frames stay drawn meanwhile.
+    session.suspend(old);
+    this.watch(false);
+    scene.lost();
+    const snapshot = await old.api.pause().then(() => old.api.snapshot()).catch(() => null);
+    await this.restart(gen, snapshot, null, grab);
+  }
+
   /** A new engine loaded from the markup, then the last snapshot (and frame) restored and later markup changes applied. */
   private async restart(gen: number, snapshot: HostSnapshot | null, frame: FramePatch | null, grab: number | null): Promise<void> {
     const { session, scene } = this.options;
@@ -241,7 +257,10 @@ export class RecoveryController implements ReactiveController {
     for (const key of bodies.keys()) if (!scene.bodies.some((b) => b.key === key)) calls.push(engine.api.removeBody(key));
     for (const l of scene.links) if (links.get(l.key) !== JSON.stringify(l.desc)) calls.push(engine.api.updateLink(l).then(report));
     for (const key of links.keys()) if (!scene.links.some((l) => l.key === key)) calls.push(engine.api.removeLink(key));
-    if (scene.params) calls.push(engine.api.setParams(scene.params));
+    // The parameters changed since (setting one as it was would still wake the bodies: not the snapshot's state).
+    const params: Record<string, unknown> = { ...scene.params };
+    for (const k in params) if (JSON.stringify(params[k]) === JSON.stringify(snapshot.params[k as keyof HostParams])) delete params[k];
+    calls.push(engine.api.setParams(params));
     // A drag held when the snapshot was taken has no pointer any more.
     if (grab !== null) calls.push(engine.api.release(grab));
     await Promise.all(calls);
