@@ -466,10 +466,11 @@ export class PhysicsSceneElement extends LitElement {
    */
   async restore(snapshot: HostSnapshot): Promise<void> {
     const engine = await this.session.running('restore()');
-    const s = snapshot as Partial<HostSnapshot> | null;
-    if (s === null || typeof s !== 'object' || !Array.isArray(s.bodies) || !Array.isArray(s.links) || typeof s.world !== 'object' || s.world === null || typeof s.params !== 'object' || s.params === null) {
-      const got = s === null || typeof s !== 'object' ? String(s) : `an object without its ${['world', 'bodies', 'links', 'params'].filter((k) => typeof (s as Record<string, unknown>)[k] !== 'object' || (s as Record<string, unknown>)[k] === null).join(', ') || 'bodies and links as arrays'}`;
-      throw new TypeError(`restore() takes an object snapshot() gave, got ${got}`);
+    const s = snapshot as unknown as Record<string, unknown> | null;
+    // Which of a snapshot's four objects it lacks (null: it is no object at all).
+    const lacks = s === null || typeof s !== 'object' ? null : ['world', 'bodies', 'links', 'params'].filter((k) => typeof s[k] !== 'object' || s[k] === null);
+    if (!lacks || lacks.length > 0 || !Array.isArray(s!.bodies) || !Array.isArray(s!.links)) {
+      throw new TypeError(`restore() takes an object snapshot() gave, got ${lacks ? `an object without its ${lacks.join(', ') || 'bodies and links as arrays'}` : String(s)}`);
     }
     const mismatch = this.markup.mismatch(snapshot, this.snapshotsMatchMarkup);
     if (mismatch) throw new RangeError(mismatch);
