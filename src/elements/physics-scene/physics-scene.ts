@@ -154,7 +154,11 @@ export class PhysicsSceneElement extends LitElement {
    * scheme is dark (`color-scheme: dark`, or "light dark" for a reader who prefers dark): the default colours follow it.
    */
   @property() background?: string;
-  /** "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. */
+  /**
+   * "auto" (default): the engine runs in a Web Worker when possible; "none": on the main thread. A change that moves
+   * the engine carries the simulation over (the same step and state, in an engine of the new mode); one that leaves it
+   * where it runs (a bad value reads as "auto") does nothing but its report.
+   */
   @property() worker = 'auto';
   /**
    * The solver kernel: "auto" (default) runs the particle solver (cloth, ropes, soft bodies) in WebAssembly with SIMD
