@@ -194,7 +194,8 @@ export class RecoveryController implements ReactiveController {
   async replace(): Promise<void> {
     const { session, scene } = this.options;
     const old = session.live!;
-    const [gen, grab] = [session.generation, scene.grab()];
+    const gen = session.generation;
+    const grab = scene.grab();
     // Out of the session at once: calls wait for the new engine (ready), the old one's frames stay drawn meanwhile.
     session.suspend(old);
     this.watch(false);

@@ -124,8 +124,8 @@ export class VisibilityController implements ReactiveController {
   toggle(): boolean {
     if (this.host.paused) this.play();
     else {
-      this.host.paused = true;
-      this.showPlayControl();
+      this.host.paused = this.playControl = true;
+      this.host.requestUpdate();
     }
     return this.host.paused;
   }
@@ -138,10 +138,7 @@ export class VisibilityController implements ReactiveController {
     if (!host.hasAttribute('aria-keyshortcuts')) host.setAttribute('aria-keyshortcuts', 'Space R');
     if (!this.motionChecked) {
       this.motionChecked = true;
-      if (!this.host.paused && !this.playRequested && this.reducedMotion()) {
-        this.host.paused = true;
-        this.showPlayControl();
-      }
+      if (!this.host.paused && !this.playRequested && this.reducedMotion()) this.toggle();
     }
     this.setWatching(true);
     // Back in the document (or in it for the first time): the scene's running state follows at once.
@@ -165,11 +162,6 @@ export class VisibilityController implements ReactiveController {
     this.play();
     this.host.focus();
   };
-
-  private showPlayControl(): void {
-    this.playControl = true;
-    this.host.requestUpdate();
-  }
 
   private setWatching(on: boolean): void {
     if (on === this.watching) return;
