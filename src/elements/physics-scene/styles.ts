@@ -11,6 +11,20 @@
 import { css } from 'lit';
 import { schemeProbeStyles } from './scheme.js';
 
+// The rules, and why (here, not in the stylesheet, whose comments would ship in every build):
+// - :host: min-width 0, as a flex row may shrink it below the sizer's width (as it shrinks text).
+// - .stage: direction and writing-mode, as the canvas's corner markers (stage.ts) sit at their static position, which
+//   a right-to-left or vertical page would move to the other side.
+// - .sizer: the only child in flow: the box's width where the layout asks for one from the content (a flex row, an
+//   inline-block, a float, an auto grid column): 300 px as a canvas or a video would have, or the container's width
+//   when narrower; no height. Elsewhere a block fills its container and this changes nothing.
+// - .fallback: under the stage: seen until the canvas draws its first frame over it, hidden once the scene is ready.
+// - .error: at the top, where a scene is mostly empty (bodies fall and rest on a floor at the bottom); opaque, and at
+//   least about five lines tall in a small scene (a phone's), so the list reads over a busy scene and scrolls past
+//   them. Its background: a shade along the bottom edge while more lines are below (the cover, attached to the
+//   content, hides it at the end): a scrolling list shows that it scrolls.
+// - .play: a dark disc on a light canvas, a light one on a dark canvas (the page's dark scheme).
+// - slot: body and link elements (the default slot) are never shown; fallback elements keep their own display.
 /** @internal */
 export const sceneStyles = css`
   :host {
@@ -22,7 +36,6 @@ export const sceneStyles = css`
     user-select: none;
     -webkit-user-select: none;
     contain: layout paint;
-    /* A flex row may shrink it below the sizer's width (as it shrinks text). */
     min-width: 0;
   }
   :host([hidden]) {
@@ -36,22 +49,14 @@ export const sceneStyles = css`
   .stage {
     position: absolute;
     inset: 0;
-    /* The canvas's corner markers (stage.ts) sit at their static position, which a right-to-left or vertical page
-       would move to the other side. */
     direction: ltr;
     writing-mode: horizontal-tb;
   }
-  /*
-   * The only child in flow: the box's width where the layout asks for one from the content (a flex row, an
-   * inline-block, a float, an auto grid column): 300 px as a canvas or a video would have, or the container's width
-   * when narrower; no height. Elsewhere a block fills its container and this changes nothing.
-   */
   .sizer {
     width: 300px;
     max-width: 100%;
     height: 0;
   }
-  /* Under the stage: seen until the canvas draws its first frame over it, hidden once the scene is ready. */
   .fallback {
     position: absolute;
     inset: 0;
@@ -92,8 +97,6 @@ export const sceneStyles = css`
   .error[hidden] {
     display: none;
   }
-  /* At the top, where a scene is mostly empty (bodies fall and rest on a floor at the bottom); opaque, and at least
-     about five lines tall in a small scene (a phone's), so the list reads over a busy scene and scrolls past them. */
   .error {
     position: absolute;
     left: 6px;
@@ -108,8 +111,6 @@ export const sceneStyles = css`
     border-radius: 4px;
     --error-paper: #fff3ef;
     --error-paper: light-dark(#fff3ef, #3a1e1a);
-    /* A shade along the bottom edge while more lines are below (the cover, attached to the content, hides it at the
-       end): a scrolling list shows that it scrolls. */
     background:
       linear-gradient(transparent, var(--error-paper) 70%) center bottom / 100% 1.6em no-repeat local,
       radial-gradient(farthest-side at 50% 100%, #8a1c0c55, transparent) center bottom / 100% 0.7em no-repeat scroll,
@@ -129,7 +130,6 @@ export const sceneStyles = css`
     margin: -28px 0 0 -28px;
     border: 0;
     border-radius: 50%;
-    /* A dark disc on a light canvas, a light one on a dark canvas (the page's dark scheme). */
     background: #14181ebb;
     background: light-dark(#14181ebb, #eef1f5dd);
     color: #fff;
@@ -143,7 +143,6 @@ export const sceneStyles = css`
     outline-offset: -6px;
   }
   ${schemeProbeStyles}
-  /* Body and link elements (the default slot) are never shown; fallback elements keep their own display. */
   slot:not([name])::slotted(*) {
     display: none;
   }
