@@ -8,6 +8,7 @@
 import { ParticleFlag, type ParticleStore } from '../particles.js';
 import type { BodyRegistry } from '../body-registry.js';
 import { grown } from '../table.js';
+import { angularMomentum, centre } from './spin.js';
 
 /** Gauss–Seidel passes over a substep's bounces (a box landing flat converges by 1/9 a pass). */
 const PASSES = 8;
@@ -219,7 +220,7 @@ function loadFrame(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry, i: n
   const slot = bodies.ownerOf(i);
   if (slot < 0) return;
   const rows = bodies.particles[slot];
-  const { x, y, vx, vy, invMass } = p;
+  const { vx, vy, invMass } = p;
   let movable = bodies.kind[slot] === 'rigid' && rows.length >= 2;
   let held = true;
   for (const r of rows) {
@@ -236,44 +237,22 @@ function loadFrame(b: FrameBounces, p: ParticleStore, bodies: BodyRegistry, i: n
     b.frame = grown(b.frame, b.frameSlot.length * FRAME_FIELDS);
   }
   b.frameSlot[f] = slot;
-  let m = 0;
-  let mx = 0;
-  let my = 0;
-  let px = 0;
-  let py = 0;
   for (const r of rows) {
     if (held) {
       vx[r] = (p.qx[r] - p.px[r]) / h;
       vy[r] = (p.qy[r] - p.py[r]) / h;
     }
-    const mr = 1 / invMass[r];
-    m += mr;
-    mx += mr * x[r];
-    my += mr * y[r];
-    px += mr * vx[r];
-    py += mr * vy[r];
     b.frameOf[r] = f;
   }
-  const cx = mx / m;
-  const cy = my / m;
-  const ux = px / m;
-  const uy = py / m;
-  let inertia = 0;
-  let spin = 0;
-  for (const r of rows) {
-    const mr = 1 / invMass[r];
-    const rx = x[r] - cx;
-    const ry = y[r] - cy;
-    inertia += mr * (rx * rx + ry * ry);
-    spin += mr * (rx * (vy[r] - uy) - ry * (vx[r] - ux));
-  }
+  const spin = angularMomentum(p, rows);
+  const inertia = centre[2];
   const o = f * FRAME_FIELDS;
-  b.frame[o + MASS] = m;
-  b.frame[o + CX] = cx;
-  b.frame[o + CY] = cy;
+  b.frame[o + MASS] = centre[5];
+  b.frame[o + CX] = centre[0];
+  b.frame[o + CY] = centre[1];
   b.frame[o + INERTIA] = inertia;
-  b.frame[o + VX] = ux;
-  b.frame[o + VY] = uy;
+  b.frame[o + VX] = centre[3];
+  b.frame[o + VY] = centre[4];
   b.frame[o + OMEGA] = inertia > 0 ? spin / inertia : 0;
   b.frame[o + SPIN] = spin;
 }

@@ -14,7 +14,7 @@
 // scales the target by what it takes in the step.
 //
 // The same fit of a rigid motion (the centre's velocity and ω = L / I) damps the area loops' deformation (dampLoops).
-import { ParticleFlag } from '../particles.js';
+import { ParticleFlag, type ParticleStore } from '../particles.js';
 import { grown } from '../table.js';
 import type { StepContext } from './context.js';
 import { eachLinkedPair } from './linked.js';
@@ -90,7 +90,7 @@ export function recordFreeSpin(ctx: StepContext): void {
         break;
       }
     }
-    start[s] = outside ? NaN : angularMomentum(ctx, idx);
+    start[s] = outside ? NaN : angularMomentum(ctx.particles, idx);
   }
 }
 
@@ -110,12 +110,15 @@ function reached(bodyA: Int32Array, bodyB: Int32Array, count: number, start: Flo
   }
 }
 
-/** Scratch of angularMomentum(): the body's centre of mass (x, y), its moment of inertia about it, its velocity (x, y). */
-const centre = new Float64Array(5);
+/** Scratch of angularMomentum(): the body's centre of mass (x, y), its moment of inertia about it, its velocity (x, y), its mass. */
+export const centre = new Float64Array(6);
 
-/** L = Σ m (r × (v − v̄)) about the centre of mass of the particles idx[from..to) (all movable); fills `centre`. */
-function angularMomentum(ctx: StepContext, idx: Int32Array, from = 0, to = idx.length): number {
-  const { x, y, vx, vy, invMass } = ctx.particles;
+/**
+ * L = Σ m (r × (v − v̄)) about the centre of mass of the particles idx[from..to) (all movable); fills `centre`. Free
+ * spin, the area loops' damping and the particle frames' bounces (frame-bounces.ts) take a body's rigid motion here.
+ */
+export function angularMomentum(p: ParticleStore, idx: Int32Array, from = 0, to = idx.length): number {
+  const { x, y, vx, vy, invMass } = p;
   let m = 0;
   let cx = 0;
   let cy = 0;
@@ -149,6 +152,7 @@ function angularMomentum(ctx: StepContext, idx: Int32Array, from = 0, to = idx.l
   centre[2] = I;
   centre[3] = cvx;
   centre[4] = cvy;
+  centre[5] = m;
   return L;
 }
 
@@ -171,7 +175,7 @@ export function keepFreeSpin(ctx: StepContext, substeps: number, damp: number): 
     let walled = false;
     if (walls) for (let k = 0; k < idx.length; k++) if (walls[idx[k]] !== 0) walled = true;
     if (walled) continue;
-    const L = angularMomentum(ctx, idx);
+    const L = angularMomentum(ctx.particles, idx);
     const I = centre[2];
     const dw = (L0 * scale - L) / I;
     // A body of coincident particles (I = 0) has no turn to mend; a non-finite row is keepRowsFinite's.
@@ -204,7 +208,7 @@ export function dampLoops(ctx: StepContext, dt: number): void {
     let free = damping[r] > 0;
     for (let k = from; k < to; k++) if (invMass[pool[k]] === 0) free = false;
     if (!free) continue;
-    const w = angularMomentum(ctx, pool, from, to) / centre[2];
+    const w = angularMomentum(ctx.particles, pool, from, to) / centre[2];
     // Coincident particles (I = 0) have no turn; a non-finite row is keepRowsFinite's.
     if (!Number.isFinite(w)) continue;
     const keep = 1 / (1 + damping[r] * dt);
