@@ -197,11 +197,16 @@ export abstract class PhysicsBodyElement extends LitElement {
     for (const name of names) check.number(name, declared[name]);
   }
 
+  /** Whether the engine weighs this body when it is static too (a rigid body or frame: setBodyType may make it dynamic). */
+  protected get staticHasMass(): boolean {
+    return true;
+  }
+
   /**
    * Mass, density, friction, restitution. With an `area`, a mass from density × area (density 1 when not given) must
    * leave each of the body's `particles` (1 for a rigid body) at least the engine's smallest mass: too small, it is
    * reported on `density` when written, else on `size` (the attribute that makes the area), and false returned: the
-   * body is left out, as the engine would refuse it.
+   * body is left out, as the engine would refuse it. A static body too, unless `staticHasMass` is false.
    */
   protected material(check: Checker, out: Record<string, unknown>, area: number | null, size = '', particles = 1): boolean {
     const mass = check.number('mass', this.mass, { positive: true, min: MIN_MASS });
@@ -210,7 +215,7 @@ export abstract class PhysicsBodyElement extends LitElement {
     // The mass the engine makes from density (default 1) × area, when no mass is written.
     const total = area === null ? NaN : (density ?? 1) * area;
     if (mass !== undefined) out.mass = mass;
-    else if (area !== null && !this.isStatic && !(total >= MIN_MASS * particles && Number.isFinite(total))) {
+    else if (area !== null && (!this.isStatic || this.staticHasMass) && !(total >= MIN_MASS * particles && Number.isFinite(total))) {
       const blame = density !== undefined || !size ? 'density' : size;
       const each = particles > 1 ? `, ${total / particles} for each of its ${particles} particles` : '';
       const rule = Number.isFinite(total) ? `below the smallest, ${MIN_MASS}${particles > 1 ? ' each' : ''}: set mass, or a larger size` : 'not a finite number: set mass';

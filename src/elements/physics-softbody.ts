@@ -40,6 +40,11 @@ export class PhysicsSoftbodyElement extends PhysicsBodyElement {
     return { desc: out as unknown as BodyDescription, problems: check.problems };
   }
 
+  /** A static ring's particles are pinned: the engine gives them no mass to check. */
+  protected override get staticHasMass(): boolean {
+    return false;
+  }
+
   protected defaultStyle() {
     return { fill: '#d45d79', stroke: '#8f2f47' };
   }

@@ -313,21 +313,25 @@ describe('<physics-scene> bad markup', () => {
       `<physics-box id="painted" x="2" y="2" width="1" height="1" fill="#3d7dd8"></physics-box>
        <physics-box id="turned" x="4" y="2" width="1" height="1" angle="0"></physics-box>
        <physics-box id="tiny" x="6" y="2" width="1e-300" height="1"></physics-box>
+       <physics-box id="ledge" x="6" y="8" width="1e-300" height="1" static></physics-box>
+       <physics-softbody id="pinned" x="2" y="8" radius="1e-6" segments="4096" static></physics-softbody>
        <physics-box id="dense" x="8" y="2" width="1e9" height="1" density="1e300"></physics-box>
        <physics-circle id="speck" x="2" y="5" radius="1e-7" density="1e-2"></physics-circle>
        <physics-softbody id="small" x="5" y="5" radius="1e-6" segments="4096"></physics-softbody>
        <physics-softbody id="light" x="8" y="6" radius="1" segments="4096" mass="1e-10"></physics-softbody>`,
       { before },
     );
-    await waitFor(() => errors.length >= 5, 'the five bodies reported');
+    await waitFor(() => errors.length >= 6, 'the six bodies reported');
     const painted = scene.querySelector<PhysicsBoxElement>('#painted')!;
     (painted as unknown as { fill: unknown }).fill = NaN;
     (scene.querySelector<PhysicsBoxElement>('#turned') as unknown as { angle: number }).angle = 1e308;
-    await waitFor(() => errors.length >= 6, 'the script\'s fill reported');
+    await waitFor(() => errors.length >= 7, 'the script\'s fill reported');
     await scene.step(2);
     const seen = errors.map((e) => [e.element.id, e.attribute, e.value]);
     expect(seen).to.have.deep.members([
       ['tiny', 'width', '1e-300'],
+      // A static body needs a mass too (setBodyType may make it dynamic): reported on its size, as a movable one is.
+      ['ledge', 'width', '1e-300'],
       ['dense', 'density', '1e300'],
       ['speck', 'density', '1e-2'],
       ['small', 'radius', '1e-6'],
@@ -341,7 +345,10 @@ describe('<physics-scene> bad markup', () => {
     expect(message('small')).to.include('for each of its 4096 particles');
     // 1e308 degrees is a finite angle (it used to overflow on its way to radians and be refused as Infinity).
     expect(errors.some((e) => e.element.id === 'turned')).to.equal(false);
-    expect(warnings.length).to.equal(6);
+    expect(message('ledge')).to.include('gives a mass of 1e-300');
+    // A static ring's particles are pinned: no mass to check, the engine takes it.
+    expect(errors.some((e) => e.element.id === 'pinned')).to.equal(false);
+    expect(warnings.length).to.equal(7);
     expect(await scene.stateHash()).to.match(/\S/);
   });
 
