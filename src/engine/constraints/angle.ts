@@ -57,8 +57,8 @@ export function solveAngles(c: AngleConstraints, p: ParticleStore, h2: number): 
     // At most MAX_ANGLE_STEP a solve: the correction moves the particles along the angle's tangents, which for a large
     // error flings them outward (a turn of π moved by π·|u| lengthens u 3.3 times), and limits that cannot all hold
     // at once (a ragdoll's own and one added across them) fed that from solve to solve until the doll was at 1e9.
-    if (err > MAX_ANGLE_STEP) err = MAX_ANGLE_STEP;
-    else if (err < -MAX_ANGLE_STEP) err = -MAX_ANGLE_STEP;
+    // (Math.min/max, not branches assigning the module's constant: in a phi with the local doubles V8 boxed every err.)
+    err = Math.min(MAX_ANGLE_STEP, Math.max(-MAX_ANGLE_STEP, err));
     // ∂θ/∂c = perp(v)/|v|², ∂θ/∂a = −perp(u)/|u|², ∂θ/∂b = −(∂θ/∂a + ∂θ/∂c), with perp(x, y) = (−y, x).
     const gax = uy / uu;
     const gay = -ux / uu;
