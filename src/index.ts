@@ -2,26 +2,4 @@
 // the elements, their event details, the drawing hook's types, and the headless engine (so one import gives both).
 // Internals (the worker client and host, frame stores, the wire protocol) stay in their modules.
 export * from './engine/index.js';
-
-export { PhysicsSceneElement } from './elements/physics-scene/physics-scene.js';
-export type { PhysicsErrorDetail, PhysicsCollisionDetail, PhysicsReadyDetail, PhysicsEventDetails, PhysicsEventMap, PhysicsEventName } from './elements/physics-scene/events.js';
-export { PhysicsBodyElement } from './elements/body-element.js';
-export { PhysicsLinkElement } from './elements/link-element.js';
-export { PhysicsBoxElement } from './elements/physics-box.js';
-export { PhysicsCircleElement } from './elements/physics-circle.js';
-export { PhysicsPolygonElement } from './elements/physics-polygon.js';
-export { PhysicsRopeElement } from './elements/physics-rope.js';
-export { PhysicsClothElement } from './elements/physics-cloth.js';
-export { PhysicsSoftbodyElement } from './elements/physics-softbody.js';
-export { PhysicsRagdollElement } from './elements/physics-ragdoll.js';
-export { PhysicsJointElement } from './elements/physics-joint.js';
-export { PhysicsSpringElement } from './elements/physics-spring.js';
-export { PhysicsPinElement } from './elements/physics-pin.js';
-export { ClothSimElement } from './elements/cloth-sim.js';
-export { RagdollSimElement } from './elements/ragdoll-sim.js';
-
-export type { DrawHook, DrawView, BodyStyle } from './render/renderer.js';
-// What an engine call on a scene that is not in the page (or was removed) rejects with: `e instanceof EngineStoppedError`.
-export { EngineStoppedError } from './worker/client.js';
-// What the public API above names: diagnostics(), snapshot()/restore(), physics-ready's transport, DrawView's topology.
-export type { Diagnostics, HostSnapshot, Topology, TopologyBody, Transport } from './worker/protocol.js';
+export * from './bundle.js';
