@@ -17,7 +17,7 @@
 // installed (`apt-get install -y firefox-esr`); without it the Firefox part prints SKIP and why.
 // Usage: node test/e2e/pack.mjs [--no-build]   (--no-build: npm pack --ignore-scripts, for a dist/ just built)
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { extname, join, normalize, resolve } from 'node:path';
 import { animates, artifacts, checker, launch, listen, root } from './harness.mjs';
@@ -69,6 +69,91 @@ try {
 }
 check(existsSync(join(installed, snippetFile ?? '-')), `installed: node_modules/${pkg.name}/${snippetFile} (${elapsed()})`);
 check(!/\bexport\s*\{/.test(readFileSync(join(installed, snippetFile ?? 'package.json'), 'utf8').slice(-4000)), `${snippetFile} is a classic script (it does not end in an export statement)`);
+
+// ---- 2b. an app's TypeScript and Node ---------------------------------------------------------------------------
+// Every "types" of package.json's exports is in the tarball; physics-elements/bundle declares what the single file
+// exports. An app's TypeScript (bundler and nodenext resolution), against the installed package, sees each tag in
+// HTMLElementTagNameMap and each physics-* event's detail (--strict), also through physics-elements/bundle (esbuild's
+// import), and compiles the docs' samples; the headless engine runs in plain Node, by import and by require.
+for (const [path, target] of Object.entries(pkg.exports)) {
+  if (typeof target === 'object' && target.types) check(files.has(target.types.replace(/^\.\//, '')), `exports["${path}"].types (${target.types}) is in the tarball`);
+}
+const bundleNames = (src) => new Set([...(/export\s*\{([^}]*)\}\s*;?\s*$/.exec(src)?.[1] ?? '').matchAll(/(?:\bas\s+)?(\w+)\s*(?:,|$)/g)].map((m) => m[1]));
+const declaredNames = (dts) => new Set([...dts.matchAll(/^export \{([^}]*)\} from/gm)].flatMap((m) => m[1].split(',').map((n) => n.trim()).filter(Boolean)));
+if (existsSync(join(installed, 'dist/types/bundle.d.ts'))) {
+  const [shipped, declared] = [bundleNames(readFileSync(join(installed, 'dist/physics-elements.bundle.js'), 'utf8')), declaredNames(readFileSync(join(installed, 'dist/types/bundle.d.ts'), 'utf8'))];
+  check(shipped.size > 10 && [...shipped].sort().join() === [...declared].sort().join(), `dist/types/bundle.d.ts declares the ${shipped.size} names the single file exports${[...shipped].sort().join() === [...declared].sort().join() ? '' : `: ${[...shipped].filter((n) => !declared.has(n))} undeclared, ${[...declared].filter((n) => !shipped.has(n))} not exported`}`);
+}
+if (existsSync(join(site, 'node_modules', 'lit'))) {
+  const app = join(site, 'app');
+  execFileSync('mkdir', ['-p', app]);
+  // The samples of README.md and docs/*.md that use the package (``` js blocks that import it or call a scene), each a
+  // module of its own, checked as JavaScript (checkJs, --strict but for null checks: a script's querySelector).
+  const samples = ['README.md', ...readdirSync(resolve(root, 'docs')).filter((f) => f.endsWith('.md')).map((f) => `docs/${f}`)].flatMap((doc) =>
+    [...readFileSync(resolve(root, doc), 'utf8').matchAll(/```js\n([\s\S]*?)```/g)].map((m) => ({ doc, code: m[1] })));
+  const used = samples.filter(({ code }) => /'physics-elements(\/engine)?'|\b(scene|world)\./.test(code) && !/from '(?!physics-elements)/.test(code));
+  used.forEach(({ doc, code }, i) => {
+    // A sample that continues another (`scene.…`, `world.…` without making it) gets a scene or a world.
+    const scene = /\bscene\./.test(code) && !/\bconst scene\b/.test(code) ? "const scene = document.querySelector('physics-scene');\n" : '';
+    const world = /\bworld\./.test(code) && !/\b(const|let) \{? ?world\b/.test(code) ? "import { World } from 'physics-elements/engine';\nconst world = new World();\n" : '';
+    writeFileSync(join(app, `sample-${i + 1}.mjs`), `// ${doc}\nimport 'physics-elements';\n${scene}${world}${code}export {};\n`);
+  });
+  const readmeJs = used.filter(({ doc }) => doc === 'README.md').map(({ code }) => code);
+  const tags = { 'physics-scene': 'PhysicsSceneElement', 'cloth-sim': 'ClothSimElement', 'ragdoll-sim': 'RagdollSimElement', 'physics-box': 'PhysicsBoxElement', 'physics-circle': 'PhysicsCircleElement', 'physics-polygon': 'PhysicsPolygonElement', 'physics-rope': 'PhysicsRopeElement', 'physics-cloth': 'PhysicsClothElement', 'physics-softbody': 'PhysicsSoftbodyElement', 'physics-ragdoll': 'PhysicsRagdollElement', 'physics-joint': 'PhysicsJointElement', 'physics-spring': 'PhysicsSpringElement', 'physics-pin': 'PhysicsPinElement' };
+  for (const [name, from] of [['types.mts', 'physics-elements'], ['bundle.mts', 'physics-elements/bundle']]) {
+    writeFileSync(join(app, name), `import * as P from '${from}';
+${Object.entries(tags).map(([tag, cls]) => `export const ${cls.replace('Element', '')}: P.${cls} | null = document.querySelector('${tag}');`).join('\n')}
+const scene = document.querySelector('physics-scene')!, box = document.querySelector('physics-box')!;
+scene.addEventListener('physics-ready', (e) => { const d: P.PhysicsReadyDetail = e.detail; return d.mode === 'worker' && d.transport; });
+scene.addEventListener('physics-collision', (e) => { const a: Element | null = e.detail.b; return [a, e.detail.normal.x, e.detail.depth, e.detail.speed]; });
+scene.addEventListener('physics-collision-end', (e) => e.detail.speed);
+box.addEventListener('physics-error', (e) => { const s: string = e.detail.attribute + e.detail.value + e.detail.message; return [s, e.detail.element]; });
+document.addEventListener('physics-error', (e) => e.detail.attribute);
+// @ts-expect-error no such detail field
+scene.addEventListener('physics-error', (e) => e.detail.nope);
+scene.paused = true;
+export const n: Promise<number> = scene.step(60), h: Promise<string> = scene.stateHash();
+scene.drawHook = ({ p, positions, topology, scale, offsetX, offsetY }) => { for (const b of topology.bodies) for (const i of b.indices) p.circle(offsetX + positions[2 * i] * scale, offsetY + positions[2 * i + 1] * scale, 4); };
+scene.snapshot().then((s: P.HostSnapshot) => scene.restore(s), (e) => e instanceof P.EngineStoppedError);
+`);
+  }
+  const tsc = resolve(root, 'node_modules/typescript/bin/tsc');
+  for (const resolution of ['bundler', 'nodenext']) {
+    const options = ['--noEmit', '--target', 'es2022', '--lib', 'es2022,dom,dom.iterable', '--types', '', '--module', resolution === 'bundler' ? 'esnext' : 'nodenext', '--moduleResolution', resolution];
+    for (const [what, extra, inputs] of [
+      ['the typed elements and events, from physics-elements and physics-elements/bundle', ['--strict'], ['types.mts', 'bundle.mts']],
+      [`the ${used.length} samples of README.md and docs/*.md that use the package, as JavaScript`, ['--strict', '--strictNullChecks', 'false', '--allowJs', '--checkJs'], used.map((_, i) => `sample-${i + 1}.mjs`)],
+    ]) {
+      let out = '';
+      try {
+        execFileSync(process.execPath, [tsc, ...options, ...extra, ...inputs], { cwd: app, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+      } catch (e) {
+        out = `${e.stdout ?? ''}${e.stderr ?? ''}`.trim() || String(e);
+      }
+      check(out === '', `an app's TypeScript (moduleResolution ${resolution}) compiles ${what}${out ? `:\n  ${out.split('\n').slice(0, 12).join('\n  ')}` : ''}`);
+    }
+  }
+  // The README's engine sample, as written, in plain Node (import), and the engine by require() (Node >= 20.19).
+  const engineSample = readmeJs.find((code) => code.includes("from 'physics-elements/engine'")) ?? '';
+  writeFileSync(join(app, 'engine.mjs'), engineSample);
+  const printed = execFileSync(process.execPath, ['engine.mjs'], { cwd: app, encoding: 'utf8' });
+  const comment = /console\.log\(.*\/\/.*?(\{[^}]*\})/.exec(engineSample)?.[1];
+  check(comment !== undefined && printed.replace(/\s+/g, ' ').includes(comment.replace(/\s+/g, ' ')), `node runs the README's engine sample from the installed package and prints what its comment says (${printed.trim()})`);
+  writeFileSync(join(app, 'require.cjs'), "const { World, createBox } = require('physics-elements/engine'); const w = new World(); const b = createBox(w, { x: 0, y: 0, width: 1, height: 1 }); for (let i = 0; i < 60; i++) w.step(); console.log(w.bodyPose(b.body).y.toFixed(3));");
+  const [major, minor] = process.versions.node.split('.').map(Number);
+  if (major > 22 || (major === 22 && minor >= 12) || (major === 20 && minor >= 19)) {
+    let required = '';
+    try {
+      required = execFileSync(process.execPath, ['--no-warnings', 'require.cjs'], { cwd: app, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] }).trim();
+    } catch (e) {
+      required = String(e.stderr ?? e).split('\n').find((l) => /Error/.test(l)) ?? String(e);
+    }
+    check(required === '4.905', `require('physics-elements/engine') works in CommonJS (${required})`);
+  }
+  console.log(`(TypeScript and Node checks done, ${elapsed()})`);
+} else {
+  console.log('SKIP the TypeScript and Node checks: the tarball was unpacked without its dependencies (lit, p5)');
+}
 
 const TYPES = { '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json', '.map': 'application/json', '.ts': 'text/plain' };
 // /npm/<name>@<version>/<file> as jsDelivr lays it out; /nocors/npm/… the same without Access-Control-Allow-Origin.
