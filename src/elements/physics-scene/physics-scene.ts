@@ -188,7 +188,7 @@ export class PhysicsSceneElement extends LitElement {
   get drawHook(): DrawHook | null {
     return this._drawHook;
   }
-  set drawHook(hook: DrawHook | null) {
+  set drawHook(hook: DrawHook | null | undefined) {
     if (hook !== null && hook !== undefined && typeof hook !== 'function') throw new TypeError(`drawHook must be a function or null, got ${typeof hook}`);
     const old = this._drawHook;
     this._drawHook = hook ?? null;
