@@ -77,6 +77,8 @@ check(!/\bexport\s*\{/.test(readFileSync(join(installed, snippetFile ?? 'package
 // import), and compiles the docs' samples; the headless engine runs in plain Node, by import and by require.
 for (const [path, target] of Object.entries(pkg.exports)) {
   if (typeof target === 'object' && target.types) check(files.has(target.types.replace(/^\.\//, '')), `exports["${path}"].types (${target.types}) is in the tarball`);
+  // TypeScript's moduleResolution node10 (TypeScript 5's default for module commonjs) ignores "exports".
+  if (typeof target === 'object' && target.types && path !== '.') check(pkg.typesVersions?.['*']?.[path.slice(2)]?.[0] === target.types, `typesVersions gives "${path.slice(2)}" its types for TypeScript's node10 resolution`);
 }
 const bundleNames = (src) => new Set([...(/export\s*\{([^}]*)\}\s*;?\s*$/.exec(src)?.[1] ?? '').matchAll(/(?:\bas\s+)?(\w+)\s*(?:,|$)/g)].map((m) => m[1]));
 const declaredNames = (dts) => new Set([...dts.matchAll(/^export \{([^}]*)\} from/gm)].flatMap((m) => m[1].split(',').map((n) => n.trim()).filter(Boolean)));
