@@ -331,8 +331,8 @@ export class EngineClient {
   }
 
   /**
-   * @internal Test hook: terminates the worker from outside and tells no one (as if the browser had killed it); every
-   * world in it stops.
+   * Internal test hook (not tagged internal: session.ts's declarations name it): terminates the worker from outside and
+   * tells no one (as if the browser had killed it); every world in it stops.
    */
   debugTerminate(): void {
     this.link?.kill();

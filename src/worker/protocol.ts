@@ -205,7 +205,10 @@ export interface FramePatch {
   spins?: Float64Array | null;
 }
 
-/** @internal Test faults: 'throw' makes the next tick of the step loop throw, 'hang' blocks the worker (busy wait). */
+/**
+ * Internal test faults (not tagged internal: host/faults.ts's declarations name it): 'throw' makes the next tick of the
+ * step loop throw, 'hang' blocks the worker (busy wait).
+ */
 export type DebugFault = 'throw' | 'hang';
 
 /** The command interface of the engine host. Every call returns a promise on the client side. */

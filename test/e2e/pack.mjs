@@ -113,17 +113,24 @@ box.addEventListener('physics-error', (e) => { const s: string = e.detail.attrib
 document.addEventListener('physics-error', (e) => e.detail.attribute);
 // @ts-expect-error no such detail field
 scene.addEventListener('physics-error', (e) => e.detail.nope);
+// @ts-expect-error internal (a test hook): not in the declarations
+void scene._debugFault('hang');
 scene.paused = true;
 export const n: Promise<number> = scene.step(60), h: Promise<string> = scene.stateHash();
 scene.drawHook = ({ p, positions, topology, scale, offsetX, offsetY }) => { for (const b of topology.bodies) for (const i of b.indices) p.circle(offsetX + positions[2 * i] * scale, offsetY + positions[2 * i + 1] * scale, 4); };
 scene.snapshot().then((s: P.HostSnapshot) => scene.restore(s), (e) => e instanceof P.EngineStoppedError);
 `);
   }
+  // Every declaration file in the tarball, the internal modules' too ("./dist/*"), compiles (--stripInternal left none
+  // naming what it stripped).
+  const declarations = execFileSync('find', ['dist/types', '-name', '*.d.ts'], { cwd: installed, encoding: 'utf8' }).trim().split('\n').sort();
+  writeFileSync(join(app, 'all.mts'), declarations.map((f, i) => `import type * as d${i} from '${pkg.name}/${f.replace(/\.d\.ts$/, '.js')}';\n`).join(''));
   const tsc = resolve(root, 'node_modules/typescript/bin/tsc');
   for (const resolution of ['bundler', 'nodenext']) {
     const options = ['--noEmit', '--target', 'es2022', '--lib', 'es2022,dom,dom.iterable', '--types', '', '--module', resolution === 'bundler' ? 'esnext' : 'nodenext', '--moduleResolution', resolution];
     for (const [what, extra, inputs] of [
       ['the typed elements and events, from physics-elements and physics-elements/bundle', ['--strict'], ['types.mts', 'bundle.mts']],
+      ...(resolution === 'bundler' ? [[`the package's ${declarations.length} declaration files`, ['--strict'], ['all.mts']]] : []),
       [`the ${used.length} samples of README.md and docs/*.md that use the package, as JavaScript`, ['--strict', '--strictNullChecks', 'false', '--allowJs', '--checkJs'], used.map((_, i) => `sample-${i + 1}.mjs`)],
     ]) {
       let out = '';

@@ -113,7 +113,7 @@ class Gate {
   }
 }
 
-/** @internal */
+/** @ignore Internal; not tagged internal, which the declarations strip, since recovery.ts's declarations name it. */
 export class EngineSession implements ReactiveController, EngineCommands {
   private current: Engine | null = null;
   /** While a dead engine is replaced (and after giving up): the dead one, whose last frame stays drawn. */
