@@ -12,6 +12,11 @@ export interface Vec2 {
 /** A substep count, or 'auto': chosen per step by what the world holds (see WorldOptions.substeps). */
 export type SubstepChoice = number | 'auto';
 
+/**
+ * The World's settings, each also a property to change later. `new World()` and `buildScene({ world })` take
+ * `WorldOptions & KernelOptions`: the kernel is chosen at construction only, so a variable that holds it too is typed
+ * `const options: WorldOptions & KernelOptions = { kernel: 'wasm', substeps: 8 }`.
+ */
 export interface WorldOptions {
   /** Acceleration of gravity. Default {x: 0, y: 9.81}: y grows downward, as on a canvas or in SVG. */
   gravity?: Vec2;
