@@ -171,4 +171,53 @@ describe('pointer drag: a damped grab', () => {
     };
     expect(run()).to.equal(run());
   });
+
+  it('what a press takes: the very point pressed of a turned rigid body, the movable body behind a static one, the nearest free particle within the pick radius and never a pinned one', () => {
+    // A 2 × 1 rigid box turned by 0.7 rad, pressed 0.6 along its length and 0.2 across from its centre: the grab
+    // holds that point of it (at 0 rad, as every other grab here is taken, a wrong sign in the turn into the body's
+    // frame holds the same point). Held still, nothing moves.
+    const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+    const turn = 0.7;
+    const box = createBox(world, { x: 1, y: 2, width: 2, height: 1, angle: turn }).body;
+    const at = { x: 1 + 0.6 * Math.cos(turn) - 0.2 * Math.sin(turn), y: 2 + 0.6 * Math.sin(turn) + 0.2 * Math.cos(turn) };
+    const g = world.grab(at.x, at.y)!;
+    expect(g).to.not.equal(null);
+    const held = heldPoint(world);
+    expect(held.x).to.be.closeTo(at.x, 1e-12);
+    expect(held.y).to.be.closeTo(at.y, 1e-12);
+    for (let k = 0; k < 60; k++) world.step();
+    expect(world.bodyCentroid(box).x).to.be.closeTo(1, 1e-9);
+    expect(world.bodyCentroid(box).y).to.be.closeTo(2, 1e-9);
+    expect(world.bodyPose(box).angle).to.be.closeTo(turn, 1e-9);
+    world.release(g);
+
+    // A static box drawn over a movable one (created after it): the press takes the movable one; on the static one
+    // alone, nothing.
+    const stack = new World({ gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+    const crate = createBox(stack, { x: 0, y: 0, width: 1, height: 1 }).body;
+    createBox(stack, { x: 0.5, y: 0, width: 1, height: 1, static: true });
+    expect(stack.grab(1.7, 0), 'on nothing').to.equal(null);
+    expect(stack.grab(0.9, 0), 'on the static box alone').to.equal(null);
+    const under = stack.grab(0.2, 0)!;
+    expect(under, 'on the crate under the static box').to.not.equal(null);
+    stack.moveGrab(under, 0.2, 3);
+    for (let k = 0; k < 120; k++) stack.step();
+    // The pressed point of the crate follows the pointer 3 down (the crate swinging about it), the crate with it.
+    expect(Math.hypot(heldPoint(stack).x - 0.2, heldPoint(stack).y - 3), 'the held point at the pointer').to.be.below(0.05);
+    expect(stack.bodyCentroid(crate).y, 'the crate pulled down').to.be.closeTo(3, 0.5);
+
+    // Particles: a pinned one is never taken; the nearest free one within the pick radius (0.5 unless said) is.
+    const free = new World({ gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+    const pinned = free.addParticle({ x: 0, y: 0 });
+    free.addPin(pinned);
+    const loose = free.addParticle({ x: 0.4, y: 0 });
+    const first = free.grab(0, 0)!;
+    expect(first, 'the free particle 0.4 away').to.not.equal(null);
+    expect(heldPoint(free)).to.deep.equal({ x: 0.4, y: 0 });
+    free.release(first);
+    expect(free.grab(-0.11, 0), 'the free particle 0.51 away').to.equal(null);
+    expect(free.grab(0.4, 0.6), '0.6 away').to.equal(null);
+    expect(free.grab(0.4, 0.6, { pickRadius: 0.61 }), '0.6 away, picked within 0.61').to.not.equal(null);
+    expect(free.getPosition(loose)).to.deep.equal({ x: 0.4, y: 0 });
+  });
 });
