@@ -262,6 +262,30 @@ describe('EngineHost (no worker)', () => {
     expect(h.host.diagnostics().substepCount).to.equal(4);
   });
 
+  it('the params a scene is loaded or set with are the world\'s, in the world built then and in every one rebuilt (a reset, a kernel switch)', () => {
+    // The host keeps its own copy of the params (snapshot().params, which the test above reads); the world is built
+    // from forWorld(). A timestep, iterations or phases left out of it ran the world at the defaults while the host
+    // said otherwise: nothing here looked at the world itself.
+    for (const when of ['load', 'reset', 'kernel switch', 'set, then reset'] as const) {
+      const h = makeHost();
+      const params = { timestep: 1 / 30, iterations: 3, broadphase: 'brute', narrowphase: 'gjk', bounds: { minX: -10, minY: -10, maxX: 10, maxY: 3.5 } } as const;
+      h.host.load({ world: { sleeping: false }, params: when === 'set, then reset' ? {} : params, bodies: [{ key: 1, desc: { type: 'circle', x: 0, y: 0, radius: 0.5 } }], links: [] });
+      if (when === 'set, then reset') expect(h.host.setParams(params)).to.equal(null);
+      if (when === 'reset' || when === 'set, then reset') h.host.reset();
+      if (when === 'kernel switch') h.host.setParams({ kernel: h.host.diagnostics().kernelRequested === 'wasm' ? 'js' : 'wasm' });
+      const settings = (h.host.snapshot().world as unknown as { settings: Record<string, unknown> }).settings;
+      expect([settings.timestep, settings.iterations, settings.broadphase, settings.narrowphase], when).to.deep.equal([1 / 30, 3, 'brute', 'gjk']);
+      expect(settings.bounds, when).to.deep.equal(params.bounds);
+      expect(h.host.snapshot().params, when).to.deep.include({ timestep: 1 / 30, iterations: 3, broadphase: 'brute', narrowphase: 'gjk', bounds: params.bounds });
+      // 15 steps of 1/30 s: ½·9.81·0.5² = 1.22625 fallen (1/60 s steps would give a quarter of it).
+      h.host.step(15);
+      expect(decode(h.frame).poses[0][1], when).to.be.closeTo(0.5 * 9.81 * 0.25, 1e-9);
+      // Then it lands on the bounds' floor at 3.5, its centre at 3.
+      h.host.step(60);
+      expect(decode(h.frame).poses[0][1], when).to.be.closeTo(3, 0.01);
+    }
+  });
+
   it('refuses bad descriptions with the key, the field and a message; the rest of the scene loads', () => {
     const h = makeHost();
     const errors = h.host.load({
