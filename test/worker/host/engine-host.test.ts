@@ -453,6 +453,10 @@ describe('EngineHost (no worker)', () => {
     const box = decode(other.frame).poses[1];
     expect(other.host.bodiesAt(box[0], box[1])).to.deep.equal([1]);
     expect(other.host.diagnostics()).to.include({ bodyCount: 8, linkCount: 1 });
+    // The params come back with it (the host's record of them, which a rebuilt world is made from).
+    other.host.setParams({ gravity: { x: 1, y: 2 }, iterations: 4 });
+    other.host.restore(clone(snap));
+    expect(other.host.snapshot().params).to.deep.equal(snap.params);
 
     // The overlay: every movable particle where the frame drew it, 5 steps after the snapshot.
     h.host.restore(snap);
@@ -472,6 +476,13 @@ describe('EngineHost (no worker)', () => {
     });
     // The rigid floor's centre, the cloth's 2 corners, the rope's first.
     expect(fixed).to.equal(1 + 2 + 1);
+    // And moving at the frame's velocities (0.5, 0.5); the fixed ones still.
+    const overlaid = new World();
+    overlaid.restore(h.host.snapshot().world as WorldSnapshot);
+    for (let i = 0; i < g.positions.length; i++) {
+      const v = invMass[i] === 0 ? [0, 0] : [0.5, 0.5];
+      expect([overlaid.particles.vx[i], overlaid.particles.vy[i]], `particle ${i}'s velocity`).to.deep.equal(v);
+    }
     expect([g.stepCount, g.time]).to.deep.equal([25, 25 / 60]);
     // Not over another topology, nor when older than the snapshot: the snapshot alone.
     for (const bad of [{ ...patch, topology: snap.topology! + 1 }, { ...patch, stepCount: 19 }, { ...patch, positions: moved.subarray(2) }]) {
@@ -489,6 +500,8 @@ describe('EngineHost (no worker)', () => {
     // As drawn 5 steps later: the box (body 1) turned to 1.2 rad and spinning at 3 rad/s, the ball at -2 rad/s.
     const poses = new Float64Array(f.poses.flat());
     poses[3 * 1 + 2] = 1.2;
+    // The static floor (body 0) drawn turned: a static body is not the frame's to turn.
+    poses[3 * 0 + 2] = 0.7;
     const spins = new Float64Array(8);
     spins[1] = 3;
     spins[2] = -2;
@@ -504,6 +517,14 @@ describe('EngineHost (no worker)', () => {
     expect(world.bodyAngularVelocity(handle(2))).to.equal(-2);
     // The static floor keeps its angle; the box keeps turning from where the frame had it.
     expect(world.bodyPose(handle(0)).angle).to.equal(0);
+    expect(decode(h.frame).poses[0][2]).to.equal(0);
+    // Turned in full (its cosine and sine too, which its shape is placed by): a point 0.45, 0.45 from its centre in
+    // its own frame, turned by 1.2, is in it (turned by -1.2 instead, that point is 0.64 out along its x).
+    const [bx, by] = decode(h.frame).poses[1];
+    const [c, sn] = [Math.cos(1.2), Math.sin(1.2)];
+    expect(h.host.bodiesAt(bx + 0.45 * c - 0.45 * sn, by + 0.45 * sn + 0.45 * c)).to.deep.equal([1]);
+    // And 0.6 along its turned x axis is outside it (a cosine left at 1 stretches it over that point).
+    expect(h.host.bodiesAt(bx + 0.6 * c, by + 0.6 * sn)).to.deep.equal([]);
     h.host.step(1);
     expect(decode(h.frame).poses[1][2]).to.be.closeTo(1.2 + 3 / 60, 0.01);
   });
