@@ -565,9 +565,15 @@ describe('EngineHost (no worker)', () => {
     ];
     // Awake, so every resting body keeps its contacts.
     h.host.load({ world: { sleeping: false }, params: { debug: true }, bodies, links: [] });
-    h.host.step(90);
+    h.host.step(89);
+    // F.cellSize: the grid's cell in the last step, as a world in the same state says (> 0 held for any number).
+    const reference = new World();
+    reference.restore(h.host.snapshot().world as WorldSnapshot);
+    reference.step();
+    h.host.step(1);
+    expect(reference.gridCellSize).to.be.above(0.1);
+    expect(h.frame[8]).to.equal(reference.gridCellSize);
     const f = decode(h.frame);
-    expect(h.frame[8]).to.be.greaterThan(0); // F.cellSize
     expect(f.aabbs.length).to.equal(4);
     h.topology.bodies.forEach((b, k) => {
       const [x0, y0, x1, y1] = f.aabbs[k];
@@ -587,11 +593,16 @@ describe('EngineHost (no worker)', () => {
     expect(f.contacts.length).to.be.at.least(3);
     for (const [x, y, nx, ny] of f.contacts) {
       expect(Math.hypot(nx, ny)).to.be.closeTo(1, 1e-9);
-      expect(Math.abs(ny)).to.be.closeTo(1, 1e-3);
+      // Up, out of the floor (y grows downward), for particle and rigid contacts alike.
+      expect(ny).to.be.closeTo(-1, 1e-3);
       expect(y).to.be.closeTo(8, 0.05);
       expect(x).to.be.within(1, 12);
     }
     for (const x of [bx, ball[0], f.poses[3][0]]) expect(f.contacts.some((c) => Math.abs(c[0] - x) <= 0.75)).to.equal(true);
+    // The tilted box touches at its lowest corner: a contact point there (placed by its turned lever arm).
+    const lowest = corners.reduce((p, q) => (q[1] > p[1] ? q : p));
+    expect(Math.abs(ba), 'the box still tilted').to.be.above(0.05);
+    expect(Math.min(...f.contacts.map((c) => Math.hypot(c[0] - lowest[0], c[1] - lowest[1]))), 'a contact at the lowest corner').to.be.below(0.01);
     h.host.setParams({ debug: false });
     expect(decode(h.frame).aabbs).to.deep.equal([]);
   });
