@@ -218,5 +218,12 @@ describe('body painters', () => {
     const wholeFill = whole.calls.slice(0, whole.calls.findIndex((c, q) => q > 0 && c[0] === 'beginPath'));
     expect(points(wholeFill, 'moveTo')).to.deep.equal([0, 3]);
     expect(points(wholeFill, 'lineTo')).to.deep.equal([1, 2, 5, 4, 3, 4, 5, 8, 7, 6]);
+    // Node 4's links right (4 → 5) and down (4 → 7) broke: the bottom edge of the cell at node 1, the right edge of
+    // the cell at 3, and two edges of the cell at 4. A cell is left out for a tear on any of its four edges: only
+    // the cell at node 0 is filled. (The case above tears a top edge alone, which a test of torn[n] alone passes.)
+    const inner = paint({ ...t, bodies: [{ ...bodies[0], torn: Uint8Array.of(0, 0, 0, 0, 3, 0, 0, 0, 0) }] }, [0]);
+    const innerFill = inner.calls.slice(0, inner.calls.findIndex((c, q) => q > 0 && c[0] === 'beginPath'));
+    expect(points(innerFill, 'moveTo')).to.deep.equal([0]);
+    expect(points(innerFill, 'lineTo')).to.deep.equal([1, 4, 3]);
   });
 });
