@@ -159,6 +159,22 @@ describe('pipeline: motion', () => {
         }
   });
 
+  it("the same throw onto the bounds' left and right walls: Coulomb's speed along the wall, max(0, 1 − μ(1 + e))·v, and −e·v off it", () => {
+    // Only floors were thrown at: the walls' friction (the push out of a side overlap and the bounce's) had no test.
+    for (const side of [1, -1])
+      for (const [e, mu] of [[1, 0.5], [1, 0.2], [0.5, 0.5], [0, 0.5]] as const)
+        for (const late of [0, 0.02, 0.05, 0.08]) {
+          const world = new World({ gravity: { x: 0, y: 0 }, sleeping: false, boundsFriction: mu, bounds: side > 0 ? { minX: -50, maxX: 0, minY: -50, maxY: 50 } : { minX: 0, maxX: 50, minY: -50, maxY: 50 } });
+          const v = 10 / Math.SQRT2;
+          const ball = createCircle(world, { x: -side * (2 + late), y: 0, radius: 0.5, vx: side * v, vy: v, restitution: e, friction: mu, model: 'particles' });
+          for (let n = 0; n < 30; n++) world.step();
+          const i = world.bodyParticleIndices(ball.body)[0];
+          const at = `${side > 0 ? 'right' : 'left'} wall, e ${e}, μ ${mu}, ${late} later`;
+          expect(world.particles.vy[i], at).to.be.closeTo(Math.max(0, 1 - mu * (1 + e)) * v, 0.01 * v);
+          expect(world.particles.vx[i], at).to.be.closeTo(-side * e * v, 0.01 * v);
+        }
+  });
+
   it('particle balls meeting at a glance bounce or stop along their line of centres at the touch: the energy kept at e = 1, the textbook speeds and directions at e = 1, 0.5 and 0', () => {
     // The bounce took the approach along the line of centres found a step earlier, and acted along the one of the
     // overlap: a glancing elastic hit gained up to 26% of its energy at 60 units/s, 10% at 20.
