@@ -368,6 +368,20 @@ describe('pipeline: sleeping', () => {
     }
   });
 
+  it('a body that only turns is moving: a disc and a box spinning in place without gravity never fall asleep (both kernels)', () => {
+    // Sleep measured how far a body's particles went; a turn in place moves none of them: it counts as its rim's
+    // travel. Left out, the spinning bodies stopped dead after the time to sleep.
+    for (const kernel of ['js', 'wasm'] as const) {
+      const world = new World({ kernel, gravity: { x: 0, y: 0 }, sleeping: true, bounds: null });
+      const disc = createCircle(world, { x: 0, y: 0, radius: 0.5, angularVelocity: 1 }).body;
+      const box = createBox(world, { x: 3, y: 0, width: 1, height: 1, angularVelocity: -1 }).body;
+      for (let k = 0; k < 600; k++) world.step();
+      expect(world.bodyPose(disc).angle, `${kernel}: disc`).to.be.closeTo(world.time, 1e-9);
+      expect(world.bodyPose(box).angle, `${kernel}: box`).to.be.closeTo(-world.time, 1e-9);
+      expect(world.bodyAngularVelocity(disc), kernel).to.be.closeTo(1, 1e-9);
+    }
+  });
+
   it('a settled pyramid falls asleep within 5 s, and an impulse wakes it', () => {
     const { world, bodies } = scene('pyramid');
     let asleepAt = -1;
