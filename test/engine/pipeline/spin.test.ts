@@ -66,6 +66,21 @@ for (const kernel of ['js', 'wasm'] as const) {
       expect(worst).to.be.lessThan(1e-9);
     });
 
+    it('a pressure soft body spun at 3 rad/s keeps its angular momentum: its ring\'s damping slows its wobble, not its turn', () => {
+      // dampLoops damps each particle's velocity about the ring's rigid motion (v̄ + ω × r); damping it about v̄ alone
+      // braked the turn too, and nothing here spun a soft body.
+      const world = new World({ ...options, gravity: { x: 0, y: 0 }, sleeping: false, bounds: null });
+      const ring = buildBody(world, { type: 'softbody', center: { x: 0, y: 0 }, radius: 1, segments: 16 }).particles;
+      for (const p of ring) {
+        const q = world.getPosition(p);
+        world.setVelocity(p, -3 * q.y, 3 * q.x);
+      }
+      const before = spinOf(world, ring).L;
+      expect(before).to.be.above(1);
+      for (let k = 0; k < 120; k++) world.step();
+      expect(spinOf(world, ring).L / before).to.be.closeTo(1, 1e-9);
+    });
+
     it('the world damping takes its share of the spin, and nothing more', () => {
       const world = new World({ ...options, gravity: { x: 0, y: 0 }, sleeping: false, damping: 0.5, substeps: 10 });
       const particles = spunFrame(world, 5);
