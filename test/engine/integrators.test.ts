@@ -203,6 +203,20 @@ describe('integrators', () => {
     }
   });
 
+  it('damping keeps 1/(1 + h·c) of a free particle\'s velocity each substep, with every integrator', () => {
+    // Only Verlet's damping was measured (spin.test.ts, constraints.test.ts): either Euler could leave it out.
+    for (const integrator of ['verlet', 'semi-implicit-euler', 'explicit-euler'] as const) {
+      const world = new World({ integrator, gravity: { x: 0, y: 0 }, damping: 0.5, substeps: 10, sleeping: false, bounds: null });
+      const p = world.addParticle({ x: 0, y: 0, vx: 3, vy: -2 });
+      for (let k = 0; k < 60; k++) world.step();
+      const kept = (1 / (1 + (0.5 * 1) / 600)) ** 600;
+      expect(kept, 'the case: a tenth or more gone').to.be.below(0.9);
+      const v = world.getVelocity(p);
+      expect(v.x, integrator).to.be.closeTo(3 * kept, 1e-9);
+      expect(v.y, integrator).to.be.closeTo(-2 * kept, 1e-9);
+    }
+  });
+
   it('the Euler variants drift from the analytic free fall by O(h), Verlet does not', () => {
     const errors = INTEGRATORS.map((integrator) => {
       const world = new World({ gravity: { x: 0, y: 10 }, integrator, substeps: 1 });
