@@ -213,6 +213,18 @@ describe('constraints', () => {
     expect(Math.hypot(world.getVelocity(a).x, world.getVelocity(a).y), 'it moved').to.be.above(0.01);
   });
 
+  it('a soft pin is a spring of stiffness 1/compliance: a weight hangs m·g·compliance below its target, whatever the iterations', () => {
+    // The soft pin test below only asks that the particle reach its target, which any compliance does in time.
+    for (const iterations of [1, 4]) {
+      const world = new World({ gravity: { x: 0, y: 10 }, damping: 2, iterations, sleeping: false, bounds: null });
+      const p = world.addParticle({ x: 1, y: 2, mass: 2 });
+      world.addPin(p, { x: 1, y: 2, compliance: 0.005 });
+      for (let k = 0; k < 600; k++) world.step();
+      expect(world.getPosition(p).y - 2, `iterations ${iterations}`).to.be.closeTo(2 * 10 * 0.005, 1e-3);
+      expect(world.getPosition(p).x, `iterations ${iterations}`).to.be.closeTo(1, 1e-12);
+    }
+  });
+
   it('rope slack: a link only resists stretching', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const a = world.addParticle({ x: 0, y: 0, mass: Infinity });
