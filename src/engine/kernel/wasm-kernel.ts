@@ -333,7 +333,8 @@ export class WasmKernel {
 
   /**
    * The step's end: what the JS phases read back from the lanes into the contact table: touched (events, sleep,
-   * anchors), and a touched point's slip and allowance (the anchors). Nothing reads λn, the impulses or gap after
+   * anchors), and a touched point's slip and allowance (the anchors) and normal levers (a begin event's speed counts
+   * the bodies' spin through them: without them a rod spinning into a block began its pair at speed 0). Nothing reads λn, the impulses or gap after
    * the solver, and the next step's narrow phase writes every field again; an untouched point keeps the narrow
    * phase's touched 0.
    */
@@ -351,6 +352,7 @@ export class WasmKernel {
         touched[i] = 1;
         allowance[i] = f64[w + 2 * RF.allowance];
         slip[i] = f64[w + 2 * RF.slip];
+        leversBack(c, f64, i, w + 42);
         continue;
       }
       // Point 0 of a lane to its first contact, point 1 to its partner (literal offsets as in writeManifolds); the
@@ -360,12 +362,14 @@ export class WasmKernel {
         touched[i] = 1;
         slip[i] = f64[w + 18];
         allowance[i] = f64[w + 36];
+        leversBack(c, f64, i, w + 46);
       }
       if (pair[i] !== 1) continue;
       if (i32[2 * w + 160] !== 0) {
         touched[i + 1] = 1;
         slip[i + 1] = f64[w + 20];
         allowance[i + 1] = f64[w + 72];
+        leversBack(c, f64, i + 1, w + 82);
       }
       i++;
     }
@@ -653,6 +657,14 @@ function lanesFit(c: RigidContacts): 0 | 1 | 2 {
   }
   // The manifold lanes hold no round side (their sweep has no rim arcs: solver.as): such a step is the JS solver's.
   return fit === 2 && round ? 0 : fit;
+}
+
+/** Contact i's normal levers lAx, lAy, lBx, lBy from a lane's f64 words w, w + 2, w + 4, w + 6 (rigid packet: field 21 on; manifold: a point's 11 on). */
+function leversBack(c: RigidContacts, f64: Float64Array, i: number, w: number): void {
+  c.lAx[i] = f64[w];
+  c.lAy[i] = f64[w + 2];
+  c.lBx[i] = f64[w + 4];
+  c.lBy[i] = f64[w + 6];
 }
 
 function align16(bytes: number): number {
