@@ -169,7 +169,6 @@ export function keepFreeSpin(ctx: StepContext, substeps: number, damp: number): 
   const { start } = spin;
   // (stepWall has room for every particle only in a world with bounds.)
   const walls = ctx.settings.bounds ? ctx.wallHits.stepWall : null;
-  const { x, y, vx, vy } = ctx.particles;
   const scale = damp === 1 ? 1 : damp ** substeps;
   for (let s = 0, high = ctx.bodies.ids.high; s < high; s++) {
     const L0 = start[s];
@@ -183,13 +182,8 @@ export function keepFreeSpin(ctx: StepContext, substeps: number, damp: number): 
     const dw = (L0 * scale - L) / I;
     // A body of coincident particles (I = 0) has no turn to mend; a non-finite row is keepRowsFinite's.
     if (!(I > 0) || !Number.isFinite(dw)) continue;
-    const cx = centre[0];
-    const cy = centre[1];
-    for (let k = 0; k < idx.length; k++) {
-      const i = idx[k];
-      vx[i] -= dw * (y[i] - cy);
-      vy[i] += dw * (x[i] - cx);
-    }
+    turn[2] = dw;
+    addTurn(ctx.particles, idx, 0, idx.length);
   }
 }
 
@@ -259,16 +253,15 @@ export function dampLoops(ctx: StepContext, dt: number): void {
 }
 
 /**
- * Scratch of dampLoops (V8 boxes a double passed to or returned from a call it does not inline): a loop's turn ω, and
- * the most rolling resistance takes from it this step.
+ * Scratch of keepFreeSpin and dampLoops (V8 boxes a double passed to or returned from a call it does not inline): a
+ * loop's turn ω, the most rolling resistance takes from it this step, and the turn addTurn adds.
  */
-const turn = new Float64Array(2);
+const turn = new Float64Array(3);
 
-/** Brings turn[0] toward 0 by at most turn[1], as a rigid turn of the loop's particles idx[from..to) about `centre`. */
-function resistTurn(p: ParticleStore, idx: Int32Array, from: number, to: number): void {
+/** Adds the turn turn[2] (rad/s) about `centre` to the velocities of particles idx[from..to): a rigid turn. */
+function addTurn(p: ParticleStore, idx: Int32Array, from: number, to: number): void {
   const { x, y, vx, vy } = p;
-  const most = turn[1];
-  const dw = Math.max(-most, Math.min(most, -turn[0]));
+  const dw = turn[2];
   const cx = centre[0];
   const cy = centre[1];
   for (let k = from; k < to; k++) {
@@ -276,7 +269,14 @@ function resistTurn(p: ParticleStore, idx: Int32Array, from: number, to: number)
     vx[i] -= dw * (y[i] - cy);
     vy[i] += dw * (x[i] - cx);
   }
-  turn[0] += dw;
+}
+
+/** Brings turn[0] toward 0 by at most turn[1], as a rigid turn of the loop's particles idx[from..to) about `centre`. */
+function resistTurn(p: ParticleStore, idx: Int32Array, from: number, to: number): void {
+  const most = turn[1];
+  turn[2] = Math.max(-most, Math.min(most, -turn[0]));
+  addTurn(p, idx, from, to);
+  turn[0] += turn[2];
 }
 
 /**
