@@ -318,7 +318,7 @@ const rigidStories: Story[] = [
     id: 'galton-board',
     group: 'Rigid bodies',
     title: 'Galton board',
-    description: 'Balls fall from a funnel through rows of pegs: at each peg a ball bounces off the line from the peg to its centre at the moment they touch, and the bins fill toward a bell curve.',
+    description: 'Balls fall from a funnel through rows of pegs: at each peg a ball bounces off the line from the peg to its centre at the moment they touch, and the sixty balls spread over the bins.',
     root: scene({}, [
       floor(),
       // The funnel: two slanted walls, a gap of about three balls at x = 8.
