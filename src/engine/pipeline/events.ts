@@ -258,13 +258,19 @@ export class EventTracker {
 
   /**
    * Adds the bodies whose particles the bounds' walls pushed this step, paired with the world (value particle · 3 + 2):
-   * the first of its particles to touch speaks for a body (a particle of no body makes no event).
+   * the deepest of its particles speaks for a body, as the deepest contact does for a pair (a particle of no body
+   * makes no event).
    */
   private collectWalls(walls: WallHits, owner: { ownerOf(i: number): number }): void {
+    const cur = this.current;
+    const overlap = walls.stepOverlap;
     for (let k = 0; k < walls.stepCount; k++) {
       const i = walls.stepList[k];
       const body = owner.ownerOf(i);
-      if (body >= 0) this.current.insert(body * SLOTS + WORLD, i * 3 + 2);
+      if (body < 0) continue;
+      const slot = cur.insert(body * SLOTS + WORLD, i * 3 + 2);
+      const v = cur.values[slot];
+      if (v % 3 === 2 && overlap[i] > overlap[(v - 2) / 3]) cur.values[slot] = i * 3 + 2;
     }
   }
 
