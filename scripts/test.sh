@@ -6,48 +6,51 @@
 # Exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each section's heading says how long the run has taken so far, to see where the quarter of an hour goes.
+section() { echo "== $* ($((SECONDS / 60)) min $((SECONDS % 60)) s in)"; }
 bash scripts/ensure-deps.sh
 bash scripts/ensure-chromium.sh
 bash scripts/ensure-firefox.sh
-echo "== typecheck"
+section "typecheck"
 npx tsc --noEmit -p tsconfig.json
 npx tsc --noEmit -p test/tsconfig.json
-echo "== the WebAssembly kernel's bytes up to date with its source"
+section "the WebAssembly kernel's bytes up to date with its source"
 node scripts/build-wasm.mjs --check
-echo "== custom-elements.json up to date"
+section "custom-elements.json up to date"
 cp custom-elements.json /tmp/custom-elements.committed.json
 npm run analyze --silent >/dev/null
 cmp -s /tmp/custom-elements.committed.json custom-elements.json || { echo "custom-elements.json was out of date (regenerated now): commit it"; exit 1; }
-echo "== docs/elements.md up to date with custom-elements.json"
+section "docs/elements.md up to date with custom-elements.json"
 node scripts/docs-elements.mjs --check
-echo "== engine tests in Node (default kernel 'js', the JS solver)"
+section "engine tests in Node (default kernel 'js', the JS solver)"
 npx mocha
-echo "== engine tests in Node again, default kernel 'wasm' (the WebAssembly SIMD kernel; the setup fails the run if it does not run)"
+section "engine tests in Node again, default kernel 'wasm' (the WebAssembly SIMD kernel; the setup fails the run if it does not run)"
 npx mocha --require test/engine/kernel/wasm-default.setup.ts
-echo "== engine in Node: allocation per step, soak"
+section "engine in Node: allocation per step, soak"
 node scripts/engine-in-node.mjs
 node --expose-gc scripts/soak.mjs --steps 30000 --samples 5
-echo "== browser tests"
+section "browser tests"
 npx web-test-runner --static-logging "$@"
-echo "== gallery stories"
+section "gallery stories"
 node scripts/check-stories.mjs
-echo "== gallery layout and accessibility (axe at 1280 and 390 px)"
+section "gallery layout and accessibility (axe at 1280 and 390 px)"
 node scripts/check-gallery.mjs
-echo "== browser soak: 1 minute of markup changes (long form: node scripts/browser-soak.mjs --minutes 15)"
+section "browser soak: 1 minute of markup changes (long form: node scripts/browser-soak.mjs --minutes 15)"
 node scripts/browser-soak.mjs --minutes 1
-echo "== build, the single-file build embedded across origins, both builds under a strict CSP"
+section "build, the single-file build embedded across origins, both builds under a strict CSP"
 npm run build --silent
-echo "== sizes within the issues' budgets (single file with p5 <= 175 KB gzip, the kernel's share <= 10 KB)"
+section "sizes within the issues' budgets (single file with p5 <= 175 KB gzip, the kernel's share <= 10 KB)"
 node scripts/sizes.mjs --check
 node test/e2e/cross-origin.mjs
 node test/e2e/csp.mjs
-echo "== the npm tarball installed and embedded from a second origin (chromium; Firefox ESR when installed)"
+section "the npm tarball installed and embedded from a second origin (chromium; Firefox ESR when installed)"
 node test/e2e/pack.mjs --no-build
-echo "== an app's bundlers: Vite and webpack bundle the library and its worker, esbuild the single file"
+section "an app's bundlers: Vite and webpack bundle the library and its worker, esbuild the single file"
 node test/e2e/bundlers.mjs
-echo "== no layout shift while the embed loads (1.6 Mbit/s, 150 ms; desktop and phone)"
+section "no layout shift while the embed loads (1.6 Mbit/s, 150 ms; desktop and phone)"
 node scripts/measure-loading.mjs --runs 1 --max-cls 0.02
-echo "== phone: swipes scroll past the scene, a body drags, pinch zooms"
+section "phone: swipes scroll past the scene, a body drags, pinch zooms"
 node test/e2e/phone.mjs
-echo "== many embeds: 8 cloths in a post share the worker pool"
+section "many embeds: 8 cloths in a post share the worker pool"
 node test/e2e/many-embeds.mjs --runs 1
+section "all passed"
