@@ -1,5 +1,5 @@
 // Rigid bodies against analytic answers: a disc rolling down a slope, a box holding or sliding on it, bounce heights
-// e²·h, a fast box stopped dead by a thin wall, Newton's cradle, a domino's toppling time, a revolute pendulum's period, stacks and a
+// e²·h, a fast box stopped dead by a thin wall, Newton's cradle, a domino's toppling time and the spin that topples a standing one, a revolute pendulum's period, stacks and a
 // pyramid that stand (a heavy box placed or dropped on them too), a kinematic drum that carries 200 boxes, and particles (a cloth, a rope) attached to and
 // colliding with rigid bodies.
 import { expect } from 'chai';
@@ -516,6 +516,46 @@ describe('rigid bodies: mass properties and rotation', () => {
     console.log(`      domino: ${measured.toFixed(4)} s to 1 rad (analytic ${analytic.toFixed(4)})`);
     expect(measured).to.be.closeTo(analytic, 0.03 * analytic);
   });
+
+  // A standing domino set spinning about its centre at ω lands on a bottom corner at once: the corner's impulse keeps
+  // the angular momentum about that corner, I_cm·ω = I_c·ω' (the centre still, I_c = I_cm + m·d², d the half diagonal),
+  // so it pivots at ω' = ω·I_cm/I_c = ω/4 for a uniform block, and goes over only if ½·I_c·ω'² lifts its centre to
+  // above the corner, by d − H/2: ω* = 4·√(2·g·(d − H/2)·m/I_c), 2.270 rad/s for 0.15 × 1. Below it, the tilt where that
+  // energy runs out: d·cos(β − φ) = H/2 + (ω/ω*)²·(d − H/2), β = atan(w/H) the balance angle. A landing turned into a
+  // bounce, or a spin kept through it, would topple the domino below ω*.
+  for (const kernel of ['js', 'wasm'] as const)
+    it(`a standing domino spun about its centre topples only above the spin its corner's angular momentum allows (${kernel})`, () => {
+      const w = 0.15;
+      const H = 1;
+      const d = Math.hypot(w, H) / 2;
+      const beta = Math.atan(w / H);
+      const threshold = 4 * Math.sqrt((2 * g * (d - H / 2)) / ((w * w + H * H) / 3));
+      expect(threshold).to.be.closeTo(2.270, 0.001);
+      for (const factor of [0.8, 0.9, 0.97, 1.03, 1.2]) {
+        for (const sign of [1, -1]) {
+          const world = new World({ kernel, sleeping: false, gravity: { x: 0, y: g } });
+          world.addRigidBody({ points: box(5, 0.5), x: 0, y: 0.5, type: 'static', friction: 1 });
+          const domino = world.addRigidBody({ points: box(w / 2, H / 2), x: 0, y: -H / 2, friction: 1 });
+          world.setBodyAngularVelocity(domino, sign * factor * threshold);
+          let most = 0;
+          for (let n = 0; n < 180; n++) {
+            world.step();
+            most = Math.max(most, Math.abs(world.bodyPose(domino).angle));
+          }
+          const final = Math.abs(world.bodyPose(domino).angle);
+          const at = `ω = ${sign * factor}·ω*`;
+          if (factor > 1) {
+            expect(final, at).to.be.within(Math.PI / 2 - 0.01, Math.PI / 2 + 0.01);
+          } else {
+            // It rocks on its base, never past the balance angle, its largest tilt the analytic one within 10%
+            // (0.8·ω*: 0.0597 rad, 0.9: 0.0841, 0.97: 0.1128).
+            const tilt = beta - Math.acos((H / 2 + factor * factor * (d - H / 2)) / d);
+            expect(most, `${at}: largest tilt`).to.be.closeTo(tilt, 0.1 * tilt);
+            expect(final, `${at}: standing after 3 s`).to.be.below(beta);
+          }
+        }
+      }
+    });
 });
 
 describe('rigid bodies: joints', () => {
