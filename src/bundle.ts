@@ -22,6 +22,8 @@ export { ClothSimElement } from './elements/cloth-sim.js';
 export { RagdollSimElement } from './elements/ragdoll-sim.js';
 
 export type { DrawHook, DrawView, BodyStyle } from './render/renderer.js';
+// The type of the cloths' `pins` attribute (the other enum-like attributes are written out as literal unions).
+export type { ClothPinsAttribute } from './elements/checks.js';
 // What an engine call on a scene that is not in the page (or was removed) rejects with: `e instanceof EngineStoppedError`.
 export { EngineStoppedError } from './worker/client.js';
 // What the public API above names: diagnostics(), snapshot()/restore(), physics-ready's transport, DrawView's topology.

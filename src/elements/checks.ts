@@ -93,6 +93,13 @@ export function shownValue(element: Element, attribute: string): string {
   return new Checker(element).raw(attribute, value);
 }
 
+/**
+ * The `pins` attribute of `<cloth-sim>` and `<physics-cloth>` as TypeScript sees it: "top", "corners", "none", or
+ * column numbers separated by spaces or commas ("0 8 16 23", "0,23"). Only the type narrows: markup with another value
+ * still loads and is reported (`physics-error`).
+ */
+export type ClothPinsAttribute = 'top' | 'corners' | 'none' | `${number}` | `${number} ${string}` | `${number},${string}`;
+
 export class Checker {
   readonly problems: Problem[] = [];
 

@@ -1,7 +1,7 @@
 import { html, nothing, type TemplateResult } from 'lit';
 import { property } from 'lit/decorators.js';
 import { ifDefined } from 'lit/directives/if-defined.js';
-import { Checker, numberAttribute, type Problem } from './checks.js';
+import { Checker, numberAttribute, type ClothPinsAttribute, type Problem } from './checks.js';
 import { PresetSceneElement } from './preset-scene.js';
 import './physics-cloth.js';
 
@@ -47,7 +47,7 @@ export class ClothSimElement extends PresetSceneElement<ClothSetup> {
   /** Distance between neighbouring particles in world units (> 0, at most 100); default: the cloth spans about 70% of the view. */
   @property({ type: Number, converter: numberAttribute }) spacing?: number;
   /** Pinned top-row particles: "top", "corners", "none" or column indices ("0 8 16 23"). Default: five pins spread along the top. */
-  @property() pins?: string;
+  @property() pins?: ClothPinsAttribute;
   /** 0 < stiffness <= 1: 1 (default) is inextensible, smaller values stretch. */
   @property({ type: Number, converter: numberAttribute }) stiffness = 1;
   /**

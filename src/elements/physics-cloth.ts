@@ -1,7 +1,7 @@
 import { property } from 'lit/decorators.js';
 import type { BodyDescription } from '../engine/index.js';
 import { PhysicsBodyElement, type Described } from './body-element.js';
-import { Checker, COMPLIANCE, numberAttribute } from './checks.js';
+import { Checker, COMPLIANCE, numberAttribute, type ClothPinsAttribute } from './checks.js';
 
 /**
  * A cloth of `columns` × `rows` particles `spacing` apart, its top-left corner at `x`, `y`, hanging from `pins`.
@@ -17,7 +17,7 @@ export class PhysicsClothElement extends PhysicsBodyElement {
   /** Rest distance between neighbours in world units (> 0). Default 0.3. */
   @property({ type: Number, converter: numberAttribute }) spacing?: number;
   /** Pinned top-row particles: "top" (default), "corners", "none" or column indices "0 5 11". */
-  @property() pins?: string;
+  @property() pins?: ClothPinsAttribute;
   /** Compliance of the structural links (0 to 1e9; 0 = inextensible, default). */
   @property({ type: Number, converter: numberAttribute }) compliance?: number;
   /** Compliance of diagonal shear links (0 to 1e9; none when absent). */

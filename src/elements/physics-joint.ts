@@ -27,7 +27,7 @@ import { PhysicsLinkElement, type Resolve } from './link-element.js';
  */
 export class PhysicsJointElement extends PhysicsLinkElement {
   /** "distance" (default), "revolute", "weld", "prismatic" or "spring". */
-  @property() type?: string;
+  @property() type?: 'revolute' | 'weld' | 'prismatic' | 'distance' | 'spring';
   /** Id of the first body element. */
   @property() a?: string;
   /** Id of the second body element; absent: the world. */
@@ -68,7 +68,8 @@ export class PhysicsJointElement extends PhysicsLinkElement {
     const a = this.resolveBody(check, 'a', this.a, resolve);
     const b = this.b === undefined || this.b === null ? undefined : this.resolveBody(check, 'b', this.b, resolve);
     const desc: JointLink = { type: 'joint', a: a ?? -1, b: b ?? undefined, ...this.anchor(check) };
-    if (this.type !== undefined && this.type !== null && this.type !== '') desc.joint = type;
+    // Markup may hold any text (the type names the accepted values): blank is the default, as absent.
+    if (this.type !== undefined && this.type !== null && (this.type as string) !== '') desc.joint = type;
     const first = this.point(check, 'x1', this.x1, 'y1', this.y1);
     if (first) [desc.x1, desc.y1] = first;
     const second = this.point(check, 'x2', this.x2, 'y2', this.y2);

@@ -24,7 +24,7 @@ export class PhysicsRopeElement extends PhysicsBodyElement {
   /** Link length as a multiple of the straight distance / segments (> 0); above 1 the rope sags. Default 1. */
   @property({ type: Number, converter: numberAttribute }) slack?: number;
   /** Which ends are pinned where they start: "start" (default), "end", "both" or "none". */
-  @property() pin?: string;
+  @property() pin?: 'start' | 'end' | 'both' | 'none';
   /** Thickness as a radius in world units (>= 0). Default 0.05. */
   @property({ type: Number, converter: numberAttribute }) radius?: number;
   /** Links are rigid sticks (a chain) instead of slack rope links. */

@@ -18,7 +18,7 @@ export class PhysicsSoftbodyElement extends PhysicsBodyElement {
   /** Rest area as a multiple of the drawn area (pressure model, > 0, at most 1e6). Default 1. */
   @property({ type: Number, converter: numberAttribute }) pressure?: number;
   /** "pressure" (default) or "springs". */
-  @property() model?: string;
+  @property() model?: 'pressure' | 'springs';
   /** Compliance of the ring's links (0 to 1e9). Default 0.0001. */
   @property({ type: Number, converter: numberAttribute }) compliance?: number;
 

@@ -53,7 +53,7 @@ export class RagdollSimElement extends PresetSceneElement<RagdollSetup> {
   /** Height of a ragdoll in world units (> 0, at most 100). Default 1.6. */
   @property({ type: Number, converter: numberAttribute }) size = 1.6;
   /** What they fall over: "stairs" (default), "pegs" or "none". */
-  @property() obstacles = 'stairs';
+  @property() obstacles: 'stairs' | 'pegs' | 'none' = 'stairs';
   /**
    * Put a ragdoll back at the top once it has lain still for 1.5 s of simulated time. On by default (and with any
    * value but "off" or "false"); `respawn="off"` lets them lie.

@@ -12,7 +12,7 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
    * "rigid" (default): a rigid body that turns and rolls, with a moment of inertia from its shape. "particles": a
    * frame of particles held by sticks (a ball: one particle), as the thesis built it.
    */
-  @property() model?: string;
+  @property() model?: 'rigid' | 'particles';
   /**
    * Moved by its velocity and angular velocity alone (a moving platform, a turning drum): it pushes what it touches
    * and nothing pushes it. Rigid model only; not with `static`. Toggling it on a running scene keeps the body where it is.
@@ -47,7 +47,8 @@ export abstract class PhysicsShapeElement extends PhysicsBodyElement {
 
   private motion(check: Checker, out: Record<string, unknown>): void {
     const model = check.oneOf('model', this.model, BODY_MODELS, 'rigid');
-    if (this.model !== undefined && this.model !== null && this.model !== '') out.model = model;
+    // Markup may hold any text (the type names the accepted values): blank is the default, as absent.
+    if (this.model !== undefined && this.model !== null && (this.model as string) !== '') out.model = model;
     if (this.kinematic) {
       if (this.isStatic) check.fail('kinematic', '', 'cannot be combined with static (a body is one or the other)');
       else if (model !== 'rigid') check.fail('kinematic', '', 'needs model="rigid" (a frame of particles has no prescribed motion)');

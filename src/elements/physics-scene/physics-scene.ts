@@ -144,11 +144,11 @@ export class PhysicsSceneElement extends LitElement {
   /** Draws AABBs, contacts and the broad phase's grid cells. */
   @property({ type: Boolean, reflect: true }) debug = false;
   /** Broad phase: "grid" (default) or "brute". */
-  @property() broadphase = 'grid';
+  @property() broadphase: 'grid' | 'brute' = 'grid';
   /** Narrow phase for polygon pairs: "sat" (default, separating axes) or "gjk" (GJK distance, EPA when overlapping). */
-  @property() narrowphase = 'sat';
+  @property() narrowphase: 'sat' | 'gjk' = 'sat';
   /** "view" (default): walls at the sides and bottom of the width × height box (open at the top); "none": unbounded. */
-  @property() bounds = 'view';
+  @property() bounds: 'view' | 'none' = 'view';
   /**
    * Canvas background (CSS colour, or "none": transparent). Default "#f7f5f0", or "#1d2025" on a page whose colour
    * scheme is dark (`color-scheme: dark`, or "light dark" for a reader who prefers dark): the default colours follow it.
@@ -159,14 +159,14 @@ export class PhysicsSceneElement extends LitElement {
    * the engine carries the simulation over (the same step and state, in an engine of the new mode); one that leaves it
    * where it runs (a bad value reads as "auto") does nothing but its report.
    */
-  @property() worker = 'auto';
+  @property() worker: 'auto' | 'none' = 'auto';
   /**
    * The solver kernel: "auto" (default) runs the particle solver (cloth, ropes, soft bodies) in WebAssembly with SIMD
    * where the browser and the page allow it, else in JavaScript; "wasm" the same, warning when it cannot; "js" always
    * JavaScript. A strict Content-Security-Policy needs `script-src 'wasm-unsafe-eval'` for WebAssembly (without it:
    * JavaScript, and one console warning). A change keeps the scene's state. `diagnostics()` says which kernel runs.
    */
-  @property() kernel = 'auto';
+  @property() kernel: 'auto' | 'wasm' | 'js' = 'auto';
   /** Send collision events even with no listener on the scene itself (for listeners on ancestors). */
   @property({ type: Boolean, attribute: 'collision-events' }) collisionEvents = false;
   /**
@@ -176,7 +176,7 @@ export class PhysicsSceneElement extends LitElement {
    */
   @property({ type: Number, attribute: 'max-restarts' }) maxRestarts = 3;
   /** How `drawHook` combines with the default drawing: "over" (default) or "replace". */
-  @property({ attribute: 'draw-mode' }) drawMode = 'over';
+  @property({ attribute: 'draw-mode' }) drawMode: 'over' | 'replace' = 'over';
   /**
    * Custom p5 drawing, called each time the scene draws (every new frame while it moves; `view.requestDraw()` asks for
    * one more) with a DrawView (the p5 instance, the 2D context, interpolated particle positions and poses, the topology
