@@ -232,7 +232,7 @@ import type { PhysicsErrorDetail } from 'physics-elements';
 // What vue-tsc checks a template's <cloth-sim wind="2" @physics-error="…"> against.
 type Props<T extends keyof GlobalComponents> = GlobalComponents[T] extends new () => { $props: infer P } ? P : never;
 type Emit<T extends keyof GlobalComponents> = GlobalComponents[T] extends new () => { $emit: infer E } ? E : never;
-export const sim: Props<'cloth-sim'> = { wind: '2', kernel: 'wasm', pins: '0 8', paused: true, 'collision-events': true, class: 'post' };
+export const sim: Props<'cloth-sim'> = { wind: '2', kernel: 'wasm', pins: '0 8', paused: true, 'collision-events': true, maxRestarts: 1, class: 'post' };
 export const box: Props<'physics-box'> = { id: 'crate', x: 4, static: true, model: 'particles' };
 export function listen(emit: Emit<'physics-scene'>, detail: PhysicsErrorDetail) {
   emit('physics-error', new CustomEvent('physics-error', { detail }));
@@ -245,6 +245,7 @@ type Props<T extends keyof GlobalComponents> = GlobalComponents[T] extends new (
 type Emit<T extends keyof GlobalComponents> = GlobalComponents[T] extends new () => { $emit: infer E } ? E : never;
 export const kernel: Props<'physics-scene'> = { kernel: 'wsam' }; // wrong: not a kernel
 export const wind: Props<'cloth-sim'> = { wind: 'strong' }; // wrong: not a number
+export const camel: Props<'physics-joint'> = { lowerAngle: 'low' }; // wrong: not a number, camel-cased as vue-tsc may
 export function listen(emit: Emit<'physics-box'>) {
   emit('physics-ready', new CustomEvent('physics-ready')); // wrong: a body fires physics-error only
 }
