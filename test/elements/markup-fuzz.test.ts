@@ -117,8 +117,11 @@ async function attributes(): Promise<Map<string, Attr[]>> {
       const fresh = document.createElement(d.tagName) as unknown as Record<string, unknown>;
       for (const a of d.attributes ?? []) {
         const field = a.fieldName ?? a.name;
+        // A literal union ('view' | 'none') or a named type of attribute text (ClothPinsAttribute, the package's
+        // *Attribute types) is a string in markup.
         const text = a.type?.text ?? typeof fresh[field];
-        const kind = /\bboolean\b/.test(text) ? 'boolean' : /\bnumber\b/.test(text) ? 'number' : /\bstring\b/.test(text) ? 'string' : 'unknown';
+        const named = /'[^']*'|\b[A-Z]\w*Attribute\b/.test(text);
+        const kind = /\bboolean\b/.test(text) ? 'boolean' : /\bnumber\b/.test(text) ? 'number' : /\bstring\b/.test(text) || named ? 'string' : 'unknown';
         list.push({ tag: d.tagName, name: a.name, field, kind, description: a.description ?? '', ...rangeOf(a.description ?? '') });
       }
       out.set(d.tagName, list);
