@@ -228,7 +228,7 @@ export interface JointOptions {
   /** Each side's anchor (distance, spring). Default: `anchor`, else each body's centre. */
   anchorA?: Vec2;
   anchorB?: Vec2;
-  /** Prismatic: the direction B slides along, in world coordinates now (it turns with A). Default (1, 0). */
+  /** Prismatic: the direction B slides along, in world coordinates now (it turns with A, or with B where B is the world, a static or a kinematic body). Default (1, 0). */
   axis?: Vec2;
   /** Revolute: limits of A's angle relative to B (the world's angle is 0), from where they are now (radians). */
   lowerAngle?: number;

@@ -475,8 +475,16 @@ function solveMotor(j: Joints, r: BodyRows, i: number, a: number, b: number): vo
 /** Prismatic: no relative turn, B's anchor on A's axis line, and within [lower, upper] along it when limited. */
 function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number): void {
   loadAnchors(j, r, i);
-  const ca = r.rc[a];
-  const sa = r.rs[a];
+  const mA = r.invMass[a];
+  const iA = r.invInertia[a];
+  const mB = b < 0 ? 0 : r.invMass[b];
+  const iB = b < 0 ? 0 : r.invInertia[b];
+  // Held by what does not move with it (the world, a static or kinematic B), the axis is B's: where A's turns to when
+  // the angle lock holds. Turning with A, the axis swept B's anchor across it from `along` away, every turn a hit
+  // gave A: a box on a slider to the world, hit by one 170 times heavier, was thrown 10⁸ units.
+  const heldByB = mB === 0 && iB === 0;
+  const ca = heldByB ? Math.cos((b < 0 ? 0 : r.angle[b]) + j.refAngle[i]) : r.rc[a];
+  const sa = heldByB ? Math.sin((b < 0 ? 0 : r.angle[b]) + j.refAngle[i]) : r.rs[a];
   const ux = ca * j.axisX[i] - sa * j.axisY[i];
   const uy = sa * j.axisX[i] + ca * j.axisY[i];
   // Across the axis (p = (−uy, ux)) and the relative angle together, as a 2×2 system like the weld's: A's anchor
@@ -486,14 +494,10 @@ function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number)
   const py = ux;
   const e1 = -((at[2] - at[6]) * px + (at[3] - at[7]) * py);
   const e2 = -(r.angle[a] - (b < 0 ? 0 : r.angle[b]) - j.refAngle[i]);
-  const mA = r.invMass[a];
-  const iA = r.invInertia[a];
-  const mB = b < 0 ? 0 : r.invMass[b];
-  const iB = b < 0 ? 0 : r.invInertia[b];
   // The push across the axis acts where B's anchor is, for A too (Box2D's d + rA): A's anchor sits `along` the axis
   // from there, and a lever to A's own anchor gave each correction a torque of about along · l1, which fed energy
-  // into two free bodies until they blew up.
-  const rA = (at[0] + at[6] - at[2]) * py - (at[1] + at[7] - at[3]) * px;
+  // into two free bodies until they blew up. An axis held by B does not turn with A: A's own lever.
+  const rA = heldByB ? at[0] * py - at[1] * px : (at[0] + at[6] - at[2]) * py - (at[1] + at[7] - at[3]) * px;
   const rB = at[4] * py - at[5] * px;
   const k11 = mA + mB + iA * rA * rA + iB * rB * rB;
   const k12 = iA * rA + iB * rB;
@@ -525,5 +529,9 @@ function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number)
   arg[0] = along < j.lower[i] ? along - j.lower[i] : along > j.upper[i] ? along - j.upper[i] : 0;
   arg[1] = -ux;
   arg[2] = -uy;
+  // Held by a side that does not move, the other is pushed back through its centre: the angle lock has just set its
+  // turn, and a push at its anchor turned it off again (300 random hits by bodies up to 200 times heavier passed the
+  // limit by 0.072 at the median and 1.05 at the 90th percentile; now 0.033 and 0.46).
+  if (heldByB || (mA === 0 && iA === 0)) at[0] = at[1] = at[4] = at[5] = 0;
   if (arg[0] !== 0) correct(j, r, i, false);
 }
