@@ -140,16 +140,20 @@ function correct(j: Joints, r: BodyRows, i: number, fromStart: boolean): void {
     }
   }
   if (!(w > 0)) return;
-  let dl = (-arg[0] - alphaT * j.lambda[i] - gamma * arg[5]) / ((1 + gamma) * w + alphaT);
-  dl *= withinTurn(iA * rsA * dl, iB * rsB * dl);
-  j.lambda[i] += dl;
-  r.x[a] += mA * dl * sx;
-  r.y[a] += mA * dl * sy;
+  const rhs = -arg[0] - alphaT * j.lambda[i] - gamma * arg[5];
+  let dl = rhs / ((1 + gamma) * w + alphaT);
+  // Past MAX_TURN: scaled down to it, the rest of the error closed by moving the bodies alone (as in correctPoint).
+  const f = withinTurn(iA * rsA * dl, iB * rsB * dl);
+  dl *= f;
+  const move = dl + (mA + mB > 0 ? ((1 - f) * rhs) / ((1 + gamma) * (mA + mB) + alphaT) : 0);
+  j.lambda[i] += move;
+  r.x[a] += mA * move * sx;
+  r.y[a] += mA * move * sy;
   by[0] = rsA * dl;
   turnRow(r, a, 1);
   if (b < 0) return;
-  r.x[b] -= mB * dl * sx;
-  r.y[b] -= mB * dl * sy;
+  r.x[b] -= mB * move * sx;
+  r.y[b] -= mB * move * sy;
   by[0] = rsB * dl;
   turnRow(r, b, -1);
 }

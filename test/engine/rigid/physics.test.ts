@@ -965,35 +965,39 @@ describe('rigid bodies: joints', () => {
     }
   });
 
-  it('two bodies hinged or welded together (one to the world half the time), hit by bodies up to 200× heavier, are not thrown off', () => {
+  it('two bodies hinged, welded or tied by a rod (one to the world half the time), hit by bodies up to 200× heavier, are not thrown off', () => {
     // Hits of 5–105 units/s from any side by boxes 1–200 times heavier on a 0.6 × 0.6 box joined to a 0.8 × 0.4 one,
     // densities e^±2. The joints form a tree (joint-tree.ts) solved at once; after a hit had opened it, the linear
     // answer turned the bodies by radians in a substep and each pass overshot the last: 7 of these 200 hinged pairs
     // and 8 of the 200 welded ones were thrown at 10³–10¹² units/s. Each solve's turns are now capped (TREE_MAX_TURN):
-    // none.
-    for (const weld of [false, true]) {
-      const random = rng(weld ? 31 : 30);
-      const thrown: number[] = [];
+    // none. A rod is swept (joints.ts, correct()): its correction, scaled down to MAX_TURN, left the rest of the error
+    // to swing the bodies about it, and one of these 200 pairs was thrown at 3,400 units/s (the next at 690); the rest
+    // is now closed by moving them alone (the fastest at 790).
+    for (const kind of ['revolute', 'weld', 'distance'] as const) {
+      const random = rng(kind === 'revolute' ? 30 : kind === 'weld' ? 31 : 32);
+      const fastest: number[] = [];
       for (let k = 0; k < 200; k++) {
         const world = new World({ sleeping: false, gravity: { x: 0, y: random() < 0.5 ? 0 : 10 } });
         const a = world.addRigidBody({ points: box(0.3, 0.3), x: 0, y: 0, angle: random(), density: Math.exp((random() - 0.5) * 4) });
         const b = world.addRigidBody({ points: box(0.4, 0.2), x: 0.5 + random(), y: random() - 0.5, angle: random(), density: Math.exp((random() - 0.5) * 4) });
         const anchor = { x: random() * 0.8, y: (random() - 0.5) * 0.4 };
-        world.addJoint({ type: weld ? 'weld' : 'revolute', a, b, anchor });
+        if (kind === 'distance') world.addJoint({ type: kind, a, b, anchorA: anchor, anchorB: { x: anchor.x + 0.5, y: anchor.y } });
+        else world.addJoint({ type: kind, a, b, anchor });
         if (random() < 0.5) world.addJoint({ type: 'revolute', a: b, anchor: { x: 1.5, y: 0 } });
         const ratio = Math.exp(random() * Math.log(200));
         const speed = 5 + random() * 100;
         const heading = random() * 2 * Math.PI;
         const hammer = world.addRigidBody({ points: box(0.5, 0.5), x: -3 * Math.cos(heading), y: -3 * Math.sin(heading), angle: random(), density: ratio });
         world.setBodyVelocity(hammer, speed * Math.cos(heading), speed * Math.sin(heading));
-        let fastest = 0;
+        let most = 0;
         steps(world, 120, () => {
-          for (const h of [a, b]) fastest = Math.max(fastest, Math.hypot(world.bodyVelocity(h).x, world.bodyVelocity(h).y));
+          for (const h of [a, b]) most = Math.max(most, Math.hypot(world.bodyVelocity(h).x, world.bodyVelocity(h).y));
         });
-        if (fastest > 1000) thrown.push(fastest);
+        fastest.push(most);
       }
-      console.log(`      ${weld ? 'welded' : 'hinged'}: ${thrown.length} of 200 thrown past 1,000 units/s${thrown.length ? ` (${thrown.map((v) => v.toPrecision(2)).join(', ')})` : ''}`);
-      expect(thrown.length, weld ? 'welded' : 'hinged').to.be.at.most(1);
+      fastest.sort((p, q) => p - q);
+      console.log(`      ${kind}: the fastest of 200 at ${fastest[199].toFixed(0)} units/s, the 90th percentile ${fastest[179].toFixed(0)}`);
+      expect(fastest[199], kind).to.be.below(1500);
     }
   });
 
