@@ -525,13 +525,15 @@ function solvePrismatic(j: Joints, r: BodyRows, i: number, a: number, b: number)
   const f = withinTurn(iA * (rA * l1 + l2), iB * (rB * l1 + l2));
   l1 *= f;
   l2 *= f;
-  r.x[a] += mA * l1 * px;
-  r.y[a] += mA * l1 * py;
+  // What the scaled-down correction leaves across the axis: closed by moving the bodies alone (as in correctPoint).
+  const move = l1 + (mA + mB > 0 ? ((1 - f) * e1) / (mA + mB) : 0);
+  r.x[a] += mA * move * px;
+  r.y[a] += mA * move * py;
   by[0] = rA * l1 + l2;
   turnRow(r, a, 1);
   if (b >= 0) {
-    r.x[b] -= mB * l1 * px;
-    r.y[b] -= mB * l1 * py;
+    r.x[b] -= mB * move * px;
+    r.y[b] -= mB * move * py;
     by[0] = rB * l1 + l2;
     turnRow(r, b, -1);
   }
