@@ -873,7 +873,7 @@ describe('rigid bodies: joints', () => {
     // A 0.6 × 0.6 box on a slider limited to [−1, 1], hit by a 1 × 1 box 1–200 times heavier at 5–105 units/s from
     // any side. A joint to something immovable is a bumper, not a wall (docs/engine.md, Known limits), but its axis
     // is the world's: when it turned with the box, a hit that turned the box swept the far anchor across it, and these
-    // hits threw it at up to 40,000 units/s, 3.2 past its limit at the 90th percentile (now 481 and 0.55).
+    // hits threw it at up to 40,000 units/s, 3.2 past its limit at the 90th percentile (now 172 and 0.55).
     for (const kernel of ['js', 'wasm'] as const) {
       const random = rng(61);
       const worst = { speed: 0, past: [] as number[], forms: 0 };
