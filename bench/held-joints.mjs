@@ -7,6 +7,7 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { pathToFileURL } from 'node:url';
 import { bundleOurs } from './peers/engines/ours.mjs';
+import { installedVersion } from './peers/engines/version.mjs';
 
 const require = createRequire(import.meta.url);
 const DT = 1 / 60;
@@ -25,8 +26,6 @@ const CASES = [
   [170, 276],
 ];
 const JOINTS = ['revolute', 'weld', 'prismatic'];
-const version = (name) => JSON.parse(readFileSync(require.resolve(`${name}/package.json`), 'utf8')).version;
-const versionFromDir = (name) => JSON.parse(readFileSync(new URL(`../node_modules/${name}/package.json`, import.meta.url), 'utf8')).version;
 
 // ---- engines: build(joint, R, v, { variant }) → { step(), held() → {x, y, angle, vx, vy}, hammer() → {x, y, vx, vy} } ----
 
@@ -71,7 +70,7 @@ async function loadBox2dWasm() {
   const vec = (x, y) => new B.b2Vec2(x, y);
   return {
     name: 'box2d-wasm',
-    version: versionFromDir('box2d-wasm') + (SIMD ? ' (SIMD build)' : ''),
+    version: installedVersion('box2d-wasm') + (SIMD ? ' (SIMD build)' : ''),
     settings: 'Step(dt, 8, 3); SetAllowSleeping(false)',
     variants: ['', 'bullet'],
     build(joint, R, v, { variant = '' } = {}) {
@@ -130,7 +129,7 @@ async function loadBox2dCore() {
   const b2 = await import('@box2d/core');
   return {
     name: '@box2d/core',
-    version: versionFromDir('@box2d/core'),
+    version: installedVersion('@box2d/core'),
     settings: 'Step(dt, {8, 3}); SetAllowSleeping(false)',
     variants: ['', 'bullet'],
     build(joint, R, v, { variant = '' } = {}) {
@@ -177,7 +176,7 @@ async function loadPlanck() {
   const probe = new planck.World();
   return {
     name: 'planck',
-    version: versionFromDir('planck'),
+    version: installedVersion('planck'),
     settings: `world defaults (velocityIterations ${probe.m_velocityIterations}, positionIterations ${probe.m_positionIterations}); allowSleep false`,
     // 'maxTranslation 10': Box2D v2 caps a body's travel at maxTranslation (2) a step, 120 units/s at 60 Hz; planck
     // lets it be raised (box2d-wasm and @box2d/core do not), so the 276 units/s hammer keeps its speed.
@@ -223,7 +222,7 @@ async function loadRapier(pkg) {
   const params = ['numSolverIterations', 'numInternalPgsIterations', 'numAdditionalFrictionIterations'].filter((n) => typeof p[n] === 'number').map((n) => `${n} ${p[n]}`);
   return {
     name: pkg.includes('simd') ? 'rapier2d-simd' : 'rapier2d',
-    version: versionFromDir(pkg),
+    version: installedVersion(pkg),
     settings: `${params.join(', ')} (world defaults); impulse joints; setCanSleep(false)`,
     variants: ['', 'ccd'],
     build(joint, R, v, { variant = '' } = {}) {
