@@ -4,7 +4,7 @@
 //
 // p5/core is not small on its own: its `rendering` and `graphics` addons (createCanvas, createGraphics) live in one of
 // p5's build chunks (dist/rendering-*.js, ~700 KB of source) together with WebGL's renderer, camera, lights,
-// materials, framebuffers, image loading and saving, and p5.Graphics registers all of those on its prototype. Five
+// materials, framebuffers, image loading and saving, and p5.Graphics registers all of those on its prototype. Seven
 // changes, none touching what a 2D sketch or a draw hook calls (docs/drawing.md lists that API):
 //
 // 1. p5's dist modules (and the CommonJS packages omggif and libtess, which only GIF decoding and WebGL tessellation
@@ -22,10 +22,12 @@
 // 5. p5.MediaElement and p5.File (the dom addon's, not registered) are stand-ins (see DOM_STAND_INS).
 // 6. p5.Matrix (WebGL's camera and projection; in 2D only createMatrix() and worldToScreen()/screenToWorld() reach
 //    it) is a stand-in that throws (MATRIX_STAND_IN).
+// 7. p5's CPU image filters (image/filters.js), which the core's p5.Image carries for its filter(), are a stand-in that
+//    throws (FILTERS_STAND_IN): a p5.Image comes only from the image addon (get, createImage, loadImage), not loaded.
 //
 // Measured (esbuild-minified bundle of modules.js, gzip -9): 116.3 KB untrimmed; 1 + 2 give 73.9, 1 + 2 + 3 give 57.5
 // (none of them does much alone: p5's own chunks reference each other), 4 takes 4.0 more off (53.5), 5 2.1 (51.4),
-// 6 3.7 (47.6).
+// 6 3.7 (47.6), 7 1.5 more (the single file 1,597 bytes smaller, 6 December 2026).
 //
 // Every change is checked (text edits match as often as expected, stand-ins are used): if p5's or colorjs.io's files
 // change shape (a new version), the build fails and says which change no longer applies, instead of shipping an
@@ -85,12 +87,20 @@ const MATRIX_STAND_IN = `export class Matrix {
   constructor() { throw new Error("p5.Matrix (createMatrix, worldToScreen) needs p5's WebGL code, which this build of p5 leaves out (docs/drawing.md)"); }
 }`;
 
+/**
+ * p5's CPU image filters (p5.Image's filter(), the pixels addon's): the 2D core imports them for p5.Image, which only
+ * the image addon's functions (get, loadImage, createImage) make; that addon is not registered.
+ */
+const FILTERS_STAND_IN = `export default {
+  apply() { throw new Error("filter() needs p5's image addon, which this build of p5 leaves out (docs/drawing.md)"); }
+};`;
+
 export function p5Trim() {
   return {
     name: 'p5-trim',
     setup(build) {
       const applied = new Map(EDITS.map((e) => [e, 0]));
-      const standIns = { filterRenderer2D: 0, deltaE: 0, MediaElement: 0, File: 0, Matrix: 0 };
+      const standIns = { filterRenderer2D: 0, filters: 0, deltaE: 0, MediaElement: 0, File: 0, Matrix: 0 };
       build.onStart(() => {
         applied.forEach((_, e) => applied.set(e, 0));
         for (const k in standIns) standIns[k] = 0;
@@ -100,6 +110,11 @@ export function p5Trim() {
         /[\\/]p5[\\/]dist[\\/]/.test(args.importer) ? (standIns.filterRenderer2D++, { path: 'filterRenderer2D', namespace: 'p5-trim' }) : null,
       );
       build.onLoad({ filter: /^filterRenderer2D$/, namespace: 'p5-trim' }, () => ({ contents: FILTER_STAND_IN, loader: 'js' }));
+
+      build.onResolve({ filter: /(?:^|\/)image\/filters\.js$|^\.\/filters\.js$/ }, (args) =>
+        /[\\/]p5[\\/]dist[\\/]/.test(args.importer) ? (standIns.filters++, { path: 'filters', namespace: 'p5-trim' }) : null,
+      );
+      build.onLoad({ filter: /^filters$/, namespace: 'p5-trim' }, () => ({ contents: FILTERS_STAND_IN, loader: 'js' }));
 
       build.onResolve({ filter: /(?:^|\/)p5\.(?:MediaElement|File)\.js$/ }, (args) => {
         if (!/[\\/]p5[\\/]dist[\\/]/.test(args.importer)) return null;

@@ -185,5 +185,8 @@ describe('p5 as the builds ship it', () => {
     expect(() => g.createFramebuffer()).to.throw(/WebGL/);
     expect(typeof g.image).to.equal('undefined');
     g.remove();
+    // p5.Image stays in the core (the 2D renderer's get() makes one) but its CPU filters are a stand-in.
+    const region = (p as unknown as { _renderer: { get(x: number, y: number, w: number, h: number): { filter(op: string): void } } })._renderer.get(0, 0, 2, 2);
+    expect(() => region.filter('invert')).to.throw(/image addon/);
   });
 });
