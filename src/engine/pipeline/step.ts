@@ -34,8 +34,8 @@ import { ensureTopology } from './topology.js';
 import type { StepContext } from './context.js';
 import { MAX_STEP_SECONDS, MIN_STEP_SECONDS, substepCount, verletReferenceHalf } from '../settings.js';
 import { integrateKinematic, integrateRotation, resyncRotation, syncRotation, updateAngularVelocity } from '../rigid/rows.js';
-import { applySpringForces, hasSprings, solveJoints } from '../rigid/joints.js';
-import { prepareRigidContacts, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
+import { applySpringForces, hasSprings, holdWelded, solveJoints } from '../rigid/joints.js';
+import { prepareRigidContacts, shockSweep, solveRigidContacts, solveRigidContactVelocities } from '../rigid/contact-solver.js';
 
 /** One step of `dt` seconds in substepCount() substeps (settings.substeps, or by what moves under 'auto'). */
 export function step(ctx: StepContext, dt: number): void {
@@ -133,7 +133,7 @@ export function substep(ctx: StepContext, h: number): void {
     else {
       // The step's first substep (the contacts are not yet ordered): the kernel may take them into its lanes.
       const first = !rigid.shockReady;
-      prepareRigidContacts(rigid, particles, settings.maxPushSpeed * h);
+      prepareRigidContacts(rigid, particles, settings.maxPushSpeed * h, ctx.constraints.joints);
       if (first && ctx.kernel) ctx.kernel.beginRigid(ctx);
     }
   }
@@ -300,6 +300,10 @@ function relax(ctx: StepContext, h: number): void {
   if (ctx.rigidContacts.count > 0) {
     if (ctx.kernel?.rigidLanes) ctx.kernel.rigidSweep();
     else solveRigidContacts(ctx.rigidContacts, p);
+    if (ctx.rigidContacts.shockCount > 0) {
+      if (joints.count > 0) holdWelded(joints, p);
+      shockSweep(ctx.rigidContacts, p);
+    }
   }
   const bounds = ctx.settings.bounds;
   if (bounds) keepInBounds(p, bounds, ctx.settings.boundsFriction, ctx.wallHits);

@@ -375,6 +375,41 @@ export function applySpringForces(j: Joints, r: BodyRows, ax: Float64Array, ay: 
 }
 
 /** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
+/**
+ * The row joint i holds as the ground holds it, or −1: a rigid weld (compliance 0) between a row that moves and one
+ * that does not (the world, a static or kinematic row) leaves the first no freedom at all.
+ */
+export function weldHeld(j: Joints, r: BodyRows, i: number): number {
+  if ((j.kind[i] as JointKind) !== JointKind.Weld || j.compliance[i] !== 0) return -1;
+  const a = j.a[i];
+  const b = j.b[i];
+  const fixedA = r.invMass[a] === 0 && r.invInertia[a] === 0;
+  const fixedB = b < 0 || (r.invMass[b] === 0 && r.invInertia[b] === 0);
+  return fixedA === fixedB ? -1 : fixedA ? b : a;
+}
+
+/**
+ * Each row a weld holds (weldHeld) set to the very pose the weld gives it. Before the shock sweep, which then moves
+ * only what hits it (pipeline/step.ts): solved as a joint, the pose a contact had just pushed it from came back only
+ * part of the way (the linearised solve, MAX_TURN), and a box welded to the world, hit by one 20 times heavier, gave
+ * way 0.08 and swung back over ten steps.
+ */
+export function holdWelded(j: Joints, r: BodyRows): void {
+  for (let i = 0; i < j.count; i++) {
+    const held = weldHeld(j, r, i);
+    if (held < 0) continue;
+    loadAnchors(j, r, i);
+    // θA − θB = refAngle; the held side's anchor goes onto the other's.
+    const isA = held === j.a[i];
+    const other = isA ? j.b[i] : j.a[i];
+    spin[0] = (other < 0 ? 0 : r.angle[other]) + (isA ? j.refAngle[i] : -j.refAngle[i]) - r.angle[held];
+    turnBySpin(r, held);
+    loadAnchors(j, r, i);
+    r.x[held] += isA ? at[6] - at[2] : at[2] - at[6];
+    r.y[held] += isA ? at[7] - at[3] : at[3] - at[7];
+  }
+}
+
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
   arg[6] = h;
