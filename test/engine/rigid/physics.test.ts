@@ -972,11 +972,14 @@ describe('rigid bodies: joints', () => {
     for (const kernel of ['js', 'wasm'] as const) {
       // bench/held-joints.mjs's hits: hammers 10, 10, 50 and 170 times the box's mass at 20, 40, 40 and 276 units/s.
       for (const [ratio, speed] of [[10, 20], [10, 40], [50, 40], [170, 276]]) {
-        for (const holder of ['world', 'static', 'kinematic'] as const) {
+        // 'static, as a': the weld written the other way round (the held box is its b).
+        for (const holder of ['world', 'static', 'kinematic', 'static, as a'] as const) {
           const world = new World({ sleeping: false, gravity: { x: 0, y: 0 }, kernel });
           const held = world.addRigidBody({ points: box(0.3, 0.3), x: 0, y: 0, angle: 0.3, friction: 0.6, restitution: 0 });
-          const b = holder === 'world' ? undefined : world.addRigidBody({ points: box(0.1, 0.1), x: 3, y: 3, type: holder });
-          world.addJoint({ type: 'weld', a: held, ...(b === undefined ? {} : { b }), anchor: { x: 0.1, y: -0.1 } });
+          const other = holder === 'world' ? undefined : world.addRigidBody({ points: box(0.1, 0.1), x: 3, y: 3, angle: 0.5, type: holder === 'kinematic' ? 'kinematic' : 'static' });
+          const anchor = { x: 0.1, y: -0.1 };
+          if (holder === 'static, as a') world.addJoint({ type: 'weld', a: other!, b: held, anchor });
+          else world.addJoint({ type: 'weld', a: held, ...(other === undefined ? {} : { b: other }), anchor });
           const hammer = world.addRigidBody({ points: box(0.5, 0.5), x: -3, y: 0.1, density: ratio * 0.36, friction: 0.6, restitution: 0 });
           world.setBodyVelocity(hammer, speed, 0);
           let moved = 0;
