@@ -19,6 +19,19 @@ function steps(world: World, n: number, each?: (k: number) => void): void {
 }
 
 /** A 40-wide static slab whose top face passes through the origin at angle θ (descending to the right, y down). */
+/**
+ * A random hard hit on a 0.6 × 0.6 box at the origin (the held-joint tests): the box's angle, a joint anchor on it, and
+ * the hammer's mass ratio (1–200), speed (5–105 units/s) and heading, drawn in this order.
+ */
+function randomHit(random: () => number): { angle: number; anchor: Vec2; ratio: number; speed: number; heading: number } {
+  const angle = (random() - 0.5) * 2;
+  const anchor = { x: (random() - 0.5) * 0.8, y: (random() - 0.5) * 0.8 };
+  const ratio = Math.exp(random() * Math.log(200));
+  const speed = 5 + random() * 100;
+  const heading = random() * 2 * Math.PI;
+  return { angle, anchor, ratio, speed, heading };
+}
+
 function slope(world: World, theta: number, friction: number): { t: Vec2; n: Vec2 } {
   const t = { x: Math.cos(theta), y: Math.sin(theta) };
   const n = { x: Math.sin(theta), y: -Math.cos(theta) };
@@ -930,11 +943,7 @@ describe('rigid bodies: joints', () => {
         let fastest = 0;
         const gaps: number[] = [];
         for (let k = 0; k < 100; k++) {
-          const angle = (random() - 0.5) * 2;
-          const anchor = { x: (random() - 0.5) * 0.8, y: (random() - 0.5) * 0.8 };
-          const ratio = Math.exp(random() * Math.log(200));
-          const speed = 5 + random() * 100;
-          const heading = random() * 2 * Math.PI;
+          const { angle, anchor, ratio, speed, heading } = randomHit(random);
           const world = new World({ kernel, sleeping: false, gravity: { x: 0, y: random() < 0.5 ? 0 : 10 } });
           const hinged = world.addRigidBody({ points: box(0.3, 0.3), x: 0, y: 0, angle });
           world.addJoint({ type: 'revolute', a: hinged, anchor, ...(motor ? { motorSpeed: 0, maxMotorTorque: 50 } : {}) });
@@ -1001,11 +1010,7 @@ describe('rigid bodies: joints', () => {
       const random = rng(9);
       const moves: number[] = [];
       for (let k = 0; k < 60; k++) {
-        const angle = (random() - 0.5) * 2;
-        const anchor = { x: (random() - 0.5) * 0.8, y: (random() - 0.5) * 0.8 };
-        const ratio = Math.exp(random() * Math.log(200));
-        const speed = 5 + random() * 100;
-        const heading = random() * 2 * Math.PI;
+        const { angle, anchor, ratio, speed, heading } = randomHit(random);
         const hammerAngle = random();
         const world = new World({ sleeping: false, gravity: { x: 0, y: random() < 0.5 ? 0 : 10 }, kernel });
         const held = world.addRigidBody({ points: box(0.3, 0.3), x: 0, y: 0, angle, restitution: 0 });
