@@ -16,7 +16,8 @@ import { PhysicsLinkElement, type Resolve } from './link-element.js';
  *   between (`x1`, `y1`) on a and (`x2`, `y2`) on b;
  * - `revolute`: a hinge at the anchor `x`, `y`: a turns about it relative to b, between `lower-angle` and
  *   `upper-angle`, driven by a motor at `motor-speed` with at most `max-motor-torque`;
- * - `weld`: glued at the anchor (the relative angle fixed too);
+ * - `weld`: glued at the anchor (the relative angle fixed too); a body welded (without `compliance`) to the world or
+ *   to a `static` or `kinematic` body holds as a static body does: what hits it does not move it;
  * - `prismatic`: b slides relative to a along `axis` (turning with a), between `lower` and `upper`, without turning;
  * - `spring`: a damped spring (`stiffness`, `damping`, rest `length`) between the ends, as for `distance`.
  *
