@@ -374,7 +374,6 @@ export function applySpringForces(j: Joints, r: BodyRows, ax: Float64Array, ay: 
   }
 }
 
-/** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
 /**
  * The row joint i holds as the ground holds it, or −1: a rigid weld (compliance 0) between a row that moves and one
  * that does not (the world, a static or kinematic row) leaves the first no freedom at all.
@@ -410,6 +409,7 @@ export function holdWelded(j: Joints, r: BodyRows): void {
   }
 }
 
+/** One Gauss–Seidel sweep over the joints (before the contacts, each substep). */
 export function solveJoints(j: Joints, r: BodyRows, h: number): void {
   const h2 = h * h;
   arg[6] = h;
