@@ -8,6 +8,7 @@ import { createRequire } from 'node:module';
 import { pathToFileURL } from 'node:url';
 import { bundleOurs } from './peers/engines/ours.mjs';
 import { installedVersion } from './peers/engines/version.mjs';
+import { initRapier } from './peers/engines/rapier.mjs';
 
 const require = createRequire(import.meta.url);
 const DT = 1 / 60;
@@ -210,16 +211,7 @@ async function loadPlanck() {
 }
 
 async function loadRapier(pkg) {
-  const { default: RA } = await import(pkg);
-  const warn = console.warn;
-  console.warn = () => {};
-  try {
-    await RA.init();
-  } finally {
-    console.warn = warn;
-  }
-  const p = new RA.World({ x: 0, y: 0 }).integrationParameters;
-  const params = ['numSolverIterations', 'numInternalPgsIterations', 'numAdditionalFrictionIterations'].filter((n) => typeof p[n] === 'number').map((n) => `${n} ${p[n]}`);
+  const { R: RA, params } = await initRapier(pkg);
   return {
     name: pkg.includes('simd') ? 'rapier2d-simd' : 'rapier2d',
     version: installedVersion(pkg),

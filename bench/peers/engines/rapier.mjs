@@ -8,7 +8,11 @@ import { installedVersion } from './version.mjs';
 // Membership 1, filter 0: interacts with nothing.
 const NO_COLLISIONS = 0x0001_0000;
 
-export async function load(pkg) {
+/**
+ * The Rapier module of `pkg`, initialised, and its world's default solver parameters ("numSolverIterations 4, …")
+ * for the report. Shared with bench/held-joints.mjs.
+ */
+export async function initRapier(pkg) {
   const { default: R } = await import(pkg);
   // init() of 0.21 logs a deprecation note about its parameters on some versions: silence that one call.
   const warn = console.warn;
@@ -18,11 +22,15 @@ export async function load(pkg) {
   } finally {
     console.warn = warn;
   }
-  const probe = new R.World({ x: 0, y: -GRAVITY });
-  const p = probe.integrationParameters;
+  const p = new R.World({ x: 0, y: 0 }).integrationParameters;
   const params = ['numSolverIterations', 'numInternalPgsIterations', 'numAdditionalFrictionIterations']
     .filter((name) => typeof p[name] === 'number')
     .map((name) => `${name} ${p[name]}`);
+  return { R, params };
+}
+
+export async function load(pkg) {
+  const { R, params } = await initRapier(pkg);
   return {
     version: installedVersion(pkg),
     settings: `${params.join(', ')} (world defaults); setCanSleep(false) on every body${pkg.includes('simd') ? '; SIMD build' : ''}`,
