@@ -321,15 +321,21 @@ const rigidStories: Story[] = [
     description: 'Balls fall from a funnel through rows of pegs: at each peg a ball bounces off the line from the peg to its centre at the moment they touch, and the sixty balls spread over the bins.',
     root: scene({}, [
       floor(),
-      // The funnel: two slanted walls, a gap of about three balls at x = 8.
-      n('physics-box', { x: 5.9, y: 1.3, width: 3.6, height: 0.2, angle: 30, static: true, fill: '#a2a7b0' }),
-      n('physics-box', { x: 10.1, y: 1.3, width: 3.6, height: 0.2, angle: -30, static: true, fill: '#a2a7b0' }),
+      // The funnel: two slanted walls, a gap of about four balls at x = 8. A ball that lands on the pile in the funnel
+      // can glance off it at 6 units/s and run up a wall; the lips at the walls' upper ends send it back.
+      n('physics-box', { x: 5.84, y: 1.3, width: 3.6, height: 0.2, angle: 30, static: true, fill: '#a2a7b0' }),
+      n('physics-box', { x: 10.16, y: 1.3, width: 3.6, height: 0.2, angle: -30, static: true, fill: '#a2a7b0' }),
+      n('physics-box', { x: 4.33, y: 0.2, width: 0.12, height: 0.4, static: true, fill: '#a2a7b0' }),
+      n('physics-box', { x: 11.67, y: 0.2, width: 0.12, height: 0.4, static: true, fill: '#a2a7b0' }),
       // Pegs in a triangle: row r has r + 3 of them, 0.8 apart.
       ...Array.from({ length: 6 }, (_, r) =>
         Array.from({ length: r + 3 }, (_, k) => n('physics-circle', { x: 8 + (k - (r + 2) / 2) * 0.8, y: 2.6 + r * 0.62, radius: 0.1, static: true, fill: '#596273' })),
       ).flat(),
-      // Bins between walls 0.8 apart.
-      ...Array.from({ length: 11 }, (_, k) => n('physics-box', { x: 4 + k * 0.8, y: 7.05, width: 0.08, height: 2.1, static: true, fill: '#a2a7b0' })),
+      // Bins between walls 0.8 apart; the outer two rise to y = 4 to catch a ball thrown sideways by the last pegs.
+      ...Array.from({ length: 11 }, (_, k) => {
+        const outer = k === 0 || k === 10;
+        return n('physics-box', { x: 4 + k * 0.8, y: outer ? 6.05 : 7.05, width: 0.08, height: outer ? 4.1 : 2.1, static: true, fill: '#a2a7b0' });
+      }),
       // 60 balls in rows of six above the funnel (off the top: they fall in).
       ...Array.from({ length: 60 }, (_, k) =>
         n('physics-circle', { x: 6.9 + (k % 6) * 0.44 + (Math.floor(k / 6) % 2) * 0.2, y: -4 + Math.floor(k / 6) * 0.4, radius: 0.15, restitution: 0.3, friction: 0.05, fill: ['#e76f51', '#2a9d8f', '#3d7dd8'][k % 3] }),
