@@ -156,8 +156,11 @@ const linkStories: Story[] = [
 
 // ---- rigid bodies: what turning, rolling and joints make possible -------------------------------------------------
 
-/** A ring with a narrow slit (a concave outline: it collides as convex parts), as points in body coordinates. */
-function ringPoints(outer: number, inner: number, sides: number, slit = 0.02): string {
+/**
+ * A ring with a narrow slit (a concave outline, which must not touch itself: it collides as convex parts), as points in
+ * body coordinates. The slit, 0.004 rad each side, is 0.03 wide at r 4.2: a hairline on the canvas, not a gap.
+ */
+function ringPoints(outer: number, inner: number, sides: number, slit = 0.004): string {
   const around = (r: number, from: number, to: number) =>
     Array.from({ length: sides + 1 }, (_, k) => from + ((to - from) * k) / sides).map((a) => `${(r * Math.cos(a)).toFixed(3)},${(r * Math.sin(a)).toFixed(3)}`);
   return [...around(outer, slit, 2 * Math.PI - slit), ...around(inner, 2 * Math.PI - slit, slit)].join(' ');
